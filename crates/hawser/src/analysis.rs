@@ -1,0 +1,358 @@
+//! Results analysis: output channels, running statistics, slack intervals and snap events.
+
+use crate::math::Real;
+use crate::system::{System, Workspace};
+
+/// A scalar output channel.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Channel {
+    /// Magnitude of the force a line exerts on the attachment of an end [N].
+    EndTension {
+        /// Line index.
+        line: usize,
+        /// End B (true) or A.
+        end_b: bool,
+    },
+    /// Component of the force a line exerts on an end's attachment [N].
+    EndForce {
+        /// Line index.
+        line: usize,
+        /// End B (true) or A.
+        end_b: bool,
+        /// 0, 1, 2 for x, y, z.
+        axis: usize,
+    },
+    /// Tension at a node [N].
+    NodeTension {
+        /// Line index.
+        line: usize,
+        /// Node index (0 at end A).
+        node: usize,
+    },
+    /// Node position component [m].
+    NodePosition {
+        /// Line index.
+        line: usize,
+        /// Node index.
+        node: usize,
+        /// Axis.
+        axis: usize,
+    },
+    /// Node velocity component [m/s].
+    NodeVelocity {
+        /// Line index.
+        line: usize,
+        /// Node index.
+        node: usize,
+        /// Axis.
+        axis: usize,
+    },
+    /// Element strain [-].
+    ElementStrain {
+        /// Line index.
+        line: usize,
+        /// Element index.
+        element: usize,
+    },
+    /// Point position component [m].
+    PointPosition {
+        /// Point index.
+        point: usize,
+        /// Axis.
+        axis: usize,
+    },
+    /// Point velocity component [m/s].
+    PointVelocity {
+        /// Point index.
+        point: usize,
+        /// Axis.
+        axis: usize,
+    },
+}
+
+const AXES: [&str; 3] = ["x", "y", "z"];
+
+impl Channel {
+    /// Column name, e.g. `L1.end_b.tension`, `L1.node3.x`, `buoy.vz`.
+    pub fn name(&self, system: &System) -> String {
+        let line = |l: usize| system.lines[l].name.as_str();
+        let end = |b: bool| if b { "end_b" } else { "end_a" };
+        match *self {
+            Channel::EndTension { line: l, end_b } => format!("{}.{}.tension", line(l), end(end_b)),
+            Channel::EndForce {
+                line: l,
+                end_b,
+                axis,
+            } => format!("{}.{}.f{}", line(l), end(end_b), AXES[axis]),
+            Channel::NodeTension { line: l, node } => format!("{}.node{}.tension", line(l), node),
+            Channel::NodePosition {
+                line: l,
+                node,
+                axis,
+            } => format!("{}.node{}.{}", line(l), node, AXES[axis]),
+            Channel::NodeVelocity {
+                line: l,
+                node,
+                axis,
+            } => format!("{}.node{}.v{}", line(l), node, AXES[axis]),
+            Channel::ElementStrain { line: l, element } => {
+                format!("{}.element{}.strain", line(l), element)
+            }
+            Channel::PointPosition { point, axis } => {
+                format!("{}.{}", system.points[point].name, AXES[axis])
+            }
+            Channel::PointVelocity { point, axis } => {
+                format!("{}.v{}", system.points[point].name, AXES[axis])
+            }
+        }
+    }
+
+    /// Unit of the channel.
+    pub fn unit(&self) -> &'static str {
+        match self {
+            Channel::EndTension { .. } | Channel::EndForce { .. } | Channel::NodeTension { .. } => {
+                "N"
+            }
+            Channel::NodePosition { .. } | Channel::PointPosition { .. } => "m",
+            Channel::NodeVelocity { .. } | Channel::PointVelocity { .. } => "m/s",
+            Channel::ElementStrain { .. } => "-",
+        }
+    }
+
+    /// Value from a workspace that holds a right-hand-side evaluation.
+    pub fn value(&self, system: &System, ws: &Workspace) -> Real {
+        match *self {
+            Channel::EndTension { line, end_b } => system.end_force(ws, line, end_b).norm(),
+            Channel::EndForce { line, end_b, axis } => system.end_force(ws, line, end_b)[axis],
+            Channel::NodeTension { line, node } => system.node_tension(ws, line, node),
+            Channel::NodePosition { line, node, axis } => ws.lines[line].position[node][axis],
+            Channel::NodeVelocity { line, node, axis } => ws.lines[line].velocity[node][axis],
+            Channel::ElementStrain { line, element } => ws.lines[line].elements.strain[element],
+            Channel::PointPosition { point, axis } => ws.points[point].position[axis],
+            Channel::PointVelocity { point, axis } => ws.points[point].velocity[axis],
+        }
+    }
+
+    /// Checks indices against the system.
+    pub fn is_valid(&self, system: &System) -> bool {
+        let nodes = |l: usize| {
+            system
+                .lines
+                .get(l)
+                .map(|x| x.fe.elements() + 1)
+                .unwrap_or(0)
+        };
+        match *self {
+            Channel::EndTension { line, .. } | Channel::EndForce { line, .. } => {
+                line < system.lines.len()
+            }
+            Channel::NodeTension { line, node }
+            | Channel::NodePosition { line, node, .. }
+            | Channel::NodeVelocity { line, node, .. } => node < nodes(line),
+            Channel::ElementStrain { line, element } => element + 1 < nodes(line),
+            Channel::PointPosition { point, .. } | Channel::PointVelocity { point, .. } => {
+                point < system.points.len()
+            }
+        }
+    }
+}
+
+/// Running statistics of one channel (Welford).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RunningStats {
+    /// Samples.
+    pub count: u64,
+    /// Minimum.
+    pub min: Real,
+    /// Maximum.
+    pub max: Real,
+    mean: Real,
+    m2: Real,
+}
+
+impl Default for RunningStats {
+    fn default() -> Self {
+        Self {
+            count: 0,
+            min: Real::INFINITY,
+            max: Real::NEG_INFINITY,
+            mean: 0.0,
+            m2: 0.0,
+        }
+    }
+}
+
+impl RunningStats {
+    /// Adds a sample.
+    pub fn push(&mut self, x: Real) {
+        self.count += 1;
+        self.min = self.min.min(x);
+        self.max = self.max.max(x);
+        let d = x - self.mean;
+        self.mean += d / self.count as Real;
+        self.m2 += d * (x - self.mean);
+    }
+    /// Mean.
+    pub fn mean(&self) -> Real {
+        self.mean
+    }
+    /// Population standard deviation.
+    pub fn std(&self) -> Real {
+        if self.count > 0 {
+            (self.m2 / self.count as Real).sqrt()
+        } else {
+            0.0
+        }
+    }
+}
+
+/// An interval during which some element of a line was slack (strain ≤ 0).
+#[derive(Clone, Debug, PartialEq)]
+pub struct SlackInterval {
+    /// Start [s] (first sample found slack).
+    pub start: Real,
+    /// End [s] (first sample found taut again; the run's end if still slack).
+    pub end: Real,
+    /// Smallest strain seen in the interval [-].
+    pub min_strain: Real,
+}
+
+/// A snap: a line going from slack to taut, and the tension peak that follows.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SnapEvent {
+    /// Time of the slack → taut transition [s].
+    pub time: Real,
+    /// Time of the peak [s].
+    pub peak_time: Real,
+    /// Peak element tension [N].
+    pub peak_tension: Real,
+    /// Unstretched arc length of the peak's element midpoint from end A [m].
+    pub location: Real,
+    /// Mean rate of rise from the transition to the peak [N/s].
+    pub rise_rate: Real,
+}
+
+/// Detects slack intervals and snap events on one line from samples of its element tensions
+/// and strains.
+#[derive(Clone, Debug, Default)]
+pub struct SlackSnapDetector {
+    slack: Option<SlackInterval>,
+    /// Closed slack intervals.
+    pub intervals: Vec<SlackInterval>,
+    /// Snap events.
+    pub snaps: Vec<SnapEvent>,
+    pending: Option<(SnapEvent, Real)>,
+}
+
+impl SlackSnapDetector {
+    /// Processes one sample. `arc_mid` gives the arc length of element e's midpoint.
+    pub fn push(
+        &mut self,
+        time: Real,
+        tension: &[Real],
+        strain: &[Real],
+        arc_mid: impl Fn(usize) -> Real,
+    ) {
+        let min_strain = strain.iter().copied().fold(Real::INFINITY, Real::min);
+        let (emax, tmax) =
+            tension
+                .iter()
+                .copied()
+                .enumerate()
+                .fold(
+                    (0, Real::NEG_INFINITY),
+                    |a, (i, t)| if t > a.1 { (i, t) } else { a },
+                );
+        let slack_now = min_strain <= 0.0;
+        if slack_now {
+            if let Some((ev, _)) = self.pending.take() {
+                self.snaps.push(ev);
+            }
+            match &mut self.slack {
+                Some(s) => s.min_strain = s.min_strain.min(min_strain),
+                None => {
+                    self.slack = Some(SlackInterval {
+                        start: time,
+                        end: time,
+                        min_strain,
+                    })
+                }
+            }
+        } else {
+            if let Some(mut s) = self.slack.take() {
+                s.end = time;
+                self.intervals.push(s);
+                self.pending = Some((
+                    SnapEvent {
+                        time,
+                        peak_time: time,
+                        peak_tension: tmax,
+                        location: arc_mid(emax),
+                        rise_rate: 0.0,
+                    },
+                    tmax,
+                ));
+            } else if let Some((ev, start_tension)) = &mut self.pending {
+                if tmax > ev.peak_tension {
+                    ev.peak_tension = tmax;
+                    ev.peak_time = time;
+                    ev.location = arc_mid(emax);
+                    ev.rise_rate =
+                        (tmax - *start_tension) / (time - ev.time).max(Real::MIN_POSITIVE);
+                } else {
+                    // The tension has passed its peak: the event is complete.
+                    let (ev, _) = self.pending.take().expect("pending");
+                    self.snaps.push(ev);
+                }
+            }
+        }
+    }
+
+    /// Closes open intervals and events at the end of a run.
+    pub fn finish(&mut self, time: Real) {
+        if let Some(mut s) = self.slack.take() {
+            s.end = time;
+            self.intervals.push(s);
+        }
+        if let Some((ev, _)) = self.pending.take() {
+            self.snaps.push(ev);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    #[test]
+    fn stats_match_direct_formulas() {
+        let xs = [1.0, 4.0, -2.0, 7.5];
+        let mut s = RunningStats::default();
+        xs.iter().for_each(|&x| s.push(x));
+        let mean = xs.iter().sum::<f64>() / 4.0;
+        let std = (xs.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / 4.0).sqrt();
+        assert!((s.mean() - mean).abs() < 1e-14 && (s.std() - std).abs() < 1e-14);
+        assert_eq!((s.min, s.max), (-2.0, 7.5));
+    }
+    #[test]
+    fn snap_after_slack_is_detected_with_its_peak() {
+        let mut d = SlackSnapDetector::default();
+        let samples = [
+            (0.0, 10.0, 0.01),
+            (0.1, 0.0, -0.01),
+            (0.2, 0.0, -0.02),
+            (0.3, 50.0, 0.02),
+            (0.4, 80.0, 0.03),
+            (0.5, 20.0, 0.01),
+        ];
+        for (t, ten, st) in samples {
+            d.push(t, &[ten], &[st], |_| 1.0);
+        }
+        d.finish(0.5);
+        assert_eq!(d.intervals.len(), 1);
+        assert_eq!((d.intervals[0].start, d.intervals[0].end), (0.1, 0.3));
+        assert_eq!(d.snaps.len(), 1);
+        assert_eq!(d.snaps[0].peak_tension, 80.0);
+        assert_eq!(d.snaps[0].peak_time, 0.4);
+        assert!((d.snaps[0].rise_rate - 300.0).abs() < 1e-9);
+    }
+}

@@ -1,0 +1,83 @@
+//! Error types. They carry the numbers a user needs to act on them.
+
+use crate::math::Real;
+
+/// A model that cannot be simulated.
+#[derive(Debug, thiserror::Error, Clone, PartialEq)]
+pub enum ModelError {
+    /// A value or reference is out of range.
+    #[error("{what}: {why}")]
+    Invalid {
+        /// What is wrong (the item and key).
+        what: String,
+        /// Why, with the expected range and unit.
+        why: String,
+    },
+}
+
+/// A time integration that cannot go on.
+#[derive(Debug, thiserror::Error, Clone, PartialEq)]
+pub enum SimulationError {
+    /// The state became non-finite or non-physical.
+    #[error(
+        "the simulation diverged at t = {time:.6} s on {object} node {node} ({reason}); \
+         the stable time step estimate is {stable_step:.3e} s; \
+         hint: reduce the time step (or use time_step = \"auto\"), refine or check the line properties"
+    )]
+    Diverged {
+        /// Simulated time [s] of the last good state.
+        time: Real,
+        /// Line or point name.
+        object: String,
+        /// Node index along the line (0 at end A); 0 for a point.
+        node: usize,
+        /// What went wrong.
+        reason: String,
+        /// Stable step estimate [s].
+        stable_step: Real,
+    },
+    /// A user time step above the stability limit.
+    #[error(
+        "time_step = {step:.4e} s exceeds the stability limit {limit:.4e} s set by {culprit}; \
+         hint: use time_step = \"auto\" or a step ≤ {limit:.4e} s"
+    )]
+    StepTooLarge {
+        /// The requested step [s].
+        step: Real,
+        /// The limit [s].
+        limit: Real,
+        /// Which element or point sets it.
+        culprit: String,
+    },
+    /// The model is invalid.
+    #[error(transparent)]
+    Model(#[from] ModelError),
+    /// The initial statics failed.
+    #[error("initial statics: {0}")]
+    Statics(#[from] StaticsError),
+}
+
+/// A static solve that failed.
+#[derive(Debug, thiserror::Error, Clone, PartialEq)]
+pub enum StaticsError {
+    /// Newton and the dynamic-relaxation fallback both failed to converge.
+    #[error(
+        "no static equilibrium found: Newton stopped after {iterations} iterations with residual \
+         {residual:.3e} N (tolerance {tolerance:.3e} N) at {location}; dynamic relaxation reached \
+         {relaxation_residual:.3e} N; hint: {hint}"
+    )]
+    NotConverged {
+        /// Newton iterations done.
+        iterations: usize,
+        /// Largest nodal force imbalance after Newton [N].
+        residual: Real,
+        /// Tolerance [N].
+        tolerance: Real,
+        /// Where the largest imbalance is.
+        location: String,
+        /// Largest imbalance after dynamic relaxation [N].
+        relaxation_residual: Real,
+        /// What to try.
+        hint: String,
+    },
+}

@@ -1,0 +1,285 @@
+//! Position-vector finite elements (position-vector paper, §2).
+//!
+//! Two-node straight elements with nodal positions as unknowns (eq. 4). Strain is computed
+//! from the current and original element lengths, ε = L/L0 − 1 (eqs. 7–8 with the lost
+//! equation restored from the text: the element's unit vector t = (r2 − r1)/L gives the
+//! direction cosines of eq. 9), so a rigid rotation produces no strain. The elastic and damping
+//! nodal forces are F1 = T t, F2 = −T t with T = T(ε, ε̇) (eqs. 13–15, our derivation:
+//! δU = ∫ T δε ds = T t·(δr2 − δr1)); ε̇ = t·(v2 − v1)/L0 (eq. 14).
+//! The consistent mass matrix is γ0 L0/6 [2I I; I 2I] (eq. 12, restored: ∫ NᵀN γ0 ds for
+//! linear shape functions N = [(1−ξ)I, ξI]); the added mass (eqs. 17–18) is orientation
+//! dependent, ρ A (C_an (I − t tᵀ) + C_at t tᵀ), integrated with the same shape functions.
+//! Drag (eqs. 16, 19–23) and added mass are integrated with two-point Gauss quadrature of the
+//! linearly interpolated velocities (eq. 20); weight and buoyancy (eqs. 24–25) exactly,
+//! including the part of an element below the water surface; seabed contact at the nodes.
+
+use crate::linalg::LineBlocks;
+use crate::math::{Mat3, Real, Vec3};
+use crate::model::{LineType, MassMatrix};
+use crate::physics::environment::Environment;
+use crate::physics::hydrodynamics::{added_mass_matrix, drag_force, fluid_inertia_force};
+use crate::physics::material::AxialLaw;
+
+/// Gauss points on [0, 1] for two-point quadrature (weight ½ each).
+const GAUSS: [Real; 2] = [0.5 - 0.288_675_134_594_812_9, 0.5 + 0.288_675_134_594_812_9];
+
+/// Properties of one section of an `fe` line, resolved from its line type.
+#[derive(Clone, Debug)]
+pub struct FeSection {
+    /// The line type (diameter, mass, drag, added mass).
+    pub line_type: LineType,
+    /// Unstretched element length L0 [m].
+    pub element_length: Real,
+    /// Cross-section area A = π d²/4 [m²].
+    pub area: Real,
+    /// Axial law with the damping coefficient resolved for this element length.
+    pub law: AxialLaw,
+}
+
+/// An `fe` line: element lengths and section properties, nodes 0..=N.
+#[derive(Clone, Debug)]
+pub struct FeLine {
+    /// Sections in order from end A.
+    pub sections: Vec<FeSection>,
+    /// Section index of each element.
+    pub element_section: Vec<usize>,
+    /// Mass matrix kind.
+    pub mass_matrix: MassMatrix,
+}
+
+impl FeLine {
+    /// Builds the line from its sections: (line type, length [m], elements).
+    pub fn new(sections: &[(LineType, Real, usize)], mass_matrix: MassMatrix) -> Self {
+        let mut out = Vec::new();
+        let mut element_section = Vec::new();
+        for (k, (t, length, n)) in sections.iter().enumerate() {
+            let l0 = length / *n as Real;
+            let law = AxialLaw {
+                stiffness: t.axial_stiffness.clone(),
+                damping: t
+                    .axial_damping
+                    .coefficient(l0, &t.axial_stiffness, t.mass_per_length),
+                compression: t.compression,
+            };
+            out.push(FeSection {
+                line_type: t.clone(),
+                element_length: l0,
+                area: t.area(),
+                law,
+            });
+            element_section.extend(std::iter::repeat_n(k, *n));
+        }
+        Self {
+            sections: out,
+            element_section,
+            mass_matrix,
+        }
+    }
+
+    /// Number of elements N.
+    pub fn elements(&self) -> usize {
+        self.element_section.len()
+    }
+
+    /// Unstretched arc length of node i from end A [m].
+    pub fn arc_length(&self, node: usize) -> Real {
+        self.element_section[..node]
+            .iter()
+            .map(|&s| self.sections[s].element_length)
+            .sum()
+    }
+
+    /// The axial law of an element.
+    #[inline]
+    pub fn law(&self, element: usize) -> &AxialLaw {
+        &self.sections[self.element_section[element]].law
+    }
+}
+
+/// Per-element results of a force evaluation.
+#[derive(Clone, Debug)]
+pub struct ElementState {
+    /// Axial tension [N] (with damping).
+    pub tension: Vec<Real>,
+    /// Axial strain ε = L/L0 − 1 [-].
+    pub strain: Vec<Real>,
+}
+
+impl ElementState {
+    /// Storage for `n` elements.
+    pub fn new(n: usize) -> Self {
+        Self {
+            tension: vec![0.0; n],
+            strain: vec![0.0; n],
+        }
+    }
+}
+
+/// Scale factor on loads for statics continuation: current drag and point loads are
+/// multiplied by `load_factor`.
+#[derive(Clone, Copy, Debug)]
+pub struct LoadOptions {
+    /// Multiplies the current velocity seen by drag [-].
+    pub current_factor: Real,
+    /// Whether to assemble the mass blocks.
+    pub with_mass: bool,
+}
+
+/// Evaluates the nodal forces [N] of an `fe` line at positions `r` [m] and velocities `v`
+/// [m/s] (nodes 0..=N, ends included) and, if asked, its mass blocks [kg] into `blocks`.
+///
+/// `forces[i]` is the total force the line's physics puts on node i: tension, weight,
+/// buoyancy, drag, fluid inertia and seabed contact. End forces on attachments follow from it.
+#[allow(clippy::too_many_arguments)]
+pub fn line_forces(
+    line: &FeLine,
+    env: &Environment,
+    time: Real,
+    r: &[Vec3],
+    v: &[Vec3],
+    forces: &mut [Vec3],
+    elements: &mut ElementState,
+    blocks: Option<&mut LineBlocks>,
+    options: LoadOptions,
+) {
+    let n = line.elements();
+    forces[..=n].iter_mut().for_each(|f| *f = Vec3::zeros());
+    let g = env.gravity;
+    let rho_w = env.water_density;
+    let bed_z = env.seabed_z();
+    let consistent = line.mass_matrix == MassMatrix::Consistent;
+    let mut blocks = blocks;
+    if let Some(b) = blocks.as_deref_mut() {
+        b.clear();
+    }
+    for e in 0..n {
+        let sec = &line.sections[line.element_section[e]];
+        let lt = &sec.line_type;
+        let l0 = sec.element_length;
+        let (ra, rb) = (r[e], r[e + 1]);
+        let (va, vb) = (v[e], v[e + 1]);
+        let delta = rb - ra;
+        let length = delta.norm();
+        let t = delta / length;
+        let strain = length / l0 - 1.0;
+        let strain_rate = t.dot(&(vb - va)) / l0;
+        let tension = sec.law.tension(strain, strain_rate);
+        elements.tension[e] = tension;
+        elements.strain[e] = strain;
+        let stretch = 1.0 + strain;
+        let ft = t * tension;
+        forces[e] += ft;
+        forces[e + 1] -= ft;
+
+        // Weight and buoyancy (eqs. 24–25), buoyancy on the submerged part only.
+        let weight = lt.mass_per_length * g * l0 * 0.5;
+        let (sub_a, sub_b) = submerged_shape_integrals(ra.z, rb.z);
+        let buoy = rho_w * sec.area * g * l0;
+        forces[e].z += buoy * sub_a - weight;
+        forces[e + 1].z += buoy * sub_b - weight;
+
+        // Drag, fluid inertia and added mass at two Gauss points (eqs. 16–23).
+        for &xi in &GAUSS {
+            let (na, nb) = (1.0 - xi, xi);
+            let rg = ra * na + rb * nb;
+            let vg = va * na + vb * nb;
+            let rho = env.fluid_density(rg.z);
+            let uf = env.fluid_velocity(&rg, time) * options.current_factor;
+            let mut f = drag_force(&lt.drag, rho, lt.diameter, stretch, &t, &(uf - vg));
+            let af = env.fluid_acceleration(&rg, time);
+            if af != Vec3::zeros() {
+                f += fluid_inertia_force(
+                    rho,
+                    sec.area,
+                    lt.normal_added_mass,
+                    lt.tangential_added_mass,
+                    &t,
+                    &af,
+                );
+            }
+            let w = 0.5 * l0;
+            forces[e] += f * (w * na);
+            forces[e + 1] += f * (w * nb);
+            if let Some(b) = blocks.as_deref_mut() {
+                let ma = added_mass_matrix(
+                    rho,
+                    sec.area,
+                    lt.normal_added_mass,
+                    lt.tangential_added_mass,
+                    &t,
+                );
+                let m = (ma + Mat3::identity() * lt.mass_per_length) * w;
+                if consistent {
+                    b.diag[e] += m * (na * na);
+                    b.diag[e + 1] += m * (nb * nb);
+                    let off = m * (na * nb);
+                    b.lower[e] += off;
+                    b.upper[e] += off;
+                } else {
+                    b.diag[e] += m * na;
+                    b.diag[e + 1] += m * nb;
+                }
+            }
+        }
+
+        // Seabed contact (DG paper eqs. 15–16) by nodal quadrature over the element.
+        if ra.z < bed_z || rb.z < bed_z {
+            let net_weight = (rho_w * sec.area - lt.mass_per_length) * g;
+            for (node, rn, vn) in [(e, ra, va), (e + 1, rb, vb)] {
+                let f = env.seabed.contact_force(
+                    bed_z,
+                    rn.z,
+                    &vn,
+                    lt.diameter,
+                    lt.mass_per_length,
+                    stretch,
+                    net_weight,
+                );
+                forces[node] += f * (0.5 * l0);
+            }
+        }
+    }
+}
+
+/// ∫ N_a and ∫ N_b over the submerged (z < 0) part of a straight element from height `za` to
+/// `zb`, as fractions of the element length (each is ½ when fully submerged).
+#[inline]
+pub fn submerged_shape_integrals(za: Real, zb: Real) -> (Real, Real) {
+    if za <= 0.0 && zb <= 0.0 {
+        return (0.5, 0.5);
+    }
+    if za >= 0.0 && zb >= 0.0 {
+        return (0.0, 0.0);
+    }
+    // Crossing at ξ* = za / (za − zb).
+    let xs = za / (za - zb);
+    if za < 0.0 {
+        // Submerged on [0, ξ*]: ∫(1−ξ) = ξ* − ξ*²/2, ∫ξ = ξ*²/2.
+        (xs - 0.5 * xs * xs, 0.5 * xs * xs)
+    } else {
+        // Submerged on [ξ*, 1].
+        let a = 0.5 - (xs - 0.5 * xs * xs);
+        let b = 0.5 - 0.5 * xs * xs;
+        (a, b)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    #[test]
+    fn submerged_integrals_sum_to_submerged_fraction() {
+        for (za, zb, frac) in [
+            (-1.0, 1.0, 0.5),
+            (1.0, -3.0, 0.75),
+            (-2.0, -1.0, 1.0),
+            (2.0, 1.0, 0.0),
+        ] {
+            let (a, b) = submerged_shape_integrals(za, zb);
+            assert!((a + b - frac).abs() < 1e-15, "{za} {zb}");
+        }
+        // Upper end dry: the wet lower node carries more of the buoyancy.
+        let (a, b) = submerged_shape_integrals(-1.0, 1.0);
+        assert!((a - 0.375).abs() < 1e-15 && (b - 0.125).abs() < 1e-15);
+    }
+}

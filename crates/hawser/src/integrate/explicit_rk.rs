@@ -1,0 +1,126 @@
+//! Explicit Runge–Kutta integration with stage storage sized once.
+
+use crate::math::Real;
+use crate::model::Scheme;
+use crate::system::{Location, System, Workspace};
+
+/// A Butcher tableau of an explicit scheme with `S` stages.
+#[derive(Debug)]
+pub struct Tableau {
+    /// Name.
+    pub name: &'static str,
+    /// Stage count.
+    pub stages: usize,
+    /// Lower-triangular coefficients a_ij, row-major, `stages × stages`.
+    pub a: &'static [Real],
+    /// Weights b_i.
+    pub b: &'static [Real],
+    /// Nodes c_i.
+    pub c: &'static [Real],
+}
+
+/// Classical 4th-order Runge–Kutta (position-vector paper §3).
+pub const RK4: Tableau = Tableau {
+    name: "RK4",
+    stages: 4,
+    a: &[
+        0.0, 0.0, 0.0, 0.0, 0.5, 0.0, 0.0, 0.0, 0.0, 0.5, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0,
+    ],
+    b: &[1.0 / 6.0, 1.0 / 3.0, 1.0 / 3.0, 1.0 / 6.0],
+    c: &[0.0, 0.5, 0.5, 1.0],
+};
+
+/// Third-order strong-stability-preserving Runge–Kutta of Shu and Osher (DG paper eqs. 31–33)
+/// in Butcher form.
+pub const SSP_RK3: Tableau = Tableau {
+    name: "SSP-RK3",
+    stages: 3,
+    a: &[0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.25, 0.25, 0.0],
+    b: &[1.0 / 6.0, 1.0 / 6.0, 2.0 / 3.0],
+    c: &[0.0, 1.0, 0.5],
+};
+
+impl Scheme {
+    /// The tableau of this scheme.
+    pub fn tableau(self) -> &'static Tableau {
+        match self {
+            Scheme::Rk4 => &RK4,
+            Scheme::SspRk3 => &SSP_RK3,
+        }
+    }
+}
+
+/// An explicit RK integrator: the tableau and its stage storage.
+#[derive(Clone, Debug)]
+pub struct ExplicitRk {
+    tableau: &'static Tableau,
+    k: Vec<Vec<Real>>,
+    stage: Vec<Real>,
+}
+
+impl ExplicitRk {
+    /// Integrator for a state of length `n`.
+    pub fn new(scheme: Scheme, n: usize) -> Self {
+        let tableau = scheme.tableau();
+        Self {
+            tableau,
+            k: vec![vec![0.0; n]; tableau.stages],
+            stage: vec![0.0; n],
+        }
+    }
+
+    /// Right-hand-side evaluations per step.
+    pub fn stages(&self) -> usize {
+        self.tableau.stages
+    }
+
+    /// Advances y from t to t + dt in place.
+    pub fn step(
+        &mut self,
+        system: &System,
+        ws: &mut Workspace,
+        t: Real,
+        dt: Real,
+        y: &mut [Real],
+    ) -> Result<(), Location> {
+        let tab = self.tableau;
+        let s = tab.stages;
+        for i in 0..s {
+            self.stage.copy_from_slice(y);
+            for j in 0..i {
+                let a = tab.a[i * s + j];
+                if a != 0.0 {
+                    let kj = &self.k[j];
+                    for (st, k) in self.stage.iter_mut().zip(kj.iter()) {
+                        *st += dt * a * k;
+                    }
+                }
+            }
+            let (ki, _) = self.k.split_at_mut(i + 1);
+            system.rhs(t + tab.c[i] * dt, &self.stage, &mut ki[i], ws)?;
+        }
+        for i in 0..s {
+            let b = tab.b[i] * dt;
+            for (yv, k) in y.iter_mut().zip(self.k[i].iter()) {
+                *yv += b * k;
+            }
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    #[test]
+    fn tableaux_are_consistent() {
+        for t in [&RK4, &SSP_RK3] {
+            let sb: Real = t.b.iter().sum();
+            assert!((sb - 1.0).abs() < 1e-15);
+            for i in 0..t.stages {
+                let row: Real = t.a[i * t.stages..(i + 1) * t.stages].iter().sum();
+                assert!((row - t.c[i]).abs() < 1e-15, "{} row {i}", t.name);
+            }
+        }
+    }
+}

@@ -1,0 +1,25 @@
+//! # hawser — marine cable dynamics
+//!
+//! The core library: the model of a cable system, the physics shared by every formulation,
+//! the formulations, time integration, statics and result analysis. It does no file I/O;
+//! scenario files and writers live in `hawser-io`, the command line in `hawser-cli`.
+//!
+//! Conventions (SPEC §1): SI units, z up, z = 0 at the still water level, seabed at
+//! z = −depth; strain ε = |∂r/∂s| − 1 from current positions.
+#![warn(missing_docs)]
+
+pub mod analysis;
+pub mod error;
+pub mod formulation;
+pub mod integrate;
+pub mod linalg;
+pub mod math;
+pub mod model;
+pub mod physics;
+pub mod simulation;
+pub mod statics;
+pub mod system;
+
+pub use error::{ModelError, SimulationError, StaticsError};
+pub use model::Model;
+pub use system::System;

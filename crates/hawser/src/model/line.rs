@@ -1,0 +1,108 @@
+//! Line types, lines and their sections.
+
+use crate::math::Real;
+use crate::physics::hydrodynamics::DragModel;
+use crate::physics::material::{AxialDamping, AxialStiffness};
+
+/// Cable properties shared by the sections that use them (SPEC §1).
+#[derive(Clone, Debug, PartialEq)]
+pub struct LineType {
+    /// Name used by line sections.
+    pub name: String,
+    /// Nominal (hydrodynamic) diameter d [m]; sets the drag, buoyancy and added-mass area.
+    pub diameter: Real,
+    /// Mass per unit unstretched length γ0 [kg/m].
+    pub mass_per_length: Real,
+    /// Elastic axial law: EA [N] or a tension–strain table.
+    pub axial_stiffness: AxialStiffness,
+    /// Axial damping: a coefficient [N·s] or a fraction of critical damping.
+    pub axial_damping: AxialDamping,
+    /// Whether the cable carries compression (default false: T = EA·max(ε, 0) + c·ε̇).
+    pub compression: bool,
+    /// Bending stiffness EI [N·m²] (formulations with bending; ignored by `fe`).
+    pub bending_stiffness: Real,
+    /// Bending damping ζ_b [N·m²·s] (formulations with bending; ignored by `fe`).
+    pub bending_damping: Real,
+    /// Drag model.
+    pub drag: DragModel,
+    /// Normal added-mass coefficient C_an [-].
+    pub normal_added_mass: Real,
+    /// Tangential added-mass coefficient C_at [-].
+    pub tangential_added_mass: Real,
+}
+
+impl LineType {
+    /// Cross-section area A = π d²/4 [m²] used for buoyancy and added mass.
+    pub fn area(&self) -> Real {
+        std::f64::consts::PI * self.diameter * self.diameter / 4.0
+    }
+}
+
+/// A run of one line type along a line.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Section {
+    /// Index into [`crate::model::Model::line_types`].
+    pub line_type: usize,
+    /// Unstretched length [m].
+    pub length: Real,
+    /// Number of equal elements.
+    pub elements: usize,
+}
+
+/// Mass matrix of the `fe` formulation.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum MassMatrix {
+    /// Consistent mass matrix γ0 L0/6 [2I I; I 2I] (position-vector paper eq. 12), solved
+    /// in O(N) per step by block-tridiagonal elimination.
+    #[default]
+    Consistent,
+    /// Lumped (diagonal) mass: half of each element's mass at each node.
+    Lumped,
+}
+
+/// Cable formulation of a line (SPEC §3).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Formulation {
+    /// Position-vector finite elements.
+    Fe,
+    /// High-order discontinuous Galerkin (issue 3).
+    Dg,
+    /// Cubic Hermite elements (issue 4).
+    Hermite,
+}
+
+/// What an end of a line is attached to. The attachment owns the end node: it supplies the
+/// end's kinematics and gathers the line's end force and mass (MoorDyn's rule).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LineEnd {
+    /// A connection point (fixed, prescribed or free), by index.
+    Point(usize),
+}
+
+/// A cable between two attachments: end A at arc length s = 0, end B at the full length.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Line {
+    /// Name used for channels and results.
+    pub name: String,
+    /// Sections from end A to end B.
+    pub sections: Vec<Section>,
+    /// Formulation.
+    pub formulation: Formulation,
+    /// Mass matrix (for `fe`).
+    pub mass_matrix: MassMatrix,
+    /// Attachment of end A.
+    pub end_a: LineEnd,
+    /// Attachment of end B.
+    pub end_b: LineEnd,
+}
+
+impl Line {
+    /// Total unstretched length [m].
+    pub fn length(&self) -> Real {
+        self.sections.iter().map(|s| s.length).sum()
+    }
+    /// Total element count.
+    pub fn elements(&self) -> usize {
+        self.sections.iter().map(|s| s.elements).sum()
+    }
+}

@@ -1,0 +1,187 @@
+//! The system description: immutable during a run. Built in code or by `hawser-io` from a
+//! scenario file, validated by [`Model::validate`], then assembled into a
+//! [`crate::system::System`] for time integration and statics.
+
+mod line;
+mod motion;
+mod point;
+
+pub use line::{Formulation, Line, LineEnd, LineType, MassMatrix, Section};
+pub use motion::Motion;
+pub use point::{Point, PointKind};
+
+use crate::error::ModelError;
+use crate::math::Real;
+use crate::physics::environment::Environment;
+
+/// Explicit time-integration scheme.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Scheme {
+    /// Classical 4th-order Runge–Kutta (position-vector paper §3).
+    #[default]
+    Rk4,
+    /// Strong-stability-preserving 3rd-order Runge–Kutta (DG paper eqs. 31–33).
+    SspRk3,
+}
+
+/// Time step of a dynamic run.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum TimeStep {
+    /// The largest stable step from the CFL limit of every element and point, times the
+    /// safety factor.
+    Auto,
+    /// A fixed step [s]; refused when above the stability limit.
+    Fixed(Real),
+}
+
+/// How a dynamic run starts.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum InitialCondition {
+    /// From the static equilibrium (default).
+    #[default]
+    Statics,
+    /// From the positions as given (catenary seed for lines), at rest.
+    AsDefined,
+}
+
+/// Settings of a simulation.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Settings {
+    /// Simulated duration [s].
+    pub duration: Real,
+    /// Time step.
+    pub time_step: TimeStep,
+    /// Safety factor applied to the stability limit by [`TimeStep::Auto`] [-]; default 0.8.
+    pub safety_factor: Real,
+    /// Integration scheme.
+    pub scheme: Scheme,
+    /// Interval between time-series samples [s].
+    pub output_interval: Real,
+    /// Interval between whole-line shape snapshots [s]; `None` for none.
+    pub snapshot_interval: Option<Real>,
+    /// Initial condition.
+    pub initial_condition: InitialCondition,
+}
+
+impl Default for Settings {
+    fn default() -> Self {
+        Self {
+            duration: 10.0,
+            time_step: TimeStep::Auto,
+            safety_factor: 0.8,
+            scheme: Scheme::Rk4,
+            output_interval: 0.1,
+            snapshot_interval: None,
+            initial_condition: InitialCondition::Statics,
+        }
+    }
+}
+
+/// A whole cable system: environment, line types, lines, points and settings.
+#[derive(Clone, Debug, Default)]
+pub struct Model {
+    /// Water, air, seabed and current.
+    pub environment: Environment,
+    /// Line types referenced by line sections.
+    pub line_types: Vec<LineType>,
+    /// Lines.
+    pub lines: Vec<Line>,
+    /// Connection points: anchors, fairleads, free point masses.
+    pub points: Vec<Point>,
+    /// Simulation settings.
+    pub settings: Settings,
+}
+
+impl Model {
+    /// Index of the point named `name`.
+    pub fn point_index(&self, name: &str) -> Option<usize> {
+        self.points.iter().position(|p| p.name == name)
+    }
+
+    /// Index of the line named `name`.
+    pub fn line_index(&self, name: &str) -> Option<usize> {
+        self.lines.iter().position(|l| l.name == name)
+    }
+
+    /// Checks references and physical ranges. The scenario reader gives richer messages with
+    /// file positions; this is the last line of defence for models built in code.
+    pub fn validate(&self) -> Result<(), ModelError> {
+        let bad = |what: String, why: &str| {
+            Err(ModelError::Invalid {
+                what,
+                why: why.to_string(),
+            })
+        };
+        let env = &self.environment;
+        if !(env.gravity >= 0.0) {
+            return bad("environment.gravity".into(), "must be ≥ 0 m/s²");
+        }
+        if !(env.water_density > 0.0) || !(env.air_density >= 0.0) {
+            return bad("environment density".into(), "must be > 0 kg/m³");
+        }
+        if !(env.depth > 0.0) {
+            return bad("environment.depth".into(), "must be > 0 m");
+        }
+        for t in &self.line_types {
+            if !(t.diameter > 0.0) {
+                return bad(format!("line type {}: diameter", t.name), "must be > 0 m");
+            }
+            if !(t.mass_per_length > 0.0) {
+                return bad(
+                    format!("line type {}: mass_per_length", t.name),
+                    "must be > 0 kg/m",
+                );
+            }
+            if !(t.axial_stiffness.max_tangent() > 0.0) {
+                return bad(
+                    format!("line type {}: axial stiffness", t.name),
+                    "must be > 0 N",
+                );
+            }
+        }
+        for (li, l) in self.lines.iter().enumerate() {
+            if l.sections.is_empty() {
+                return bad(format!("line {}", l.name), "has no sections");
+            }
+            for s in &l.sections {
+                if s.line_type >= self.line_types.len() {
+                    return bad(
+                        format!("line {}: section type", l.name),
+                        "refers to no line type",
+                    );
+                }
+                if !(s.length > 0.0) || s.elements == 0 {
+                    return bad(
+                        format!("line {}: section", l.name),
+                        "needs length > 0 m and ≥ 1 element",
+                    );
+                }
+            }
+            for end in [&l.end_a, &l.end_b] {
+                match end {
+                    LineEnd::Point(p) if *p >= self.points.len() => {
+                        return bad(
+                            format!("line {}", l.name),
+                            "is attached to a point that does not exist",
+                        );
+                    }
+                    _ => {}
+                }
+            }
+            if l.formulation != Formulation::Fe {
+                return bad(
+                    format!("line {} (#{li})", l.name),
+                    "uses a formulation not implemented yet (only `fe` is available)",
+                );
+            }
+        }
+        let s = &self.settings;
+        if !(s.duration >= 0.0) || !(s.output_interval > 0.0) {
+            return bad(
+                "simulation".into(),
+                "duration must be ≥ 0 s and output_interval > 0 s",
+            );
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,7 @@
+//! Physics shared by every cable formulation (SPEC §1): the water and seabed around a line,
+//! the hydrodynamic loads on it and the constitutive law of its material.
+
+pub mod environment;
+pub mod hydrodynamics;
+pub mod material;
+pub mod seabed;

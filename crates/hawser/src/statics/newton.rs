@@ -1,0 +1,535 @@
+//! Newton–Raphson statics on the block-structured Jacobian.
+//!
+//! The unknowns are the positions in the state vector (interior line nodes and free points);
+//! velocities are zero. The residual is the net static force on every unknown node [N], from
+//! the same force code as the dynamics. The Jacobian is formed by finite differences of that
+//! code with three colours per line (a node only influences its two neighbours), so it costs
+//! nine line evaluations per iteration, and it is solved with the dynamics' coupled
+//! block-tridiagonal solver.
+
+use super::catenary;
+use super::dynamic_relaxation;
+use crate::error::StaticsError;
+use crate::formulation::fe::{LoadOptions, line_forces};
+use crate::linalg::EndKind;
+use crate::math::{Mat3, Real, Vec3, get3, set3};
+use crate::system::{System, Workspace};
+
+/// Options of the static solver.
+#[derive(Clone, Debug)]
+pub struct StaticOptions {
+    /// Newton iterations per load step.
+    pub max_iterations: usize,
+    /// Convergence tolerance on the largest nodal force imbalance, relative to the system's
+    /// weight scale [-].
+    pub relative_tolerance: Real,
+    /// Seed lines with the elastic catenary (true) or straight lines (false).
+    pub catenary_seed: bool,
+}
+
+impl Default for StaticOptions {
+    fn default() -> Self {
+        Self {
+            max_iterations: 100,
+            relative_tolerance: 1e-9,
+            catenary_seed: true,
+        }
+    }
+}
+
+/// A static equilibrium.
+#[derive(Clone, Debug)]
+pub struct StaticSolution {
+    /// State vector (positions at equilibrium, zero velocities).
+    pub state: Vec<Real>,
+    /// Newton iterations used in all.
+    pub iterations: usize,
+    /// Largest nodal force imbalance [N].
+    pub residual: Real,
+    /// Method that converged.
+    pub method: &'static str,
+}
+
+/// Force scale [N] of the system: total weight magnitude of lines and points plus point loads.
+fn force_scale(system: &System) -> Real {
+    let g = system.environment.gravity.max(1e-3);
+    let mut s = 0.0;
+    for l in &system.lines {
+        for &k in &l.fe.element_section {
+            let sec = &l.fe.sections[k];
+            s += sec.line_type.mass_per_length * g * sec.element_length;
+        }
+    }
+    for p in &system.points {
+        if let crate::model::PointKind::Free { mass, force, .. } = &p.kind {
+            s += mass * g + force.norm();
+        }
+    }
+    s.max(1e-9)
+}
+
+/// Static residual: the net force [N] on every position unknown, stored at that unknown's
+/// index in the state layout (velocity entries are left at zero). Returns the largest entry
+/// magnitude and its index.
+pub fn residual(
+    system: &System,
+    y: &[Real],
+    current_factor: Real,
+    ws: &mut Workspace,
+    out: &mut [Real],
+) -> (Real, usize) {
+    out.iter_mut().for_each(|x| *x = 0.0);
+    system.point_kinematics(0.0, y, ws);
+    for k in ws.points.iter_mut() {
+        k.velocity = Vec3::zeros();
+    }
+    system.gather_lines(y, ws);
+    let options = LoadOptions {
+        current_factor,
+        with_mass: false,
+    };
+    for (li, l) in system.lines.iter().enumerate() {
+        let lw = &mut ws.lines[li];
+        lw.velocity.iter_mut().for_each(|v| *v = Vec3::zeros());
+        line_forces(
+            &l.fe,
+            &system.environment,
+            0.0,
+            &lw.position,
+            &lw.velocity,
+            &mut lw.force,
+            &mut lw.elements,
+            None,
+            options,
+        );
+        let o = system.layout.line_offset[li];
+        for i in 1..l.fe.elements() {
+            set3(&mut out[o..], i - 1, &lw.force[i]);
+        }
+        let n = l.fe.elements();
+        for (p, node) in [(l.end_a, 0), (l.end_b, n)] {
+            if let Some(o) = system.layout.point_offset[p] {
+                let f = get3(&out[o..], 0) + lw.force[node];
+                set3(&mut out[o..], 0, &f);
+            }
+        }
+    }
+    for &p in &system.free_points {
+        let o = system.layout.point_offset[p].expect("free point");
+        let (f, _) = system.point_own_load(p, &ws.points[p], 0.0, current_factor);
+        let f = get3(&out[o..], 0) + f;
+        set3(&mut out[o..], 0, &f);
+    }
+    let mut worst = (0.0, 0);
+    for (i, r) in out.iter().enumerate() {
+        if !(r.abs() <= worst.0) {
+            worst = (
+                if r.is_finite() {
+                    r.abs()
+                } else {
+                    Real::INFINITY
+                },
+                i,
+            );
+        }
+    }
+    worst
+}
+
+/// Seeds the lines of `y` with elastic catenaries between their current end positions.
+pub fn catenary_seed(system: &System, y: &mut [Real], ws: &mut Workspace) {
+    system.point_kinematics(0.0, y, ws);
+    let env = &system.environment;
+    for (li, l) in system.lines.iter().enumerate() {
+        let n = l.fe.elements();
+        let length = l.fe.arc_length(n);
+        let (mut weight, mut ea) = (0.0, 0.0);
+        for &k in &l.fe.element_section {
+            let s = &l.fe.sections[k];
+            weight += (s.line_type.mass_per_length - env.water_density * s.area)
+                * env.gravity
+                * s.element_length;
+            ea += s.element_length / s.law.stiffness.max_tangent();
+        }
+        let w = weight / length;
+        let ea = length / ea;
+        let pa = ws.points[l.end_a].position;
+        let pb = ws.points[l.end_b].position;
+        // Hang from the lower end for a sinking line, from the upper one for a buoyant line.
+        let (lo, hi, reversed) = if (w >= 0.0) == (pa.z <= pb.z) {
+            (pa, pb, false)
+        } else {
+            (pb, pa, true)
+        };
+        let d = hi - lo;
+        let horizontal = Vec3::new(d.x, d.y, 0.0);
+        let span = horizontal.norm();
+        let height = d.z * w.signum();
+        let on_bed = env.depth.is_finite()
+            && w > 0.0
+            && (lo.z - env.seabed_z()).abs() < 1e-3 * length.max(1.0);
+        let dir = if span > 0.0 {
+            horizontal / span
+        } else {
+            Vec3::x()
+        };
+        let cat = if w.abs() > 0.0 {
+            catenary::solve(span, height, length, w.abs(), ea, on_bed)
+        } else {
+            None
+        };
+        let o = system.layout.line_offset[li];
+        for i in 1..n {
+            let s_a = l.fe.arc_length(i);
+            let s = if reversed { length - s_a } else { s_a };
+            let p = match &cat {
+                Some(c) => {
+                    let (x, z) = c.position(s);
+                    lo + dir * x + Vec3::z() * (z * w.signum())
+                }
+                None => pa + (pb - pa) * (s_a / length),
+            };
+            set3(&mut y[o..], i - 1, &p);
+        }
+    }
+}
+
+/// Finite-difference Jacobian ∂F/∂x of the static residual into the workspace's line blocks
+/// and point blocks.
+fn jacobian(system: &System, y: &[Real], current_factor: Real, ws: &mut Workspace) {
+    let options = LoadOptions {
+        current_factor,
+        with_mass: false,
+    };
+    system.point_kinematics(0.0, y, ws);
+    system.gather_lines(y, ws);
+    let env = &system.environment;
+    for (li, l) in system.lines.iter().enumerate() {
+        let n = l.fe.elements();
+        let min_l0 =
+            l.fe.sections
+                .iter()
+                .map(|s| s.element_length)
+                .fold(Real::INFINITY, Real::min);
+        let h = 1e-6 * min_l0;
+        let blocks = &mut ws.blocks[li];
+        blocks.clear();
+        let lw = &mut ws.lines[li];
+        lw.velocity.iter_mut().for_each(|v| *v = Vec3::zeros());
+        let base: Vec<Vec3> = {
+            line_forces(
+                &l.fe,
+                env,
+                0.0,
+                &lw.position,
+                &lw.velocity,
+                &mut lw.force,
+                &mut lw.elements,
+                None,
+                options,
+            );
+            lw.force.clone()
+        };
+        let free = |node: usize| -> bool {
+            if node == 0 {
+                blocks.end_a != EndKind::Known
+            } else if node == n {
+                blocks.end_b != EndKind::Known
+            } else {
+                true
+            }
+        };
+        let free_nodes: Vec<bool> = (0..=n).map(free).collect();
+        for colour in 0..3 {
+            for k in 0..3 {
+                let mut any = false;
+                for j in (colour..=n).step_by(3) {
+                    if free_nodes[j] {
+                        lw.position[j][k] += h;
+                        any = true;
+                    }
+                }
+                if !any {
+                    continue;
+                }
+                line_forces(
+                    &l.fe,
+                    env,
+                    0.0,
+                    &lw.position,
+                    &lw.velocity,
+                    &mut lw.force,
+                    &mut lw.elements,
+                    None,
+                    options,
+                );
+                for j in (colour..=n).step_by(3) {
+                    if !free_nodes[j] {
+                        continue;
+                    }
+                    lw.position[j][k] -= h;
+                    for r in 0..3 {
+                        blocks.diag[j][(r, k)] = (lw.force[j][r] - base[j][r]) / h;
+                        if j > 0 {
+                            blocks.upper[j - 1][(r, k)] = (lw.force[j - 1][r] - base[j - 1][r]) / h;
+                        }
+                        if j < n {
+                            blocks.lower[j][(r, k)] = (lw.force[j + 1][r] - base[j + 1][r]) / h;
+                        }
+                    }
+                }
+            }
+        }
+        blocks.coupled = true;
+    }
+    for (f, &p) in system.free_points.iter().enumerate() {
+        let k0 = ws.points[p];
+        let (f0, _) = system.point_own_load(p, &k0, 0.0, current_factor);
+        let mut m = Mat3::zeros();
+        let h = 1e-6;
+        for k in 0..3 {
+            let mut kk = k0;
+            kk.position[k] += h;
+            let (f1, _) = system.point_own_load(p, &kk, 0.0, current_factor);
+            for r in 0..3 {
+                m[(r, k)] = (f1[r] - f0[r]) / h;
+            }
+        }
+        ws.coupled.point_diag[f] = m;
+    }
+}
+
+/// Solves J Δ = −R in place of the workspace blocks; `shift` adds −shift·I to every diagonal
+/// block (a positive stiffness that regularises slack cables). Writes Δ into `delta`.
+fn newton_step(
+    system: &System,
+    r: &[Real],
+    shift: Real,
+    ws: &mut Workspace,
+    delta: &mut [Real],
+) -> bool {
+    for (li, l) in system.lines.iter().enumerate() {
+        let n = l.fe.elements();
+        let o = system.layout.line_offset[li];
+        let b = &mut ws.blocks[li];
+        for i in 0..=n {
+            b.diag[i] -= Mat3::identity() * shift;
+        }
+        for i in 1..n {
+            b.x[i] = -get3(&r[o..], i - 1);
+        }
+        for (node, p) in [(0, l.end_a), (n, l.end_b)] {
+            b.x[node] = match system.layout.point_offset[p] {
+                Some(_) => Vec3::zeros(), // the point's residual goes in once, below
+                None => Vec3::zeros(),
+            };
+        }
+    }
+    for (f, &p) in system.free_points.iter().enumerate() {
+        let o = system.layout.point_offset[p].expect("free point");
+        ws.coupled.point_diag[f] -= Mat3::identity() * shift;
+        ws.coupled.point_x[f] = -get3(&r[o..], 0);
+    }
+    // The coupled solver adds every line end's diagonal and right-hand side into its point;
+    // the point rows already hold the full residual, so the ends contribute no extra rhs.
+    if ws.coupled.solve(&mut ws.blocks).is_err() {
+        return false;
+    }
+    delta.iter_mut().for_each(|d| *d = 0.0);
+    for (li, l) in system.lines.iter().enumerate() {
+        let o = system.layout.line_offset[li];
+        for i in 1..l.fe.elements() {
+            set3(&mut delta[o..], i - 1, &ws.blocks[li].x[i]);
+        }
+    }
+    for (f, &p) in system.free_points.iter().enumerate() {
+        let o = system.layout.point_offset[p].expect("free point");
+        set3(&mut delta[o..], 0, &ws.coupled.point_x[f]);
+    }
+    delta.iter().all(|d| d.is_finite())
+}
+
+/// Newton iterations at a fixed load factor. Returns (converged, iterations, residual).
+fn newton(
+    system: &System,
+    y: &mut [Real],
+    current_factor: Real,
+    tol: Real,
+    max_iter: usize,
+    ws: &mut Workspace,
+) -> (bool, usize, Real) {
+    let len = y.len();
+    let mut r = vec![0.0; len];
+    let mut trial_r = vec![0.0; len];
+    let mut delta = vec![0.0; len];
+    let mut trial = vec![0.0; len];
+    let max_step = system
+        .lines
+        .iter()
+        .map(|l| l.fe.arc_length(l.fe.elements()))
+        .fold(0.0, Real::max)
+        * 0.2;
+    let (mut norm, _) = residual(system, y, current_factor, ws, &mut r);
+    for it in 0..max_iter {
+        if norm <= tol {
+            return (true, it, norm);
+        }
+        jacobian(system, y, current_factor, ws);
+        let diag_scale = ws
+            .blocks
+            .iter()
+            .flat_map(|b| b.diag.iter())
+            .map(|m| m.abs().max())
+            .fold(0.0, Real::max);
+        let mut shift = 0.0;
+        let mut ok = false;
+        for _ in 0..8 {
+            if newton_step(system, &r, shift, ws, &mut delta) {
+                ok = true;
+                break;
+            }
+            jacobian(system, y, current_factor, ws);
+            shift = if shift == 0.0 {
+                1e-8 * diag_scale.max(1e-12)
+            } else {
+                shift * 100.0
+            };
+        }
+        if !ok {
+            return (false, it, norm);
+        }
+        // Limit the largest nodal move, then backtrack on the residual.
+        let big = (0..len / 3)
+            .map(|i| get3(&delta, i).norm())
+            .fold(0.0, Real::max);
+        let mut alpha = if big > max_step && max_step > 0.0 {
+            max_step / big
+        } else {
+            1.0
+        };
+        let mut accepted = false;
+        for _ in 0..30 {
+            for i in 0..len {
+                trial[i] = y[i] + alpha * delta[i];
+            }
+            let (tn, _) = residual(system, &trial, current_factor, ws, &mut trial_r);
+            if tn.is_finite() && (tn < (1.0 - 1e-4 * alpha) * norm || tn <= tol) {
+                y.copy_from_slice(&trial);
+                r.copy_from_slice(&trial_r);
+                norm = tn;
+                accepted = true;
+                break;
+            }
+            alpha *= 0.5;
+        }
+        if !accepted {
+            return (norm <= tol, it + 1, norm);
+        }
+    }
+    (norm <= tol, max_iter, norm)
+}
+
+/// Finds the static equilibrium of the system with prescribed points at their t = 0
+/// positions, starting from `initial` (or a catenary seed when `None`).
+pub fn solve(
+    system: &System,
+    initial: Option<&[Real]>,
+    options: &StaticOptions,
+) -> Result<StaticSolution, StaticsError> {
+    let mut ws = system.workspace();
+    let mut y = match initial {
+        Some(y0) => y0.to_vec(),
+        None => system.straight_state(),
+    };
+    if initial.is_none() && options.catenary_seed {
+        catenary_seed(system, &mut y, &mut ws);
+    }
+    // Zero velocities.
+    zero_velocities(system, &mut y);
+    let tol = options.relative_tolerance * force_scale(system);
+    let seed = y.clone();
+    let (ok, it, res) = newton(system, &mut y, 1.0, tol, options.max_iterations, &mut ws);
+    if ok {
+        return Ok(StaticSolution {
+            state: y,
+            iterations: it,
+            residual: res,
+            method: "newton",
+        });
+    }
+    // Load continuation on the current and point loads from the seed.
+    let mut total = it;
+    y.copy_from_slice(&seed);
+    let mut lambda: Real = 0.0;
+    let mut step: Real = 0.25;
+    let mut cont_ok = true;
+    while lambda < 1.0 {
+        let target = (lambda + step).min(1.0);
+        let mut trial = y.clone();
+        let (ok, it, _) = newton(
+            system,
+            &mut trial,
+            target,
+            tol,
+            options.max_iterations,
+            &mut ws,
+        );
+        total += it;
+        if ok {
+            y = trial;
+            lambda = target;
+            step *= 1.5;
+        } else {
+            step *= 0.25;
+            if step < 1e-3 {
+                cont_ok = false;
+                break;
+            }
+        }
+    }
+    if cont_ok {
+        let (_, _, res) = newton(system, &mut y, 1.0, tol, options.max_iterations, &mut ws);
+        return Ok(StaticSolution {
+            state: y,
+            iterations: total,
+            residual: res,
+            method: "newton with load continuation",
+        });
+    }
+    // Dynamic relaxation, then Newton to polish.
+    let mut r = vec![0.0; y.len()];
+    let (newton_res, worst) = residual(system, &seed, 1.0, &mut ws, &mut r);
+    let location = system.locate(worst);
+    y.copy_from_slice(&seed);
+    let dr_res = dynamic_relaxation::relax(system, &mut y, tol, &mut ws);
+    let (ok, it, res) = newton(system, &mut y, 1.0, tol, options.max_iterations, &mut ws);
+    if ok || dr_res <= tol {
+        return Ok(StaticSolution {
+            state: y,
+            iterations: total + it,
+            residual: res.min(dr_res),
+            method: "dynamic relaxation",
+        });
+    }
+    Err(StaticsError::NotConverged {
+        iterations: total,
+        residual: newton_res,
+        tolerance: tol,
+        location: format!("{} node {}", location.object, location.node),
+        relaxation_residual: dr_res,
+        hint: "check that every free point is held by a line or is neutrally supported, that lines are long \
+               enough to reach between their ends, and that points start near their equilibrium"
+            .into(),
+    })
+}
+
+/// Sets every velocity entry of the state to zero.
+pub fn zero_velocities(system: &System, y: &mut [Real]) {
+    for (li, &m) in system.layout.line_interior.iter().enumerate() {
+        let o = system.layout.line_offset[li];
+        y[o + 3 * m..o + 6 * m].iter_mut().for_each(|v| *v = 0.0);
+    }
+    for o in system.layout.point_offset.iter().flatten() {
+        y[o + 3..o + 6].iter_mut().for_each(|v| *v = 0.0);
+    }
+}

@@ -1,0 +1,557 @@
+//! The assembled system: the model discretised for simulation, its state layout, and the
+//! right-hand side of the equations of motion.
+//!
+//! State layout (one contiguous `Vec<f64>`, see [`Layout`]): for every line, the positions of
+//! its interior nodes (3 per node) then their velocities; then for every free point its
+//! position then its velocity. End nodes are not line state: they belong to the point they are
+//! attached to (fixed, prescribed, or free and then in the state).
+
+use crate::error::{ModelError, SimulationError};
+use crate::formulation::fe::{ElementState, FeLine, LoadOptions, line_forces};
+use crate::linalg::{CoupledSystem, EndKind, LineBlocks, Singular};
+use crate::math::{Mat3, Real, Vec3, get3, set3};
+use crate::model::{LineEnd, Model, PointKind, Scheme};
+use crate::physics::environment::Environment;
+
+/// Where each object's unknowns sit in the state vector.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Layout {
+    /// Offset of each line's block: 3·(N−1) positions then 3·(N−1) velocities.
+    pub line_offset: Vec<usize>,
+    /// Interior node count N − 1 of each line.
+    pub line_interior: Vec<usize>,
+    /// Offset of each free point's block (position then velocity), `None` otherwise.
+    pub point_offset: Vec<Option<usize>>,
+    /// Total length.
+    pub len: usize,
+}
+
+/// A line of the system.
+#[derive(Clone, Debug)]
+pub struct SystemLine {
+    /// Name.
+    pub name: String,
+    /// Discretisation.
+    pub fe: FeLine,
+    /// Point index of end A.
+    pub end_a: usize,
+    /// Point index of end B.
+    pub end_b: usize,
+}
+
+/// A point of the system.
+#[derive(Clone, Debug)]
+pub struct SystemPoint {
+    /// Name.
+    pub name: String,
+    /// Initial position [m].
+    pub position: Vec3,
+    /// Kind.
+    pub kind: PointKind,
+    /// Index among free points.
+    pub free_index: Option<usize>,
+}
+
+/// The immutable, assembled system.
+#[derive(Clone, Debug)]
+pub struct System {
+    /// Environment.
+    pub environment: Environment,
+    /// Lines.
+    pub lines: Vec<SystemLine>,
+    /// Points.
+    pub points: Vec<SystemPoint>,
+    /// Indices of the free points.
+    pub free_points: Vec<usize>,
+    /// State layout.
+    pub layout: Layout,
+}
+
+/// Kinematics of a point at one instant.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct PointKinematics {
+    /// Position [m].
+    pub position: Vec3,
+    /// Velocity [m/s].
+    pub velocity: Vec3,
+    /// Acceleration [m/s²] (prescribed points; solved for free points).
+    pub acceleration: Vec3,
+}
+
+/// Scratch of one line, sized once.
+#[derive(Clone, Debug)]
+pub struct LineWork {
+    /// Node positions [m], ends included.
+    pub position: Vec<Vec3>,
+    /// Node velocities [m/s].
+    pub velocity: Vec<Vec3>,
+    /// Node forces [N] from the line's physics.
+    pub force: Vec<Vec3>,
+    /// Element tension and strain.
+    pub elements: ElementState,
+}
+
+/// All scratch of the right-hand side, sized once: no allocation in the time loop.
+#[derive(Clone, Debug)]
+pub struct Workspace {
+    /// Per line.
+    pub lines: Vec<LineWork>,
+    /// Per line: mass blocks; after a solve, `x` holds node accelerations [m/s²].
+    pub blocks: Vec<LineBlocks>,
+    /// Per point.
+    pub points: Vec<PointKinematics>,
+    /// Shared-point system.
+    pub coupled: CoupledSystem,
+}
+
+/// Identifies the place in the model a state entry belongs to.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Location {
+    /// Line or point name.
+    pub object: String,
+    /// Node index along the line (0 at end A), 0 for a point.
+    pub node: usize,
+}
+
+impl System {
+    /// Assembles a validated model.
+    pub fn new(model: &Model) -> Result<Self, ModelError> {
+        model.validate()?;
+        let mut points = Vec::new();
+        let mut free_points = Vec::new();
+        for (i, p) in model.points.iter().enumerate() {
+            let free_index = if matches!(p.kind, PointKind::Free { .. }) {
+                free_points.push(i);
+                Some(free_points.len() - 1)
+            } else {
+                None
+            };
+            let position = match &p.kind {
+                PointKind::Prescribed(m) => m.initial_position(),
+                _ => p.position,
+            };
+            points.push(SystemPoint {
+                name: p.name.clone(),
+                position,
+                kind: p.kind.clone(),
+                free_index,
+            });
+        }
+        let mut lines = Vec::new();
+        let mut line_offset = Vec::new();
+        let mut line_interior = Vec::new();
+        let mut len = 0;
+        for l in &model.lines {
+            let sections: Vec<_> = l
+                .sections
+                .iter()
+                .map(|s| (model.line_types[s.line_type].clone(), s.length, s.elements))
+                .collect();
+            let fe = FeLine::new(&sections, l.mass_matrix);
+            let LineEnd::Point(end_a) = l.end_a;
+            let LineEnd::Point(end_b) = l.end_b;
+            let interior = fe.elements() - 1;
+            line_offset.push(len);
+            line_interior.push(interior);
+            len += 6 * interior;
+            lines.push(SystemLine {
+                name: l.name.clone(),
+                fe,
+                end_a,
+                end_b,
+            });
+        }
+        let mut point_offset = vec![None; points.len()];
+        for &p in &free_points {
+            point_offset[p] = Some(len);
+            len += 6;
+        }
+        Ok(Self {
+            environment: model.environment.clone(),
+            lines,
+            points,
+            free_points,
+            layout: Layout {
+                line_offset,
+                line_interior,
+                point_offset,
+                len,
+            },
+        })
+    }
+
+    /// Scratch for this system.
+    pub fn workspace(&self) -> Workspace {
+        let end_kind = |p: usize| match self.points[p].free_index {
+            Some(f) => EndKind::Free(f),
+            None => EndKind::Known,
+        };
+        let lines = self
+            .lines
+            .iter()
+            .map(|l| {
+                let n = l.fe.elements();
+                LineWork {
+                    position: vec![Vec3::zeros(); n + 1],
+                    velocity: vec![Vec3::zeros(); n + 1],
+                    force: vec![Vec3::zeros(); n + 1],
+                    elements: ElementState::new(n),
+                }
+            })
+            .collect();
+        let blocks = self
+            .lines
+            .iter()
+            .map(|l| {
+                let coupled = l.fe.mass_matrix == crate::model::MassMatrix::Consistent;
+                LineBlocks::new(
+                    l.fe.elements(),
+                    end_kind(l.end_a),
+                    end_kind(l.end_b),
+                    coupled,
+                )
+            })
+            .collect();
+        Workspace {
+            lines,
+            blocks,
+            points: vec![PointKinematics::default(); self.points.len()],
+            coupled: CoupledSystem::new(self.free_points.len()),
+        }
+    }
+
+    /// A state with every line straight between its ends and everything at rest.
+    pub fn straight_state(&self) -> Vec<Real> {
+        let mut y = vec![0.0; self.layout.len];
+        for (i, p) in self.points.iter().enumerate() {
+            if let Some(o) = self.layout.point_offset[i] {
+                set3(&mut y[o..], 0, &p.position);
+            }
+        }
+        for (li, l) in self.lines.iter().enumerate() {
+            let a = self.points[l.end_a].position;
+            let b = self.points[l.end_b].position;
+            let total = l.fe.arc_length(l.fe.elements());
+            let o = self.layout.line_offset[li];
+            for i in 1..l.fe.elements() {
+                let s = l.fe.arc_length(i) / total;
+                set3(&mut y[o..], i - 1, &(a + (b - a) * s));
+            }
+        }
+        y
+    }
+
+    /// Updates the point kinematics at time t from the state (positions and velocities).
+    pub fn point_kinematics(&self, t: Real, y: &[Real], ws: &mut Workspace) {
+        for (i, p) in self.points.iter().enumerate() {
+            ws.points[i] = match &p.kind {
+                PointKind::Fixed => PointKinematics {
+                    position: p.position,
+                    ..Default::default()
+                },
+                PointKind::Prescribed(m) => {
+                    let (position, velocity, acceleration) = m.kinematics(t);
+                    PointKinematics {
+                        position,
+                        velocity,
+                        acceleration,
+                    }
+                }
+                PointKind::Free { .. } => {
+                    let o = self.layout.point_offset[i].expect("free point has a state block");
+                    PointKinematics {
+                        position: get3(y, o / 3),
+                        velocity: get3(y, o / 3 + 1),
+                        acceleration: Vec3::zeros(),
+                    }
+                }
+            };
+        }
+    }
+
+    /// Fills each line's node positions and velocities from the state and its ends.
+    pub fn gather_lines(&self, y: &[Real], ws: &mut Workspace) {
+        for (li, l) in self.lines.iter().enumerate() {
+            let n = l.fe.elements();
+            let o = self.layout.line_offset[li];
+            let m = self.layout.line_interior[li];
+            let lw = &mut ws.lines[li];
+            lw.position[0] = ws.points[l.end_a].position;
+            lw.velocity[0] = ws.points[l.end_a].velocity;
+            lw.position[n] = ws.points[l.end_b].position;
+            lw.velocity[n] = ws.points[l.end_b].velocity;
+            for i in 1..n {
+                lw.position[i] = get3(&y[o..], i - 1);
+                lw.velocity[i] = get3(&y[o + 3 * m..], i - 1);
+            }
+        }
+    }
+
+    /// Forces of a free point's own physics [N] (weight, buoyancy, drag, external force) and
+    /// its own mass matrix [kg] (mass plus added mass when submerged).
+    pub fn point_own_load(
+        &self,
+        p: usize,
+        k: &PointKinematics,
+        t: Real,
+        load_factor: Real,
+    ) -> (Vec3, Mat3) {
+        let PointKind::Free {
+            mass,
+            volume,
+            drag_area,
+            added_mass_coefficient,
+            force,
+        } = &self.points[p].kind
+        else {
+            return (Vec3::zeros(), Mat3::zeros());
+        };
+        let env = &self.environment;
+        let rho = env.fluid_density(k.position.z);
+        let submerged = k.position.z < 0.0;
+        let mut f = Vec3::new(0.0, 0.0, -mass * env.gravity) + force * load_factor;
+        let mut m = *mass;
+        if submerged {
+            f.z += rho * volume * env.gravity;
+            m += rho * volume * added_mass_coefficient;
+            let aw = env.fluid_acceleration(&k.position, t);
+            f += aw * (rho * volume * (1.0 + added_mass_coefficient));
+        }
+        let rel = env.fluid_velocity(&k.position, t) * load_factor - k.velocity;
+        f += rel * (0.5 * rho * drag_area * rel.norm());
+        (f, Mat3::identity() * m)
+    }
+
+    /// Right-hand side of the equations of motion: dy/dt at (t, y).
+    ///
+    /// Lines: M a = F with M block-tridiagonal (consistent) or block-diagonal (lumped); free
+    /// points: (m_p + added mass + the line ends' mass) a_p = F_p + Σ line end forces. Solved
+    /// together in O(nodes) by [`CoupledSystem`].
+    pub fn rhs(
+        &self,
+        t: Real,
+        y: &[Real],
+        dydt: &mut [Real],
+        ws: &mut Workspace,
+    ) -> Result<(), Location> {
+        self.point_kinematics(t, y, ws);
+        self.gather_lines(y, ws);
+        let options = LoadOptions {
+            current_factor: 1.0,
+            with_mass: true,
+        };
+        for (li, l) in self.lines.iter().enumerate() {
+            let lw = &mut ws.lines[li];
+            let blocks = &mut ws.blocks[li];
+            line_forces(
+                &l.fe,
+                &self.environment,
+                t,
+                &lw.position,
+                &lw.velocity,
+                &mut lw.force,
+                &mut lw.elements,
+                Some(blocks),
+                options,
+            );
+            let n = l.fe.elements();
+            blocks.x.copy_from_slice(&lw.force);
+            if blocks.end_a == EndKind::Known {
+                blocks.x[0] = ws.points[l.end_a].acceleration;
+            }
+            if blocks.end_b == EndKind::Known {
+                blocks.x[n] = ws.points[l.end_b].acceleration;
+            }
+        }
+        for (f, &p) in self.free_points.iter().enumerate() {
+            let (force, mass) = self.point_own_load(p, &ws.points[p], t, 1.0);
+            ws.coupled.point_x[f] = force;
+            ws.coupled.point_diag[f] = mass;
+        }
+        ws.coupled
+            .solve(&mut ws.blocks)
+            .map_err(|s| self.singular_location(s))?;
+        // Write dy/dt.
+        for (li, l) in self.lines.iter().enumerate() {
+            let o = self.layout.line_offset[li];
+            let m = self.layout.line_interior[li];
+            let lw = &ws.lines[li];
+            let acc = &ws.blocks[li].x;
+            for i in 1..l.fe.elements() {
+                set3(&mut dydt[o..], i - 1, &lw.velocity[i]);
+                set3(&mut dydt[o + 3 * m..], i - 1, &acc[i]);
+            }
+        }
+        for (f, &p) in self.free_points.iter().enumerate() {
+            let o = self.layout.point_offset[p].expect("free point");
+            set3(&mut dydt[o..], 0, &ws.points[p].velocity);
+            set3(&mut dydt[o..], 1, &ws.coupled.point_x[f]);
+            ws.points[p].acceleration = ws.coupled.point_x[f];
+        }
+        Ok(())
+    }
+
+    /// Names the place of a singular block.
+    pub fn singular_location(&self, s: Singular) -> Location {
+        match s {
+            Singular::Line { line, node } => Location {
+                object: self.lines[line].name.clone(),
+                node,
+            },
+            Singular::Point(f) => Location {
+                object: self.points[self.free_points[f]].name.clone(),
+                node: 0,
+            },
+        }
+    }
+
+    /// Names the place a state index belongs to.
+    pub fn locate(&self, index: usize) -> Location {
+        for (li, l) in self.lines.iter().enumerate() {
+            let o = self.layout.line_offset[li];
+            let m = self.layout.line_interior[li];
+            if index >= o && index < o + 6 * m {
+                let node = ((index - o) % (3 * m)) / 3 + 1;
+                return Location {
+                    object: l.name.clone(),
+                    node,
+                };
+            }
+        }
+        for (p, off) in self.layout.point_offset.iter().enumerate() {
+            if let Some(o) = off {
+                if index >= *o && index < o + 6 {
+                    return Location {
+                        object: self.points[p].name.clone(),
+                        node: 0,
+                    };
+                }
+            }
+        }
+        Location {
+            object: "?".into(),
+            node: 0,
+        }
+    }
+
+    /// Force [N] a line exerts on the attachment of one end (`end_b` false: end A), from the
+    /// last right-hand-side evaluation: the end node's share of the line's forces minus the
+    /// inertia of its share of the line's mass, F_end − (M_ee a_e + M_en a_n).
+    pub fn end_force(&self, ws: &Workspace, line: usize, end_b: bool) -> Vec3 {
+        let lw = &ws.lines[line];
+        let n = self.lines[line].fe.elements();
+        let b = &ws.blocks[line];
+        if end_b {
+            lw.force[n] - (b.diag[n] * b.x[n] + b.lower[n - 1] * b.x[n - 1])
+        } else {
+            lw.force[0] - (b.diag[0] * b.x[0] + b.upper[0] * b.x[1])
+        }
+    }
+
+    /// Tension [N] at node i of a line: the mean of its elements' tensions at interior nodes
+    /// and the magnitude of the end force at the ends.
+    pub fn node_tension(&self, ws: &Workspace, line: usize, node: usize) -> Real {
+        let n = self.lines[line].fe.elements();
+        let t = &ws.lines[line].elements.tension;
+        if node == 0 {
+            self.end_force(ws, line, false).norm()
+        } else if node == n {
+            self.end_force(ws, line, true).norm()
+        } else {
+            0.5 * (t[node - 1] + t[node])
+        }
+    }
+
+    /// Largest stable time step [s] of `scheme` for this system near the state in `ws`, and a
+    /// description of what sets it.
+    ///
+    /// Per element: the highest mode of a two-node element with axial stiffness k = EA_max/L0,
+    /// damping c/L0 and node mass γ_a L0/2 (lumped) or a third of it (consistent mass),
+    /// λ = −ζω ± ω√(ζ² − 1) in the element's relative coordinate; per node in seabed contact:
+    /// ω = √(K_g d/γ0); the step is R/|λ|max with R the radius of the scheme's stability region
+    /// along the left half-plane (RK4 2.6, SSP-RK3 1.7).
+    pub fn stable_step(&self, scheme: Scheme) -> (Real, String) {
+        let radius = match scheme {
+            Scheme::Rk4 => 2.6,
+            Scheme::SspRk3 => 1.7,
+        };
+        let mut worst = 0.0;
+        let mut culprit = String::from("nothing (no elements)");
+        let rho = self.environment.water_density;
+        for l in &self.lines {
+            let consistent = l.fe.mass_matrix == crate::model::MassMatrix::Consistent;
+            for (k, s) in l.fe.sections.iter().enumerate() {
+                let lt = &s.line_type;
+                let gamma = lt.mass_per_length + rho * s.area * lt.tangential_added_mass.max(0.0);
+                let l0 = s.element_length;
+                let mut node_mass = gamma * l0 * 0.5;
+                if consistent {
+                    node_mass /= 3.0;
+                }
+                // Relative coordinate of the two nodes: mass m/2, stiffness k, damper c.
+                let mr = 0.5 * node_mass;
+                let stiffness = s.law.stiffness.max_tangent() / l0;
+                let damper = s.law.damping / l0;
+                let lambda = eigen_magnitude(mr, stiffness, damper);
+                if lambda > worst {
+                    worst = lambda;
+                    culprit = format!(
+                        "line {} section {} (element length {:.4} m, axial wave speed {:.1} m/s)",
+                        l.name,
+                        k + 1,
+                        l0,
+                        (s.law.stiffness.max_tangent() / lt.mass_per_length).sqrt()
+                    );
+                }
+                let seabed = &self.environment.seabed;
+                if self.environment.depth.is_finite() && seabed.stiffness > 0.0 {
+                    let ks = seabed.stiffness * lt.diameter;
+                    let cs = 2.0 * seabed.damping_ratio * (ks * lt.mass_per_length).sqrt();
+                    let lambda = eigen_magnitude(lt.mass_per_length, ks, cs);
+                    if lambda > worst {
+                        worst = lambda;
+                        culprit = format!("seabed contact of line {} section {}", l.name, k + 1);
+                    }
+                }
+            }
+        }
+        if worst == 0.0 {
+            return (Real::INFINITY, culprit);
+        }
+        (radius / worst, culprit)
+    }
+}
+
+/// Largest |λ| of m ẍ + c ẋ + k x = 0.
+fn eigen_magnitude(m: Real, k: Real, c: Real) -> Real {
+    let a = c / (2.0 * m);
+    let disc = a * a - k / m;
+    if disc >= 0.0 {
+        a + disc.sqrt()
+    } else {
+        (k / m).sqrt()
+    }
+}
+
+impl Workspace {
+    /// Element tensions [N] of a line from the last evaluation.
+    pub fn tensions(&self, line: usize) -> &[Real] {
+        &self.lines[line].elements.tension
+    }
+}
+
+/// Builds the error for a non-finite or runaway state.
+pub fn divergence(
+    system: &System,
+    time: Real,
+    location: Location,
+    reason: &str,
+) -> SimulationError {
+    SimulationError::Diverged {
+        time,
+        object: location.object,
+        node: location.node,
+        reason: reason.to_string(),
+        stable_step: system.stable_step(Scheme::Rk4).0,
+    }
+}
