@@ -1,1 +1,436 @@
-fn main() {}
+//! `hawser`: the command-line tool. Parsing, progress display and exit codes only; the work is
+//! done by the `hawser` core and `hawser-io`.
+
+use anyhow::{Context, Result};
+use clap::{Parser, Subcommand};
+use hawser::math::Real;
+use hawser::model::{InitialCondition, MassMatrix, Model};
+use hawser::simulation::{Observer, Simulation};
+use hawser::statics::{StaticOptions, StaticSolution};
+use hawser::system::{System, Workspace};
+use hawser::{SimulationError, StaticsError};
+use hawser_io::results::{RunWriter, statics_json};
+use hawser_io::scenario::{self, Diagnostic, LoadedScenario};
+use indicatif::{ProgressBar, ProgressStyle};
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use std::time::Instant;
+
+#[derive(Parser)]
+#[command(
+    name = "hawser",
+    version,
+    about = "Marine cable dynamics: statics and time-domain simulation of cables, moorings and tethers"
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Run a dynamic simulation and write results into a directory.
+    Run {
+        /// Scenario file (TOML).
+        file: PathBuf,
+        /// Output directory.
+        #[arg(long, short, default_value = "out")]
+        out: PathBuf,
+        /// Hide the progress bar.
+        #[arg(long)]
+        quiet: bool,
+    },
+    /// Find the static equilibrium and print tensions and positions.
+    Statics {
+        /// Scenario file (TOML).
+        file: PathBuf,
+        /// Print the full solution as JSON.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Validate a scenario file without running it.
+    Check {
+        /// Scenario file (TOML).
+        file: PathBuf,
+    },
+    /// Print the JSON Schema of scenario files.
+    Schema,
+    /// Measure time-stepping throughput (node-steps per second) on a scenario.
+    Bench {
+        /// Scenario file (TOML).
+        file: PathBuf,
+        /// Simulated duration [s] (default: the scenario's).
+        #[arg(long)]
+        duration: Option<Real>,
+        /// Time step [s] (default: the scenario's rule).
+        #[arg(long)]
+        dt: Option<Real>,
+        /// Print JSON.
+        #[arg(long)]
+        json: bool,
+    },
+}
+
+/// Exit codes: 0 success, 1 simulation or statics failure, 2 bad input.
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        Command::Run { file, out, quiet } => run(&file, &out, quiet),
+        Command::Statics { file, json } => statics(&file, json),
+        Command::Check { file } => check(&file),
+        Command::Schema => {
+            println!("{}", scenario::json_schema());
+            Ok(ExitCode::SUCCESS)
+        }
+        Command::Bench {
+            file,
+            duration,
+            dt,
+            json,
+        } => bench(&file, duration, dt, json),
+    };
+    match result {
+        Ok(code) => code,
+        Err(e) => {
+            eprintln!("error: {e:#}");
+            ExitCode::from(1)
+        }
+    }
+}
+
+/// Loads a scenario, printing diagnostics; `None` means bad input (already reported).
+fn load(file: &Path) -> Option<LoadedScenario> {
+    match scenario::load(file) {
+        Ok(s) => Some(s),
+        Err(e) => {
+            eprintln!("{e}");
+            None
+        }
+    }
+}
+
+fn system_of(model: &Model) -> Result<System> {
+    System::new(model).context("the model is invalid")
+}
+
+/// Reports a step rejected by the stability check at the `time_step` key.
+fn step_error(file: &Path, loaded: &LoadedScenario, e: &SimulationError) -> String {
+    if let SimulationError::StepTooLarge {
+        step,
+        limit,
+        culprit,
+    } = e
+    {
+        let source = std::fs::read_to_string(file).unwrap_or_default();
+        let d = Diagnostic::new(
+            file,
+            &source,
+            loaded.time_step_span.clone(),
+            "simulation.time_step",
+            format!("time_step = {step} s is above the stability limit {limit:.4e} s"),
+        )
+        .expected(format!("s, ≤ {limit:.4e} (set by {culprit})"))
+        .hint("use time_step = \"auto\", a smaller step, or fewer elements");
+        return d.to_string();
+    }
+    e.to_string()
+}
+
+fn initial_state(
+    system: &System,
+    model: &Model,
+) -> Result<(Vec<Real>, Option<StaticSolution>), StaticsError> {
+    match model.settings.initial_condition {
+        InitialCondition::Statics => {
+            let sol = hawser::statics::solve(system, None, &StaticOptions::default())?;
+            Ok((sol.state.clone(), Some(sol)))
+        }
+        InitialCondition::AsDefined => {
+            let mut ws = system.workspace();
+            let mut y = system.straight_state();
+            hawser::statics::catenary_seed(system, &mut y, &mut ws);
+            Ok((y, None))
+        }
+    }
+}
+
+struct Progress<'a> {
+    writer: &'a mut RunWriter,
+    bar: Option<ProgressBar>,
+    start: Instant,
+}
+
+impl Observer for Progress<'_> {
+    fn sample(&mut self, system: &System, time: Real, state: &[Real], ws: &Workspace) {
+        self.writer.sample(system, time, state, ws);
+        if let Some(bar) = &self.bar {
+            let wall = self.start.elapsed().as_secs_f64();
+            bar.set_position((time * 1000.0) as u64);
+            if wall > 0.0 {
+                bar.set_message(format!("t = {time:.2} s, {:.1}× real time", time / wall));
+            }
+        }
+    }
+}
+
+fn run(file: &Path, out: &Path, quiet: bool) -> Result<ExitCode> {
+    let Some(loaded) = load(file) else {
+        return Ok(ExitCode::from(2));
+    };
+    if !loaded.has_simulation {
+        eprintln!(
+            "error: {} has no [simulation] table\n  = hint: add `[simulation]` with `duration = ...` (s)",
+            file.display()
+        );
+        return Ok(ExitCode::from(2));
+    }
+    let model = &loaded.model;
+    let system = system_of(model)?;
+    let t0 = Instant::now();
+    let (y0, sol) = match initial_state(&system, model) {
+        Ok(x) => x,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return Ok(ExitCode::from(1));
+        }
+    };
+    if let Some(sol) = &sol {
+        if !quiet {
+            eprintln!(
+                "statics: {} after {} iterations, residual {:.2e} N ({:.2} s)",
+                sol.method,
+                sol.iterations,
+                sol.residual,
+                t0.elapsed().as_secs_f64()
+            );
+        }
+    }
+    let mut sim = match Simulation::new(&system, &model.settings, y0) {
+        Ok(s) => s,
+        Err(e) => {
+            eprintln!("{}", step_error(file, &loaded, &e));
+            return Ok(ExitCode::from(2));
+        }
+    };
+    if !quiet {
+        eprintln!(
+            "time step {:.4e} s (stability limit {:.4e} s, set by {}), {} steps",
+            sim.step,
+            sim.stable_step.0,
+            sim.stable_step.1,
+            (model.settings.duration / sim.step).ceil()
+        );
+    }
+    let mut writer = RunWriter::create(
+        out,
+        &system,
+        loaded.channels.clone(),
+        model.settings.snapshot_interval,
+        file,
+    )?;
+    let bar = (!quiet).then(|| {
+        let bar = ProgressBar::new((model.settings.duration * 1000.0) as u64);
+        bar.set_style(
+            ProgressStyle::with_template(
+                "{bar:40} {percent:>3}% {msg} [elapsed {elapsed}, ETA {eta}]",
+            )
+            .expect("valid template"),
+        );
+        bar
+    });
+    let start = Instant::now();
+    let mut progress = Progress {
+        writer: &mut writer,
+        bar,
+        start,
+    };
+    let result = sim.run(model.settings.duration, &mut progress);
+    if let Some(bar) = progress.bar.take() {
+        bar.finish_and_clear();
+    }
+    let wall = start.elapsed().as_secs_f64();
+    let ws = sim
+        .evaluate()
+        .ok()
+        .cloned()
+        .unwrap_or_else(|| system.workspace());
+    match result {
+        Ok(()) => {
+            writer.finish(&system, &sim.state, &ws, None)?;
+            if !quiet {
+                eprintln!(
+                    "done: {:.2} s simulated in {wall:.2} s ({:.1}× real time); results in {}",
+                    sim.time,
+                    sim.time / wall.max(1e-9),
+                    out.display()
+                );
+            }
+            Ok(ExitCode::SUCCESS)
+        }
+        Err(e) => {
+            let msg = e.to_string();
+            writer.finish(&system, &sim.state, &ws, Some(&msg))?;
+            eprintln!(
+                "error: {msg}\n  = results up to t = {:.6} s are in {} (marked incomplete)",
+                sim.time,
+                out.display()
+            );
+            Ok(ExitCode::from(1))
+        }
+    }
+}
+
+fn statics(file: &Path, json: bool) -> Result<ExitCode> {
+    let Some(loaded) = load(file) else {
+        return Ok(ExitCode::from(2));
+    };
+    let system = system_of(&loaded.model)?;
+    let sol = match hawser::statics::solve(&system, None, &StaticOptions::default()) {
+        Ok(s) => s,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return Ok(ExitCode::from(1));
+        }
+    };
+    let mut ws = system.workspace();
+    hawser::statics::evaluate(&system, &sol.state, &mut ws);
+    if json {
+        println!(
+            "{}",
+            serde_json::to_string_pretty(&statics_json(&system, &ws))?
+        );
+        return Ok(ExitCode::SUCCESS);
+    }
+    println!(
+        "static equilibrium: {} ({} iterations, residual {:.2e} N)",
+        sol.method, sol.iterations, sol.residual
+    );
+    println!(
+        "{:<16} {:>14} {:>14} {:>14}",
+        "line", "end A T [N]", "end B T [N]", "max T [N]"
+    );
+    for (li, l) in system.lines.iter().enumerate() {
+        let ta = system.end_force(&ws, li, false).norm();
+        let tb = system.end_force(&ws, li, true).norm();
+        let tmax = (0..=l.fe.elements())
+            .map(|i| system.node_tension(&ws, li, i))
+            .fold(0.0, Real::max);
+        println!("{:<16} {:>14.2} {:>14.2} {:>14.2}", l.name, ta, tb, tmax);
+    }
+    for (i, p) in system.points.iter().enumerate() {
+        if p.free_index.is_some() {
+            let x = ws.points[i].position;
+            println!(
+                "point {:<10} at [{:.4}, {:.4}, {:.4}] m",
+                p.name, x.x, x.y, x.z
+            );
+        }
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+fn check(file: &Path) -> Result<ExitCode> {
+    let Some(loaded) = load(file) else {
+        return Ok(ExitCode::from(2));
+    };
+    let model = &loaded.model;
+    let system = system_of(model)?;
+    let (limit, culprit) = system.stable_step(model.settings.scheme);
+    if let hawser::model::TimeStep::Fixed(dt) = model.settings.time_step {
+        if dt > limit {
+            let e = SimulationError::StepTooLarge {
+                step: dt,
+                limit,
+                culprit,
+            };
+            eprintln!("{}", step_error(file, &loaded, &e));
+            return Ok(ExitCode::from(2));
+        }
+    }
+    let nodes: usize = system.lines.iter().map(|l| l.fe.elements() + 1).sum();
+    println!(
+        "{}: ok — {} line(s), {} point(s), {} nodes; stable time step {:.4e} s ({})",
+        file.display(),
+        system.lines.len(),
+        system.points.len(),
+        nodes,
+        limit,
+        culprit
+    );
+    Ok(ExitCode::SUCCESS)
+}
+
+struct Null;
+impl Observer for Null {
+    fn sample(&mut self, _: &System, _: Real, _: &[Real], _: &Workspace) {}
+}
+
+fn bench(file: &Path, duration: Option<Real>, dt: Option<Real>, json: bool) -> Result<ExitCode> {
+    let Some(loaded) = load(file) else {
+        return Ok(ExitCode::from(2));
+    };
+    let mut results = Vec::new();
+    for mass in [MassMatrix::Lumped, MassMatrix::Consistent] {
+        let mut model = loaded.model.clone();
+        for l in &mut model.lines {
+            l.mass_matrix = mass;
+        }
+        if let Some(d) = duration {
+            model.settings.duration = d;
+        }
+        if let Some(dt) = dt {
+            model.settings.time_step = hawser::model::TimeStep::Fixed(dt);
+            model.settings.output_interval =
+                dt * (model.settings.output_interval / dt).round().max(1.0);
+        }
+        let system = system_of(&model)?;
+        let (y0, _) = initial_state(&system, &model).map_err(|e| anyhow::anyhow!("{e}"))?;
+        let mut sim = match Simulation::new(&system, &model.settings, y0) {
+            Ok(s) => s,
+            Err(e) => {
+                eprintln!("{}", step_error(file, &loaded, &e));
+                return Ok(ExitCode::from(2));
+            }
+        };
+        let start = Instant::now();
+        sim.run(model.settings.duration, &mut Null)?;
+        let wall = start.elapsed().as_secs_f64();
+        let nodes: usize = system.lines.iter().map(|l| l.fe.elements() + 1).sum();
+        let steps = sim.steps_done();
+        let node_steps = nodes as f64 * steps as f64 / wall;
+        let evals = node_steps * sim.evaluations_per_step() as f64;
+        results.push(serde_json::json!({
+            "mass_matrix": format!("{mass:?}").to_lowercase(),
+            "nodes": nodes,
+            "time_step": sim.step,
+            "steps": steps,
+            "duration": model.settings.duration,
+            "wall_s": wall,
+            "evaluations_per_step": sim.evaluations_per_step(),
+            "node_steps_per_s": node_steps,
+            "node_evaluations_per_s": evals,
+            "real_time_factor": model.settings.duration / wall,
+        }));
+    }
+    if json {
+        println!("{}", serde_json::to_string_pretty(&results)?);
+    } else {
+        println!(
+            "{:<12} {:>6} {:>10} {:>9} {:>9} {:>16} {:>16}",
+            "mass", "nodes", "dt [s]", "steps", "wall [s]", "node-steps/s", "node-evals/s"
+        );
+        for r in &results {
+            println!(
+                "{:<12} {:>6} {:>10.3e} {:>9} {:>9.3} {:>16.3e} {:>16.3e}",
+                r["mass_matrix"].as_str().unwrap_or(""),
+                r["nodes"],
+                r["time_step"].as_f64().unwrap_or(0.0),
+                r["steps"],
+                r["wall_s"].as_f64().unwrap_or(0.0),
+                r["node_steps_per_s"].as_f64().unwrap_or(0.0),
+                r["node_evaluations_per_s"].as_f64().unwrap_or(0.0)
+            );
+        }
+    }
+    Ok(ExitCode::SUCCESS)
+}

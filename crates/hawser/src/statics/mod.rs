@@ -6,4 +6,4 @@ pub mod catenary;
 mod dynamic_relaxation;
 mod newton;
 
-pub use newton::{StaticOptions, StaticSolution, residual, solve};
+pub use newton::{StaticOptions, StaticSolution, catenary_seed, evaluate, residual, solve};

@@ -533,3 +533,16 @@ pub fn zero_velocities(system: &System, y: &mut [Real]) {
         y[o + 3..o + 6].iter_mut().for_each(|v| *v = 0.0);
     }
 }
+
+/// Evaluates the static forces at `y` into `ws` (zero velocities, prescribed points at their
+/// t = 0 positions) so that [`System::end_force`] and [`System::node_tension`] give the static
+/// end forces and tensions. Returns the largest residual [N].
+pub fn evaluate(system: &System, y: &[Real], ws: &mut Workspace) -> Real {
+    let mut r = vec![0.0; y.len()];
+    let (norm, _) = residual(system, y, 1.0, ws, &mut r);
+    for b in ws.blocks.iter_mut() {
+        b.clear();
+        b.x.iter_mut().for_each(|x| *x = Vec3::zeros());
+    }
+    norm
+}

@@ -1,0 +1,292 @@
+//! Result writers: `timeseries.csv`, per-line shape snapshots, `summary.json` (statistics,
+//! slack intervals, snap events), `final_state.json` and `status.json`. Rows are flushed as the
+//! run goes, so a run that stops early keeps what it wrote, marked incomplete in
+//! `status.json` and `summary.json`.
+
+use hawser::analysis::{Channel, RunningStats, SlackSnapDetector};
+use hawser::math::Real;
+use hawser::simulation::Observer;
+use hawser::system::{System, Workspace};
+use serde_json::{Value, json};
+use std::fs::File;
+use std::io::{BufWriter, Write};
+use std::path::{Path, PathBuf};
+
+/// Writes a dynamic run's results into a directory while it runs.
+pub struct RunWriter {
+    dir: PathBuf,
+    channels: Vec<Channel>,
+    names: Vec<String>,
+    stats: Vec<RunningStats>,
+    detectors: Vec<SlackSnapDetector>,
+    timeseries: BufWriter<File>,
+    snapshots: Vec<BufWriter<File>>,
+    snapshot_interval: Option<Real>,
+    next_snapshot: Real,
+    last_time: Real,
+    samples: u64,
+    error: Option<std::io::Error>,
+    row: Vec<Real>,
+}
+
+fn io_context(path: &Path, e: std::io::Error) -> std::io::Error {
+    std::io::Error::new(e.kind(), format!("{}: {e}", path.display()))
+}
+
+fn write_json(path: &Path, value: &Value) -> std::io::Result<()> {
+    let text = serde_json::to_string_pretty(value).expect("JSON serialises");
+    std::fs::write(path, text + "\n").map_err(|e| io_context(path, e))
+}
+
+impl RunWriter {
+    /// Creates the directory and the files, writes headers and marks the run as running.
+    pub fn create(
+        dir: &Path,
+        system: &System,
+        channels: Vec<Channel>,
+        snapshot_interval: Option<Real>,
+        scenario: &Path,
+    ) -> std::io::Result<Self> {
+        std::fs::create_dir_all(dir).map_err(|e| io_context(dir, e))?;
+        write_json(
+            &dir.join("status.json"),
+            &json!({"complete": false, "state": "running", "scenario": scenario.display().to_string()}),
+        )?;
+        let path = dir.join("timeseries.csv");
+        let mut ts = BufWriter::new(File::create(&path).map_err(|e| io_context(&path, e))?);
+        let names: Vec<String> = channels.iter().map(|c| c.name(system)).collect();
+        write!(ts, "time [s]")?;
+        for (c, n) in channels.iter().zip(&names) {
+            write!(ts, ",{n} [{}]", c.unit())?;
+        }
+        writeln!(ts)?;
+        let mut snapshots = Vec::new();
+        if snapshot_interval.is_some() {
+            let sd = dir.join("snapshots");
+            std::fs::create_dir_all(&sd).map_err(|e| io_context(&sd, e))?;
+            for l in &system.lines {
+                let p = sd.join(format!("{}.csv", l.name));
+                let mut w = BufWriter::new(File::create(&p).map_err(|e| io_context(&p, e))?);
+                writeln!(
+                    w,
+                    "time [s],node,arc_length [m],x [m],y [m],z [m],tension [N]"
+                )?;
+                snapshots.push(w);
+            }
+        }
+        Ok(Self {
+            dir: dir.to_path_buf(),
+            stats: vec![RunningStats::default(); channels.len()],
+            row: vec![0.0; channels.len()],
+            names,
+            channels,
+            detectors: vec![SlackSnapDetector::default(); system.lines.len()],
+            timeseries: ts,
+            snapshots,
+            snapshot_interval,
+            next_snapshot: 0.0,
+            last_time: 0.0,
+            samples: 0,
+            error: None,
+        })
+    }
+
+    fn write_sample(&mut self, system: &System, time: Real, ws: &Workspace) -> std::io::Result<()> {
+        for (i, c) in self.channels.iter().enumerate() {
+            self.row[i] = c.value(system, ws);
+        }
+        write!(self.timeseries, "{time}")?;
+        for (v, s) in self.row.iter().zip(self.stats.iter_mut()) {
+            s.push(*v);
+            write!(self.timeseries, ",{v}")?;
+        }
+        writeln!(self.timeseries)?;
+        self.timeseries.flush()?;
+        for (li, l) in system.lines.iter().enumerate() {
+            let lw = &ws.lines[li];
+            self.detectors[li].push(time, &lw.elements.tension, &lw.elements.strain, |e| {
+                0.5 * (l.fe.arc_length(e) + l.fe.arc_length(e + 1))
+            });
+        }
+        if let Some(interval) = self.snapshot_interval {
+            if time >= self.next_snapshot - 1e-9 * interval {
+                for (li, l) in system.lines.iter().enumerate() {
+                    let w = &mut self.snapshots[li];
+                    let lw = &ws.lines[li];
+                    for (i, p) in lw.position.iter().enumerate() {
+                        let t = system.node_tension(ws, li, i);
+                        writeln!(
+                            w,
+                            "{time},{i},{},{},{},{},{t}",
+                            l.fe.arc_length(i),
+                            p.x,
+                            p.y,
+                            p.z
+                        )?;
+                    }
+                    w.flush()?;
+                }
+                while self.next_snapshot <= time + 1e-9 * interval {
+                    self.next_snapshot += interval;
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Writes `summary.json`, `final_state.json` and `status.json`. `error` marks the run
+    /// incomplete with its message.
+    pub fn finish(
+        mut self,
+        system: &System,
+        state: &[Real],
+        ws: &Workspace,
+        error: Option<&str>,
+    ) -> std::io::Result<()> {
+        if let Some(e) = self.error.take() {
+            return Err(e);
+        }
+        self.timeseries.flush()?;
+        for s in &mut self.snapshots {
+            s.flush()?;
+        }
+        for d in &mut self.detectors {
+            d.finish(self.last_time);
+        }
+        let complete = error.is_none();
+        let channels: serde_json::Map<String, Value> = self
+            .names
+            .iter()
+            .zip(&self.stats)
+            .zip(&self.channels)
+            .map(|((n, s), c)| {
+                (n.clone(), json!({"unit": c.unit(), "min": s.min, "max": s.max, "mean": s.mean(), "std": s.std()}))
+            })
+            .collect();
+        let lines: serde_json::Map<String, Value> = system
+            .lines
+            .iter()
+            .zip(&self.detectors)
+            .map(|(l, d)| {
+                (
+                    l.name.clone(),
+                    json!({
+                        "slack_intervals": d.intervals.iter().map(|s| json!({"start": s.start, "end": s.end, "min_strain": s.min_strain})).collect::<Vec<_>>(),
+                        "snap_events": d.snaps.iter().map(|s| json!({
+                            "time": s.time, "peak_time": s.peak_time, "peak_tension": s.peak_tension,
+                            "location": s.location, "rise_rate": s.rise_rate})).collect::<Vec<_>>(),
+                    }),
+                )
+            })
+            .collect();
+        write_json(
+            &self.dir.join("summary.json"),
+            &json!({
+                "complete": complete,
+                "error": error,
+                "end_time": self.last_time,
+                "samples": self.samples,
+                "channels": channels,
+                "lines": lines,
+                "definitions": {
+                    "slack": "some element of the line has strain ≤ 0",
+                    "snap": "a slack → taut transition; peak is the largest element tension until the tension falls again",
+                    "location": "unstretched arc length from end A [m] of the element carrying the peak",
+                },
+            }),
+        )?;
+        write_json(
+            &self.dir.join("final_state.json"),
+            &state_json(system, ws, self.last_time, state),
+        )?;
+        write_json(
+            &self.dir.join("status.json"),
+            &json!({"complete": complete, "state": if complete {"finished"} else {"stopped"}, "error": error, "end_time": self.last_time}),
+        )
+    }
+}
+
+impl Observer for RunWriter {
+    fn sample(&mut self, system: &System, time: Real, _state: &[Real], ws: &Workspace) {
+        self.last_time = time;
+        self.samples += 1;
+        if self.error.is_none() {
+            if let Err(e) = self.write_sample(system, time, ws) {
+                self.error = Some(e);
+            }
+        }
+    }
+}
+
+/// The positions, velocities and tensions of every line and point, as JSON.
+pub fn state_json(system: &System, ws: &Workspace, time: Real, state: &[Real]) -> Value {
+    let lines: serde_json::Map<String, Value> = system
+        .lines
+        .iter()
+        .enumerate()
+        .map(|(li, l)| {
+            let lw = &ws.lines[li];
+            (
+                l.name.clone(),
+                json!({
+                    "positions": lw.position.iter().map(|p| [p.x, p.y, p.z]).collect::<Vec<_>>(),
+                    "velocities": lw.velocity.iter().map(|p| [p.x, p.y, p.z]).collect::<Vec<_>>(),
+                    "tension": (0..=l.fe.elements()).map(|i| system.node_tension(ws, li, i)).collect::<Vec<_>>(),
+                }),
+            )
+        })
+        .collect();
+    json!({"time": time, "lines": lines, "points": points_json(system, ws), "state_vector": state})
+}
+
+fn points_json(system: &System, ws: &Workspace) -> Value {
+    system
+        .points
+        .iter()
+        .enumerate()
+        .map(|(i, p)| {
+            let k = &ws.points[i];
+            (p.name.clone(), json!({"position": [k.position.x, k.position.y, k.position.z], "velocity": [k.velocity.x, k.velocity.y, k.velocity.z]}))
+        })
+        .collect::<serde_json::Map<String, Value>>()
+        .into()
+}
+
+/// The static solution as JSON: per line node positions, node tensions and the force each end
+/// exerts on its attachment; per point its position.
+pub fn statics_json(system: &System, ws: &Workspace) -> Value {
+    let lines: serde_json::Map<String, Value> = system
+        .lines
+        .iter()
+        .enumerate()
+        .map(|(li, l)| {
+            let lw = &ws.lines[li];
+            let end = |b: bool| {
+                let f = system.end_force(ws, li, b);
+                json!({"tension": f.norm(), "force": [f.x, f.y, f.z]})
+            };
+            (
+                l.name.clone(),
+                json!({
+                    "positions": lw.position.iter().map(|p| [p.x, p.y, p.z]).collect::<Vec<_>>(),
+                    "tension": (0..=l.fe.elements()).map(|i| system.node_tension(ws, li, i)).collect::<Vec<_>>(),
+                    "end_a": end(false),
+                    "end_b": end(true),
+                }),
+            )
+        })
+        .collect();
+    let points: serde_json::Map<String, Value> = system
+        .points
+        .iter()
+        .enumerate()
+        .map(|(i, p)| {
+            let k = &ws.points[i];
+            (
+                p.name.clone(),
+                json!({"position": [k.position.x, k.position.y, k.position.z]}),
+            )
+        })
+        .collect();
+    json!({"lines": lines, "points": points})
+}

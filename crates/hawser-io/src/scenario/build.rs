@@ -1,0 +1,1526 @@
+//! Validation of a parsed scenario and its conversion into a [`hawser::Model`].
+//! Every problem is collected (not just the first) with its file position.
+
+use super::diagnostics::{Diagnostic, ScenarioError, closest};
+use super::schema::*;
+use hawser::analysis::Channel;
+use hawser::math::Vec3;
+use hawser::model::*;
+use hawser::physics::environment::{Current, Environment};
+use hawser::physics::hydrodynamics::{DragModel, LoadingFunction};
+use hawser::physics::material::{AxialDamping, AxialStiffness};
+use hawser::physics::seabed::Seabed;
+use std::collections::HashMap;
+use std::ops::Range;
+use std::path::Path;
+use toml::Spanned;
+
+/// A scenario read from a file: the model, its output channels and where things are.
+#[derive(Clone, Debug)]
+pub struct LoadedScenario {
+    /// The model.
+    pub model: Model,
+    /// Time-series channels (defaults plus `simulation.channels`).
+    pub channels: Vec<Channel>,
+    /// Whether `[simulation]` was given.
+    pub has_simulation: bool,
+    /// Span of `simulation.time_step`, for step errors.
+    pub time_step_span: Option<Range<usize>>,
+}
+
+struct Builder<'a> {
+    file: &'a Path,
+    source: &'a str,
+    errors: Vec<Diagnostic>,
+}
+
+/// A range check on a number: predicate and its description with unit.
+struct Check {
+    ok: fn(f64) -> bool,
+    expected: &'static str,
+}
+
+const POSITIVE: fn(f64) -> bool = |x| x > 0.0;
+const NON_NEGATIVE: fn(f64) -> bool = |x| x >= 0.0;
+const ANY: fn(f64) -> bool = |_| true;
+
+impl<'a> Builder<'a> {
+    fn diag(
+        &self,
+        span: Option<Range<usize>>,
+        key: &str,
+        message: impl Into<String>,
+    ) -> Diagnostic {
+        Diagnostic::new(self.file, self.source, span, key, message)
+    }
+
+    fn push(&mut self, d: Diagnostic) {
+        self.errors.push(d);
+    }
+
+    /// Checks a number is finite and in range; returns it (or a harmless default on error).
+    fn num(&mut self, v: &Spanned<f64>, key: &str, check: Check, hint: &str) -> f64 {
+        let x = *v.get_ref();
+        if !x.is_finite() || !(check.ok)(x) {
+            let d = self
+                .diag(Some(v.span()), key, format!("`{key}` is out of range"))
+                .expected(check.expected)
+                .hint(hint);
+            self.push(d);
+            return 1.0;
+        }
+        x
+    }
+
+    fn opt(
+        &mut self,
+        v: &Option<Spanned<f64>>,
+        key: &str,
+        default: f64,
+        check: Check,
+        hint: &str,
+    ) -> f64 {
+        match v {
+            Some(v) => self.num(v, key, check, hint),
+            None => default,
+        }
+    }
+
+    fn vec3(&mut self, v: &Spanned<[f64; 3]>, key: &str) -> Vec3 {
+        let a = v.get_ref();
+        if a.iter().any(|x| !x.is_finite()) {
+            let d = self
+                .diag(
+                    Some(v.span()),
+                    key,
+                    format!("`{key}` has a non-finite component"),
+                )
+                .expected("three finite numbers [m]");
+            self.push(d);
+        }
+        Vec3::new(a[0], a[1], a[2])
+    }
+
+    fn not_for(
+        &mut self,
+        present: bool,
+        span: Option<Range<usize>>,
+        key: &str,
+        kind: &str,
+        applies: &str,
+    ) {
+        if present {
+            let d = self
+                .diag(span, key, format!("`{key}` does not apply to {kind}"))
+                .hint(format!("remove it; it applies to {applies}"));
+            self.push(d);
+        }
+    }
+}
+
+fn span_of<T>(v: &Option<Spanned<T>>) -> Option<Range<usize>> {
+    v.as_ref().map(|s| s.span())
+}
+
+/// Reads and validates scenario `source` (the text of `file`).
+pub fn build(file: &Path, source: &str) -> Result<LoadedScenario, ScenarioError> {
+    let scenario: Scenario =
+        toml::from_str(source).map_err(|e| ScenarioError::from(toml_error(file, source, &e)))?;
+    let mut b = Builder {
+        file,
+        source,
+        errors: Vec::new(),
+    };
+    let environment = build_environment(&mut b, scenario.environment.as_ref());
+    let (line_types, type_index) = build_line_types(&mut b, &scenario.line_types);
+    let (points, point_index) = build_points(&mut b, &scenario.points, &environment);
+    let lines = build_lines(
+        &mut b,
+        &scenario.lines,
+        &type_index,
+        &point_index,
+        &line_types,
+    );
+    check_free_points_held(&mut b, &scenario.points, &lines, &points);
+    let (settings, time_step_span) = build_settings(&mut b, scenario.simulation.as_ref());
+    let mut model = Model {
+        environment,
+        line_types,
+        lines,
+        points,
+        settings,
+    };
+    let channels = build_channels(&mut b, scenario.simulation.as_ref(), &model);
+    if b.errors.is_empty() {
+        if let Err(e) = model.validate() {
+            let d = b.diag(None, "", e.to_string());
+            b.push(d);
+        }
+    }
+    if !b.errors.is_empty() {
+        b.errors.sort_by_key(|d| (d.line, d.column));
+        return Err(ScenarioError {
+            diagnostics: b.errors,
+        });
+    }
+    if model.environment.depth.is_infinite() {
+        model.environment.seabed.stiffness = 0.0;
+    }
+    Ok(LoadedScenario {
+        model,
+        channels,
+        has_simulation: scenario.simulation.is_some(),
+        time_step_span,
+    })
+}
+
+/// Turns a TOML or serde error into a diagnostic with a hint.
+fn toml_error(file: &Path, source: &str, e: &toml::de::Error) -> Diagnostic {
+    let message = e.message().trim().to_string();
+    let quoted: Vec<&str> = message.split('`').skip(1).step_by(2).collect();
+    let mut d = Diagnostic::new(
+        file,
+        source,
+        e.span(),
+        quoted.first().copied().unwrap_or(""),
+        message.clone(),
+    );
+    if message.starts_with("unknown field") {
+        let key = quoted.first().copied().unwrap_or("");
+        let hint = match closest(key, quoted.iter().skip(1).copied()) {
+            Some(c) => format!("did you mean `{c}`? docs/scenario.md lists every key"),
+            None => "remove it; docs/scenario.md lists every key".to_string(),
+        };
+        d = d.hint(hint).expected(format!(
+            "one of {}",
+            quoted[1..]
+                .iter()
+                .map(|q| format!("`{q}`"))
+                .collect::<Vec<_>>()
+                .join(", ")
+        ));
+    } else if message.starts_with("missing field") {
+        d = d.value("").hint(format!(
+            "add `{}` to this table; docs/scenario.md gives its unit",
+            quoted.first().copied().unwrap_or("")
+        ));
+    } else if message.starts_with("invalid type") {
+        d = d.hint(
+            "check the value's type: numbers are unquoted, names are quoted, vectors are [x, y, z]",
+        );
+    } else if message.starts_with("unknown variant") {
+        let key = quoted.first().copied().unwrap_or("");
+        let hint = match closest(key, quoted.iter().skip(1).copied()) {
+            Some(c) => format!("did you mean `{c}`?"),
+            None => "use one of the expected values".into(),
+        };
+        d = d.hint(hint);
+    } else {
+        d = d.hint(
+            "this is not valid TOML or does not match the scenario format (docs/scenario.md)",
+        );
+    }
+    d
+}
+
+fn build_environment(b: &mut Builder, spec: Option<&EnvironmentSpec>) -> Environment {
+    let default = EnvironmentSpec::default();
+    let e = spec.unwrap_or(&default);
+    let mut env = Environment {
+        gravity: b.opt(
+            &e.gravity,
+            "environment.gravity",
+            9.80665,
+            Check {
+                ok: NON_NEGATIVE,
+                expected: "m/s², ≥ 0",
+            },
+            "9.80665 on Earth",
+        ),
+        water_density: b.opt(
+            &e.water_density,
+            "environment.water_density",
+            1025.0,
+            Check {
+                ok: POSITIVE,
+                expected: "kg/m³, > 0",
+            },
+            "sea water is about 1025 kg/m³",
+        ),
+        air_density: b.opt(
+            &e.air_density,
+            "environment.air_density",
+            1.225,
+            Check {
+                ok: NON_NEGATIVE,
+                expected: "kg/m³, ≥ 0",
+            },
+            "air is about 1.225 kg/m³",
+        ),
+        depth: f64::INFINITY,
+        seabed: Seabed::default(),
+        current: Current::None,
+    };
+    if let Some(d) = &e.depth {
+        env.depth = b.num(
+            d,
+            "environment.depth",
+            Check {
+                ok: POSITIVE,
+                expected: "m, > 0 (the seabed is at z = −depth)",
+            },
+            "depth is positive; the seabed lies at z = −depth",
+        );
+    }
+    if let Some(s) = &e.seabed {
+        let d = Seabed::default();
+        env.seabed = Seabed {
+            stiffness: b.opt(
+                &s.stiffness,
+                "environment.seabed.stiffness",
+                d.stiffness,
+                Check {
+                    ok: NON_NEGATIVE,
+                    expected: "Pa/m, ≥ 0",
+                },
+                "3e6 Pa/m is a firm bed",
+            ),
+            damping_ratio: b.opt(
+                &s.damping_ratio,
+                "environment.seabed.damping_ratio",
+                d.damping_ratio,
+                Check {
+                    ok: NON_NEGATIVE,
+                    expected: "-, ≥ 0 (1 = critical)",
+                },
+                "use 1 for critical damping",
+            ),
+            friction_coefficient: b.opt(
+                &s.friction_coefficient,
+                "environment.seabed.friction_coefficient",
+                d.friction_coefficient,
+                Check {
+                    ok: NON_NEGATIVE,
+                    expected: "-, ≥ 0",
+                },
+                "typical values are 0.2–1.0",
+            ),
+            friction_velocity: b.opt(
+                &s.friction_velocity,
+                "environment.seabed.friction_velocity",
+                d.friction_velocity,
+                Check {
+                    ok: POSITIVE,
+                    expected: "m/s, > 0",
+                },
+                "a small speed such as 0.01 m/s",
+            ),
+        };
+        if e.depth.is_none() {
+            let d = b
+                .diag(
+                    None,
+                    "environment.seabed",
+                    "a seabed is given but no `environment.depth`",
+                )
+                .hint("set `depth` in [environment]");
+            b.push(d);
+        }
+    }
+    if let Some(c) = &e.current {
+        match c.kind.get_ref() {
+            CurrentKind::Uniform => {
+                b.not_for(
+                    c.profile.is_some(),
+                    span_of(&c.profile),
+                    "environment.current.profile",
+                    "a uniform current",
+                    "`type = \"profile\"`",
+                );
+                match &c.velocity {
+                    Some(v) => {
+                        env.current = Current::Uniform(b.vec3(v, "environment.current.velocity"))
+                    }
+                    None => {
+                        let d = b
+                            .diag(
+                                Some(c.kind.span()),
+                                "environment.current.velocity",
+                                "a uniform current needs `velocity`",
+                            )
+                            .expected("[ux, uy, uz] in m/s");
+                        b.push(d);
+                    }
+                }
+            }
+            CurrentKind::Profile => {
+                b.not_for(
+                    c.velocity.is_some(),
+                    span_of(&c.velocity),
+                    "environment.current.velocity",
+                    "a current profile",
+                    "`type = \"uniform\"`",
+                );
+                match &c.profile {
+                    Some(p) => {
+                        let rows = p.get_ref();
+                        let increasing = rows.windows(2).all(|w| w[1][0] > w[0][0]);
+                        if rows.is_empty()
+                            || !increasing
+                            || rows.iter().flatten().any(|x| !x.is_finite())
+                        {
+                            let d = b
+                                .diag(Some(p.span()), "environment.current.profile", "the current profile must have rows with strictly increasing z")
+                                .expected("rows [z, ux, uy, uz] in m and m/s, z increasing")
+                                .hint("list the deepest point first, e.g. [[-100, 0, 0, 0], [0, 0.5, 0, 0]]");
+                            b.push(d);
+                        } else {
+                            env.current = Current::Profile {
+                                z: rows.iter().map(|r| r[0]).collect(),
+                                velocity: rows
+                                    .iter()
+                                    .map(|r| Vec3::new(r[1], r[2], r[3]))
+                                    .collect(),
+                            };
+                        }
+                    }
+                    None => {
+                        let d = b
+                            .diag(
+                                Some(c.kind.span()),
+                                "environment.current.profile",
+                                "a current profile needs `profile`",
+                            )
+                            .expected("rows [z, ux, uy, uz] in m and m/s");
+                        b.push(d);
+                    }
+                }
+            }
+        }
+    }
+    env
+}
+
+fn build_line_types(
+    b: &mut Builder,
+    specs: &[LineTypeSpec],
+) -> (Vec<LineType>, HashMap<String, usize>) {
+    let mut out = Vec::new();
+    let mut index = HashMap::new();
+    for (i, t) in specs.iter().enumerate() {
+        let k = |key: &str| format!("line_types[{i}].{key}");
+        let name = t.name.get_ref().clone();
+        if index.insert(name.clone(), i).is_some() {
+            let d = b
+                .diag(
+                    Some(t.name.span()),
+                    &k("name"),
+                    format!("line type `{name}` is defined twice"),
+                )
+                .hint("give each line type its own name");
+            b.push(d);
+        }
+        let diameter = b.num(
+            &t.diameter,
+            &k("diameter"),
+            Check {
+                ok: POSITIVE,
+                expected: "m, > 0",
+            },
+            "the nominal (hydrodynamic) diameter, e.g. 0.09 for a 90 mm chain's equivalent",
+        );
+        let mass = b.num(
+            &t.mass_per_length,
+            &k("mass_per_length"),
+            Check {
+                ok: POSITIVE,
+                expected: "kg/m, > 0",
+            },
+            "mass per metre of unstretched line in air",
+        );
+        let stiffness = match (&t.axial_stiffness, &t.tension_strain) {
+            (Some(ea), None) => AxialStiffness::Linear(b.num(
+                ea,
+                &k("axial_stiffness"),
+                Check {
+                    ok: POSITIVE,
+                    expected: "N, > 0 (EA)",
+                },
+                "EA = Young's modulus × area, e.g. 3.8e8 N",
+            )),
+            (None, Some(table)) => {
+                let rows = table.get_ref();
+                let ok = rows.len() >= 2
+                    && rows[0] == [0.0, 0.0]
+                    && rows
+                        .windows(2)
+                        .all(|w| w[1][0] > w[0][0] && w[1][1] >= w[0][1])
+                    && rows.iter().flatten().all(|x| x.is_finite())
+                    && rows.last().map(|r| r[1] > 0.0).unwrap_or(false);
+                if !ok {
+                    let d = b
+                        .diag(Some(table.span()), &k("tension_strain"), "the tension–strain table is not a valid curve")
+                        .expected("rows [strain, tension] in - and N, starting at [0, 0], strain increasing, tension non-decreasing")
+                        .hint("e.g. [[0, 0], [0.01, 2e6], [0.02, 5e6]]");
+                    b.push(d);
+                    AxialStiffness::Linear(1.0)
+                } else {
+                    AxialStiffness::Table {
+                        strain: rows.iter().map(|r| r[0]).collect(),
+                        tension: rows.iter().map(|r| r[1]).collect(),
+                    }
+                }
+            }
+            (Some(ea), Some(_)) => {
+                let d = b
+                    .diag(
+                        Some(ea.span()),
+                        &k("axial_stiffness"),
+                        "give either `axial_stiffness` or `tension_strain`, not both",
+                    )
+                    .hint("remove one of them");
+                b.push(d);
+                AxialStiffness::Linear(1.0)
+            }
+            (None, None) => {
+                let d = b
+                    .diag(
+                        Some(t.name.span()),
+                        &k("axial_stiffness"),
+                        format!("line type `{name}` has no axial stiffness"),
+                    )
+                    .expected("`axial_stiffness` in N (EA) or a `tension_strain` table")
+                    .hint("add e.g. `axial_stiffness = 3.84e8`");
+                b.push(d);
+                AxialStiffness::Linear(1.0)
+            }
+        };
+        let damping = match (&t.axial_damping, &t.axial_damping_ratio) {
+            (Some(c), None) => AxialDamping::Coefficient(b.num(
+                c,
+                &k("axial_damping"),
+                Check {
+                    ok: NON_NEGATIVE,
+                    expected: "N·s, ≥ 0",
+                },
+                "the coefficient c of T = EA ε + c dε/dt",
+            )),
+            (None, Some(z)) => AxialDamping::Ratio(b.num(
+                z,
+                &k("axial_damping_ratio"),
+                Check {
+                    ok: NON_NEGATIVE,
+                    expected: "-, ≥ 0 (fraction of critical)",
+                },
+                "MoorDyn's BA = -ζ; 0.8 is common for chain",
+            )),
+            (None, None) => AxialDamping::Coefficient(0.0),
+            (Some(c), Some(_)) => {
+                let d = b
+                    .diag(
+                        Some(c.span()),
+                        &k("axial_damping"),
+                        "give either `axial_damping` or `axial_damping_ratio`, not both",
+                    )
+                    .hint("remove one of them");
+                b.push(d);
+                AxialDamping::Coefficient(0.0)
+            }
+        };
+        let drag = match (&t.loading_functions, &t.normal_drag, &t.tangential_drag) {
+            (Some(lf), None, None) => DragModel::LoadingFunctions {
+                normal: LoadingFunction {
+                    cos: lf.normal.cos.clone(),
+                    sin: lf.normal.sin.clone(),
+                },
+                tangential: LoadingFunction {
+                    cos: lf.tangential.cos.clone(),
+                    sin: lf.tangential.sin.clone(),
+                },
+            },
+            (None, Some(n), Some(tg)) => DragModel::Morison {
+                normal: b.num(
+                    n,
+                    &k("normal_drag"),
+                    Check {
+                        ok: NON_NEGATIVE,
+                        expected: "-, ≥ 0",
+                    },
+                    "about 1.2 for wire rope, 2.4 for studless chain on d",
+                ),
+                tangential: b.num(
+                    tg,
+                    &k("tangential_drag"),
+                    Check {
+                        ok: NON_NEGATIVE,
+                        expected: "-, ≥ 0 (on the area d per length)",
+                    },
+                    "a MoorDyn CdAx on π·d becomes π·CdAx here",
+                ),
+            },
+            (Some(_), _, _) => {
+                let span = span_of(&t.normal_drag).or(span_of(&t.tangential_drag));
+                let d = b
+                    .diag(
+                        span,
+                        &k("normal_drag"),
+                        "give drag coefficients or `loading_functions`, not both",
+                    )
+                    .hint("remove one of them");
+                b.push(d);
+                DragModel::Morison {
+                    normal: 0.0,
+                    tangential: 0.0,
+                }
+            }
+            (None, n, tg) => {
+                let missing = if n.is_none() {
+                    "normal_drag"
+                } else {
+                    "tangential_drag"
+                };
+                let _ = tg;
+                let d = b
+                    .diag(Some(t.name.span()), &k(missing), format!("line type `{name}` has no `{missing}`"))
+                    .expected("`normal_drag` and `tangential_drag` (dimensionless, on the area d per length), or `loading_functions`")
+                    .hint("e.g. `normal_drag = 1.2` and `tangential_drag = 0.02`");
+                b.push(d);
+                DragModel::Morison {
+                    normal: 0.0,
+                    tangential: 0.0,
+                }
+            }
+        };
+        out.push(LineType {
+            name,
+            diameter,
+            mass_per_length: mass,
+            axial_stiffness: stiffness,
+            axial_damping: damping,
+            compression: t.compression.unwrap_or(false),
+            bending_stiffness: b.opt(
+                &t.bending_stiffness,
+                &k("bending_stiffness"),
+                0.0,
+                Check {
+                    ok: NON_NEGATIVE,
+                    expected: "N·m², ≥ 0",
+                },
+                "EI; 0 for a perfectly flexible cable",
+            ),
+            bending_damping: b.opt(
+                &t.bending_damping,
+                &k("bending_damping"),
+                0.0,
+                Check {
+                    ok: NON_NEGATIVE,
+                    expected: "N·m²·s, ≥ 0",
+                },
+                "0 unless known",
+            ),
+            drag,
+            normal_added_mass: b.opt(
+                &t.normal_added_mass,
+                &k("normal_added_mass"),
+                1.0,
+                Check {
+                    ok: NON_NEGATIVE,
+                    expected: "-, ≥ 0",
+                },
+                "1 for a circular cylinder",
+            ),
+            tangential_added_mass: b.opt(
+                &t.tangential_added_mass,
+                &k("tangential_added_mass"),
+                0.0,
+                Check {
+                    ok: NON_NEGATIVE,
+                    expected: "-, ≥ 0",
+                },
+                "usually 0",
+            ),
+        });
+    }
+    (out, index)
+}
+
+fn build_points(
+    b: &mut Builder,
+    specs: &[PointSpec],
+    env: &Environment,
+) -> (Vec<Point>, HashMap<String, usize>) {
+    let mut out = Vec::new();
+    let mut index = HashMap::new();
+    for (i, p) in specs.iter().enumerate() {
+        let k = |key: &str| format!("points[{i}].{key}");
+        let name = p.name.get_ref().clone();
+        if index.insert(name.clone(), i).is_some() {
+            let d = b
+                .diag(
+                    Some(p.name.span()),
+                    &k("name"),
+                    format!("point `{name}` is defined twice"),
+                )
+                .hint("give each point its own name");
+            b.push(d);
+        }
+        let kind = *p.kind.get_ref();
+        let kind_name = match kind {
+            PointKindSpec::Fixed => "a fixed point",
+            PointKindSpec::Free => "a free point",
+            PointKindSpec::Prescribed => "a prescribed point",
+        };
+        let position = match &p.position {
+            Some(v) => Some(b.vec3(v, &k("position"))),
+            None => None,
+        };
+        if kind != PointKindSpec::Free {
+            for (present, span, key) in [
+                (p.mass.is_some(), span_of(&p.mass), "mass"),
+                (p.volume.is_some(), span_of(&p.volume), "volume"),
+                (p.drag_area.is_some(), span_of(&p.drag_area), "drag_area"),
+                (
+                    p.added_mass_coefficient.is_some(),
+                    span_of(&p.added_mass_coefficient),
+                    "added_mass_coefficient",
+                ),
+                (p.force.is_some(), span_of(&p.force), "force"),
+            ] {
+                b.not_for(
+                    present,
+                    span,
+                    &k(key),
+                    kind_name,
+                    "free points (`type = \"free\"`)",
+                );
+            }
+        }
+        if kind != PointKindSpec::Prescribed && p.motion.is_some() {
+            let span = p.motion.as_ref().map(|m| m.kind.span());
+            b.not_for(
+                true,
+                span,
+                &k("motion"),
+                kind_name,
+                "prescribed points (`type = \"prescribed\"`)",
+            );
+        }
+        let point_kind = match kind {
+            PointKindSpec::Fixed => PointKind::Fixed,
+            PointKindSpec::Free => PointKind::Free {
+                mass: b.opt(
+                    &p.mass,
+                    &k("mass"),
+                    0.0,
+                    Check {
+                        ok: NON_NEGATIVE,
+                        expected: "kg, ≥ 0",
+                    },
+                    "the point's mass in air",
+                ),
+                volume: b.opt(
+                    &p.volume,
+                    &k("volume"),
+                    0.0,
+                    Check {
+                        ok: NON_NEGATIVE,
+                        expected: "m³, ≥ 0",
+                    },
+                    "displaced volume; buoyancy is ρ g V",
+                ),
+                drag_area: b.opt(
+                    &p.drag_area,
+                    &k("drag_area"),
+                    0.0,
+                    Check {
+                        ok: NON_NEGATIVE,
+                        expected: "m², ≥ 0 (C_d × area)",
+                    },
+                    "e.g. 0.5 × π r² for a sphere",
+                ),
+                added_mass_coefficient: b.opt(
+                    &p.added_mass_coefficient,
+                    &k("added_mass_coefficient"),
+                    0.0,
+                    Check {
+                        ok: NON_NEGATIVE,
+                        expected: "-, ≥ 0",
+                    },
+                    "0.5 for a sphere",
+                ),
+                force: p
+                    .force
+                    .as_ref()
+                    .map(|f| b.vec3(f, &k("force")))
+                    .unwrap_or_else(Vec3::zeros),
+            },
+            PointKindSpec::Prescribed => match &p.motion {
+                Some(m) => PointKind::Prescribed(build_motion(b, m, position, &k("motion"))),
+                None => {
+                    let d = b
+                        .diag(
+                            Some(p.kind.span()),
+                            &k("motion"),
+                            format!("prescribed point `{name}` has no `motion`"),
+                        )
+                        .hint("add a [points.motion] table, or make the point `fixed`");
+                    b.push(d);
+                    PointKind::Fixed
+                }
+            },
+        };
+        let pos = match (position, &point_kind) {
+            (Some(p), _) => p,
+            (None, PointKind::Prescribed(m)) => m.initial_position(),
+            (None, _) => {
+                let d = b
+                    .diag(
+                        Some(p.name.span()),
+                        &k("position"),
+                        format!("point `{name}` has no `position`"),
+                    )
+                    .expected("[x, y, z] in m");
+                b.push(d);
+                Vec3::zeros()
+            }
+        };
+        if env.depth.is_finite() && pos.z < -env.depth - 1e-9 {
+            if let Some(ps) = &p.position {
+                let d = b
+                    .diag(
+                        Some(ps.span()),
+                        &k("position"),
+                        format!("point `{name}` is below the seabed"),
+                    )
+                    .expected(format!("z ≥ −depth = {}", -env.depth))
+                    .hint("anchors sit on the seabed at z = −depth");
+                b.push(d);
+            }
+        }
+        out.push(Point {
+            name,
+            position: pos,
+            kind: point_kind,
+        });
+    }
+    (out, index)
+}
+
+fn build_motion(b: &mut Builder, m: &MotionSpec, position: Option<Vec3>, key: &str) -> Motion {
+    let k = |x: &str| format!("{key}.{x}");
+    let kind = *m.kind.get_ref();
+    let centre = position.unwrap_or_else(Vec3::zeros);
+    if position.is_none() && !matches!(kind, MotionKind::TimeSeries) {
+        let d = b
+            .diag(
+                Some(m.kind.span()),
+                &k("type"),
+                "this motion is relative to the point's `position`, which is missing",
+            )
+            .expected("`position = [x, y, z]` on the point, in m");
+        b.push(d);
+    }
+    let present = |o: bool| o;
+    let allowed: &[&str] = match kind {
+        MotionKind::Fixed => &[],
+        MotionKind::ConstantVelocity => &["velocity"],
+        MotionKind::Sinusoid => &["amplitude", "period", "frequency", "phase"],
+        MotionKind::CircularOrbit => &["radius", "frequency", "phase", "plane"],
+        MotionKind::TimeSeries => &["table", "file"],
+    };
+    for (name, is, span) in [
+        (
+            "velocity",
+            present(m.velocity.is_some()),
+            span_of(&m.velocity),
+        ),
+        ("amplitude", m.amplitude.is_some(), span_of(&m.amplitude)),
+        ("period", m.period.is_some(), span_of(&m.period)),
+        ("frequency", m.frequency.is_some(), span_of(&m.frequency)),
+        ("phase", m.phase.is_some(), span_of(&m.phase)),
+        ("radius", m.radius.is_some(), span_of(&m.radius)),
+        ("plane", m.plane.is_some(), Some(m.kind.span())),
+        ("table", m.table.is_some(), span_of(&m.table)),
+        ("file", m.file.is_some(), span_of(&m.file)),
+    ] {
+        if is && !allowed.contains(&name) {
+            let d = b
+                .diag(
+                    span,
+                    &k(name),
+                    format!("`{name}` does not apply to a `{:?}` motion", kind).to_lowercase(),
+                )
+                .hint(format!(
+                    "this motion takes: {}",
+                    if allowed.is_empty() {
+                        "no parameters".into()
+                    } else {
+                        allowed.join(", ")
+                    }
+                ));
+            b.push(d);
+        }
+    }
+    let required = |b: &mut Builder, name: &str, unit: &str| {
+        let d = b
+            .diag(
+                Some(m.kind.span()),
+                &k(name),
+                format!("this motion needs `{name}`"),
+            )
+            .expected(unit.to_string());
+        b.push(d);
+    };
+    match kind {
+        MotionKind::Fixed => Motion::Fixed { position: centre },
+        MotionKind::ConstantVelocity => match &m.velocity {
+            Some(v) => Motion::ConstantVelocity {
+                start: centre,
+                velocity: b.vec3(v, &k("velocity")),
+            },
+            None => {
+                required(b, "velocity", "[vx, vy, vz] in m/s");
+                Motion::Fixed { position: centre }
+            }
+        },
+        MotionKind::Sinusoid => {
+            let amplitude = match &m.amplitude {
+                Some(a) => a.get_ref().as_array(),
+                None => {
+                    required(b, "amplitude", "m, one value or [ax, ay, az]");
+                    [0.0; 3]
+                }
+            };
+            let frequency = frequency_of(b, m, &k("frequency"));
+            let phase = m
+                .phase
+                .as_ref()
+                .map(|p| p.get_ref().as_array())
+                .unwrap_or([0.0; 3]);
+            Motion::Sinusoid {
+                centre,
+                amplitude: Vec3::from(amplitude),
+                frequency: Vec3::from(frequency),
+                phase: Vec3::from(phase).map(f64::to_radians),
+            }
+        }
+        MotionKind::CircularOrbit => {
+            let radius = match &m.radius {
+                Some(r) => b.num(
+                    r,
+                    &k("radius"),
+                    Check {
+                        ok: POSITIVE,
+                        expected: "m, > 0",
+                    },
+                    "the orbit radius a",
+                ),
+                None => {
+                    required(b, "radius", "m, > 0");
+                    1.0
+                }
+            };
+            let f = frequency_of(b, m, &k("frequency"))[0];
+            let (e1, e2) = match m.plane.unwrap_or(PlaneSpec::Xz) {
+                PlaneSpec::Xy => (Vec3::x(), Vec3::y()),
+                PlaneSpec::Xz => (Vec3::x(), Vec3::z()),
+                PlaneSpec::Yz => (Vec3::y(), Vec3::z()),
+            };
+            let phase = m
+                .phase
+                .as_ref()
+                .map(|p| p.get_ref().as_array()[0])
+                .unwrap_or(0.0)
+                .to_radians();
+            Motion::CircularOrbit {
+                centre,
+                radius,
+                frequency: f,
+                phase,
+                e1,
+                e2,
+            }
+        }
+        MotionKind::TimeSeries => {
+            let rows: Option<(Vec<[f64; 4]>, Option<Range<usize>>)> = match (&m.table, &m.file) {
+                (Some(t), None) => Some((t.get_ref().clone(), Some(t.span()))),
+                (None, Some(f)) => {
+                    let path = b.file.parent().unwrap_or(Path::new(".")).join(f.get_ref());
+                    match read_motion_csv(&path) {
+                        Ok(rows) => Some((rows, Some(f.span()))),
+                        Err(msg) => {
+                            let d = b
+                                .diag(Some(f.span()), &k("file"), msg)
+                                .expected("a CSV file with columns t [s], x, y, z [m]")
+                                .hint("the path is relative to the scenario file");
+                            b.push(d);
+                            None
+                        }
+                    }
+                }
+                (Some(t), Some(_)) => {
+                    let d = b.diag(
+                        Some(t.span()),
+                        &k("table"),
+                        "give either `table` or `file`, not both",
+                    );
+                    b.push(d);
+                    None
+                }
+                (None, None) => {
+                    required(b, "table", "rows [t, x, y, z] in s and m, or `file`");
+                    None
+                }
+            };
+            match rows {
+                Some((rows, span)) => {
+                    if rows.is_empty()
+                        || !rows.windows(2).all(|w| w[1][0] > w[0][0])
+                        || rows.iter().flatten().any(|x| !x.is_finite())
+                    {
+                        let d = b.diag(span, &k("table"), "the time series needs at least one row and strictly increasing times").expected("rows [t, x, y, z] in s and m");
+                        b.push(d);
+                        Motion::Fixed { position: centre }
+                    } else {
+                        Motion::TimeSeries {
+                            times: rows.iter().map(|r| r[0]).collect(),
+                            positions: rows.iter().map(|r| Vec3::new(r[1], r[2], r[3])).collect(),
+                        }
+                    }
+                }
+                None => Motion::Fixed { position: centre },
+            }
+        }
+    }
+}
+
+fn frequency_of(b: &mut Builder, m: &MotionSpec, key: &str) -> [f64; 3] {
+    match (&m.frequency, &m.period) {
+        (Some(f), None) => {
+            let f3 = f.get_ref().as_array();
+            if f3.iter().any(|x| !(x.is_finite() && *x >= 0.0)) {
+                let d = b
+                    .diag(Some(f.span()), key, "frequency must be ≥ 0")
+                    .expected("Hz, ≥ 0");
+                b.push(d);
+            }
+            f3
+        }
+        (None, Some(p)) => {
+            let p3 = p.get_ref().as_array();
+            if p3.iter().any(|x| !(x.is_finite() && *x > 0.0)) {
+                let d = b
+                    .diag(
+                        Some(p.span()),
+                        &key.replace("frequency", "period"),
+                        "period must be > 0",
+                    )
+                    .expected("s, > 0");
+                b.push(d);
+                return [0.0; 3];
+            }
+            p3.map(|p| 1.0 / p)
+        }
+        (Some(f), Some(_)) => {
+            let d = b.diag(
+                Some(f.span()),
+                key,
+                "give either `frequency` or `period`, not both",
+            );
+            b.push(d);
+            [0.0; 3]
+        }
+        (None, None) => {
+            let d = b
+                .diag(
+                    Some(m.kind.span()),
+                    key,
+                    "this motion needs `frequency` [Hz] or `period` [s]",
+                )
+                .expected("Hz or s, > 0");
+            b.push(d);
+            [0.0; 3]
+        }
+    }
+}
+
+/// Reads a motion time series CSV: rows t, x, y, z; a header line and `#` comments allowed.
+pub fn read_motion_csv(path: &Path) -> Result<Vec<[f64; 4]>, String> {
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| format!("cannot read {}: {e}", path.display()))?;
+    let mut rows = Vec::new();
+    for (n, line) in text.lines().enumerate() {
+        let line = line.trim();
+        if line.is_empty() || line.starts_with('#') {
+            continue;
+        }
+        let fields: Vec<&str> = line
+            .split([',', ';', '\t', ' '])
+            .filter(|s| !s.is_empty())
+            .collect();
+        let nums: Result<Vec<f64>, _> = fields.iter().map(|s| s.parse::<f64>()).collect();
+        match nums {
+            Ok(v) if v.len() == 4 => rows.push([v[0], v[1], v[2], v[3]]),
+            Ok(v) => {
+                return Err(format!(
+                    "{}:{}: expected 4 columns (t, x, y, z), found {}",
+                    path.display(),
+                    n + 1,
+                    v.len()
+                ));
+            }
+            Err(_) if rows.is_empty() && n == 0 => continue, // header
+            Err(_) => {
+                return Err(format!(
+                    "{}:{}: not a number in `{line}`",
+                    path.display(),
+                    n + 1
+                ));
+            }
+        }
+    }
+    Ok(rows)
+}
+
+fn build_lines(
+    b: &mut Builder,
+    specs: &[LineSpec],
+    types: &HashMap<String, usize>,
+    points: &HashMap<String, usize>,
+    line_types: &[LineType],
+) -> Vec<Line> {
+    let mut out = Vec::new();
+    let mut names = HashMap::new();
+    for (i, l) in specs.iter().enumerate() {
+        let k = |key: &str| format!("lines[{i}].{key}");
+        let name = l.name.get_ref().clone();
+        if names.insert(name.clone(), i).is_some() {
+            let d = b
+                .diag(
+                    Some(l.name.span()),
+                    &k("name"),
+                    format!("line `{name}` is defined twice"),
+                )
+                .hint("give each line its own name");
+            b.push(d);
+        }
+        if name.contains(['.', ',', '"']) || name.is_empty() {
+            let d = b
+                .diag(
+                    Some(l.name.span()),
+                    &k("name"),
+                    "line names must be non-empty without `.`, `,` or quotes",
+                )
+                .hint("they become channel names such as `L1.end_b.tension`");
+            b.push(d);
+        }
+        let end = |b: &mut Builder, s: &Spanned<String>, key: &str| -> usize {
+            match points.get(s.get_ref()) {
+                Some(&p) => p,
+                None => {
+                    let hint = match closest(s.get_ref(), points.keys().map(String::as_str)) {
+                        Some(c) => format!("did you mean `{c}`?"),
+                        None => format!("define it in a [[points]] table; defined points: {}", {
+                            let mut v: Vec<&str> = points.keys().map(String::as_str).collect();
+                            v.sort();
+                            v.join(", ")
+                        }),
+                    };
+                    let d = b
+                        .diag(
+                            Some(s.span()),
+                            &k(key),
+                            format!(
+                                "line `{}` is attached to point `{}`, which does not exist",
+                                l.name.get_ref(),
+                                s.get_ref()
+                            ),
+                        )
+                        .hint(hint);
+                    b.push(d);
+                    0
+                }
+            }
+        };
+        let end_a = end(b, &l.end_a, "end_a");
+        let end_b = end(b, &l.end_b, "end_b");
+        if l.end_a.get_ref() == l.end_b.get_ref() {
+            let d = b
+                .diag(
+                    Some(l.end_b.span()),
+                    &k("end_b"),
+                    "both ends of a line are attached to the same point",
+                )
+                .hint("attach end B to another point");
+            b.push(d);
+        }
+        let mut sections = Vec::new();
+        let mut section = |b: &mut Builder,
+                           t: &Spanned<String>,
+                           length: &Spanned<f64>,
+                           elements: &Spanned<i64>,
+                           key: &dyn Fn(&str) -> String| {
+            let ti = match types.get(t.get_ref()) {
+                Some(&ti) => ti,
+                None => {
+                    let hint = match closest(t.get_ref(), types.keys().map(String::as_str)) {
+                        Some(c) => format!("did you mean `{c}`?"),
+                        None => "define it in a [[line_types]] table".into(),
+                    };
+                    let d = b
+                        .diag(
+                            Some(t.span()),
+                            &key("type"),
+                            format!("line type `{}` does not exist", t.get_ref()),
+                        )
+                        .hint(hint);
+                    b.push(d);
+                    0
+                }
+            };
+            let len = b.num(
+                length,
+                &key("length"),
+                Check {
+                    ok: POSITIVE,
+                    expected: "m, > 0 (unstretched)",
+                },
+                "the unstretched length of this section",
+            );
+            let n = *elements.get_ref();
+            if n < 1 || n > 1_000_000 {
+                let d = b
+                    .diag(
+                        Some(elements.span()),
+                        &key("elements"),
+                        "the element count is out of range",
+                    )
+                    .expected("an integer from 1 to 1000000")
+                    .hint("10–100 elements per line is usual");
+                b.push(d);
+            }
+            sections.push(Section {
+                line_type: ti,
+                length: len,
+                elements: n.clamp(1, 1_000_000) as usize,
+            });
+        };
+        match (&l.line_type, &l.length, &l.elements, l.sections.is_empty()) {
+            (Some(t), Some(len), Some(n), true) => section(b, t, len, n, &k),
+            (None, None, None, false) => {
+                for (j, s) in l.sections.iter().enumerate() {
+                    let key = |x: &str| format!("lines[{i}].sections[{j}].{x}");
+                    section(b, &s.line_type, &s.length, &s.elements, &key);
+                }
+            }
+            (None, None, None, true) => {
+                let d = b
+                    .diag(Some(l.name.span()), &k("sections"), format!("line `{name}` has no sections"))
+                    .expected("`type`, `length` [m] and `elements` on the line, or [[lines.sections]] tables")
+                    .hint("add e.g. `type = \"chain\"`, `length = 900.0`, `elements = 20`");
+                b.push(d);
+            }
+            (_, _, _, false) => {
+                let d = b
+                    .diag(
+                        Some(l.name.span()),
+                        &k("sections"),
+                        "give either `type`/`length`/`elements` or [[lines.sections]], not both",
+                    )
+                    .hint("use sections for lines of several types");
+                b.push(d);
+            }
+            (t, len, n, true) => {
+                let missing: Vec<&str> = [
+                    ("type", t.is_none()),
+                    ("length", len.is_none()),
+                    ("elements", n.is_none()),
+                ]
+                .iter()
+                .filter(|x| x.1)
+                .map(|x| x.0)
+                .collect();
+                let d = b
+                    .diag(
+                        Some(l.name.span()),
+                        &k(missing[0]),
+                        format!(
+                            "line `{name}` is missing {}",
+                            missing
+                                .iter()
+                                .map(|m| format!("`{m}`"))
+                                .collect::<Vec<_>>()
+                                .join(", ")
+                        ),
+                    )
+                    .expected("`type` (a line type name), `length` [m] and `elements`");
+                b.push(d);
+            }
+        }
+        let formulation = match l.formulation.as_ref().map(|f| (*f.get_ref(), f.span())) {
+            None | Some((FormulationSpec::Fe, _)) => Formulation::Fe,
+            Some((f, span)) => {
+                let d = b
+                    .diag(
+                        Some(span),
+                        &k("formulation"),
+                        format!(
+                            "the `{}` formulation is not available in this version",
+                            format!("{f:?}").to_lowercase()
+                        ),
+                    )
+                    .expected("`fe`")
+                    .hint("use `formulation = \"fe\"`; `dg` and `hermite` are coming");
+                b.push(d);
+                Formulation::Fe
+            }
+        };
+        let _ = line_types;
+        out.push(Line {
+            name,
+            sections,
+            formulation,
+            mass_matrix: match l.mass_matrix {
+                Some(MassMatrixSpec::Lumped) => MassMatrix::Lumped,
+                _ => MassMatrix::Consistent,
+            },
+            end_a: LineEnd::Point(end_a),
+            end_b: LineEnd::Point(end_b),
+        });
+    }
+    out
+}
+
+fn check_free_points_held(b: &mut Builder, specs: &[PointSpec], lines: &[Line], points: &[Point]) {
+    for (i, p) in points.iter().enumerate() {
+        if let PointKind::Free { mass, volume, .. } = p.kind {
+            let attached = lines
+                .iter()
+                .any(|l| l.end_a == LineEnd::Point(i) || l.end_b == LineEnd::Point(i));
+            if !attached && mass == 0.0 && volume == 0.0 {
+                let d = b
+                    .diag(
+                        Some(specs[i].name.span()),
+                        &format!("points[{i}]"),
+                        format!("free point `{}` has no mass, no volume and no line", p.name),
+                    )
+                    .hint("attach a line to it, give it a mass, or remove it");
+                b.push(d);
+            }
+        }
+    }
+}
+
+fn build_settings(
+    b: &mut Builder,
+    spec: Option<&SimulationSpec>,
+) -> (Settings, Option<Range<usize>>) {
+    let mut s = Settings::default();
+    let Some(sim) = spec else { return (s, None) };
+    s.duration = b.num(
+        &sim.duration,
+        "simulation.duration",
+        Check {
+            ok: NON_NEGATIVE,
+            expected: "s, ≥ 0",
+        },
+        "the simulated time span",
+    );
+    s.output_interval = b.opt(
+        &sim.output_interval,
+        "simulation.output_interval",
+        0.1,
+        Check {
+            ok: POSITIVE,
+            expected: "s, > 0",
+        },
+        "e.g. 0.1 s",
+    );
+    s.safety_factor = b.opt(
+        &sim.safety_factor,
+        "simulation.safety_factor",
+        0.8,
+        Check {
+            ok: |x| x > 0.0 && x <= 1.0,
+            expected: "-, in (0, 1]",
+        },
+        "0.8 leaves a margin below the stability limit",
+    );
+    if let Some(si) = &sim.snapshot_interval {
+        s.snapshot_interval = Some(b.num(
+            si,
+            "simulation.snapshot_interval",
+            Check {
+                ok: POSITIVE,
+                expected: "s, > 0",
+            },
+            "e.g. 1 s",
+        ));
+    }
+    s.scheme = match sim.scheme {
+        Some(SchemeSpec::SspRk3) => Scheme::SspRk3,
+        _ => Scheme::Rk4,
+    };
+    s.initial_condition = match sim.initial_condition {
+        Some(InitialConditionSpec::AsDefined) => InitialCondition::AsDefined,
+        _ => InitialCondition::Statics,
+    };
+    let mut span = None;
+    if let Some(ts) = &sim.time_step {
+        span = Some(ts.span());
+        match ts.get_ref() {
+            TimeStepSpec::Value(dt) if dt.is_finite() && *dt > 0.0 => {
+                s.time_step = TimeStep::Fixed(*dt)
+            }
+            TimeStepSpec::Keyword(k) if k == "auto" => s.time_step = TimeStep::Auto,
+            _ => {
+                let d = b
+                    .diag(
+                        Some(ts.span()),
+                        "simulation.time_step",
+                        "`time_step` must be \"auto\" or a positive number of seconds",
+                    )
+                    .expected("\"auto\" or s, > 0")
+                    .hint("\"auto\" picks the largest stable step");
+                b.push(d);
+            }
+        }
+    }
+    let _ = ANY;
+    (s, span)
+}
+
+fn build_channels(b: &mut Builder, spec: Option<&SimulationSpec>, model: &Model) -> Vec<Channel> {
+    let mut out = Vec::new();
+    for (li, _) in model.lines.iter().enumerate() {
+        out.push(Channel::EndTension {
+            line: li,
+            end_b: false,
+        });
+        out.push(Channel::EndTension {
+            line: li,
+            end_b: true,
+        });
+    }
+    for (pi, p) in model.points.iter().enumerate() {
+        if matches!(p.kind, PointKind::Free { .. }) {
+            for axis in 0..3 {
+                out.push(Channel::PointPosition { point: pi, axis });
+            }
+        }
+    }
+    let Some(sim) = spec else { return out };
+    for (ci, c) in sim.channels.iter().enumerate() {
+        match parse_channel(c.get_ref(), model) {
+            Ok(ch) => {
+                if !out.contains(&ch) {
+                    out.push(ch);
+                }
+            }
+            Err(msg) => {
+                let d = b
+                    .diag(Some(c.span()), &format!("simulation.channels[{ci}]"), msg)
+                    .expected("LINE.end_a|end_b.tension|fx|fy|fz, LINE.nodeK.tension|x|y|z|vx|vy|vz, LINE.elementK.strain, POINT.x|y|z|vx|vy|vz")
+                    .hint("node 0 is end A; a line of N elements has nodes 0..N");
+                b.push(d);
+            }
+        }
+    }
+    out
+}
+
+/// Parses a channel name against the model.
+pub fn parse_channel(name: &str, model: &Model) -> Result<Channel, String> {
+    let axis = |s: &str| match s {
+        "x" => Some(0),
+        "y" => Some(1),
+        "z" => Some(2),
+        _ => None,
+    };
+    let parts: Vec<&str> = name.split('.').collect();
+    if let Some(li) = model.line_index(parts[0]) {
+        let n = model.lines[li].elements();
+        match parts.as_slice() {
+            [_, end @ ("end_a" | "end_b"), q] => {
+                let end_b = *end == "end_b";
+                match *q {
+                    "tension" => return Ok(Channel::EndTension { line: li, end_b }),
+                    f if f.len() == 2 && f.starts_with('f') => {
+                        if let Some(a) = axis(&f[1..]) {
+                            return Ok(Channel::EndForce {
+                                line: li,
+                                end_b,
+                                axis: a,
+                            });
+                        }
+                    }
+                    _ => {}
+                }
+            }
+            [_, node, q] if node.starts_with("node") => {
+                let Ok(k) = node[4..].parse::<usize>() else {
+                    return Err(format!("`{node}` is not a node (use node0 … node{n})"));
+                };
+                if k > n {
+                    return Err(format!(
+                        "line `{}` has nodes 0 … {n}; node {k} does not exist",
+                        parts[0]
+                    ));
+                }
+                match *q {
+                    "tension" => return Ok(Channel::NodeTension { line: li, node: k }),
+                    v if v.len() == 2 && v.starts_with('v') => {
+                        if let Some(a) = axis(&v[1..]) {
+                            return Ok(Channel::NodeVelocity {
+                                line: li,
+                                node: k,
+                                axis: a,
+                            });
+                        }
+                    }
+                    p => {
+                        if let Some(a) = axis(p) {
+                            return Ok(Channel::NodePosition {
+                                line: li,
+                                node: k,
+                                axis: a,
+                            });
+                        }
+                    }
+                }
+            }
+            [_, el, "strain"] if el.starts_with("element") => {
+                let Ok(k) = el[7..].parse::<usize>() else {
+                    return Err(format!("`{el}` is not an element"));
+                };
+                if k >= n {
+                    return Err(format!(
+                        "line `{}` has elements 0 … {}; element {k} does not exist",
+                        parts[0],
+                        n - 1
+                    ));
+                }
+                return Ok(Channel::ElementStrain {
+                    line: li,
+                    element: k,
+                });
+            }
+            _ => {}
+        }
+        return Err(format!("unknown channel `{name}`"));
+    }
+    if let Some(pi) = model.point_index(parts[0]) {
+        if let [_, q] = parts.as_slice() {
+            if let Some(a) = axis(q) {
+                return Ok(Channel::PointPosition { point: pi, axis: a });
+            }
+            if q.len() == 2 && q.starts_with('v') {
+                if let Some(a) = axis(&q[1..]) {
+                    return Ok(Channel::PointVelocity { point: pi, axis: a });
+                }
+            }
+        }
+        return Err(format!("unknown channel `{name}`"));
+    }
+    Err(format!("channel `{name}` names no line or point"))
+}

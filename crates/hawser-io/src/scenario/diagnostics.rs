@@ -1,0 +1,211 @@
+//! Input errors that name the file, line and column, the key, the bad value, what was
+//! expected (unit and range) and a hint, rendered with the offending source line.
+
+use std::fmt;
+use std::ops::Range;
+use std::path::{Path, PathBuf};
+
+/// One problem in an input file.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Diagnostic {
+    /// File.
+    pub file: PathBuf,
+    /// Byte span in the file, if known.
+    pub span: Option<Range<usize>>,
+    /// 1-based line and column of the span start.
+    pub line: usize,
+    /// 1-based column.
+    pub column: usize,
+    /// Dotted key path, e.g. `line_types[0].diameter`.
+    pub key: String,
+    /// The value as written (empty when missing).
+    pub value: String,
+    /// What is wrong.
+    pub message: String,
+    /// What was expected: unit and range.
+    pub expected: String,
+    /// How to fix it.
+    pub hint: String,
+    source_line: String,
+}
+
+impl Diagnostic {
+    /// A diagnostic at `span` of `source`.
+    pub fn new(
+        file: &Path,
+        source: &str,
+        span: Option<Range<usize>>,
+        key: impl Into<String>,
+        message: impl Into<String>,
+    ) -> Self {
+        let (line, column, source_line) = match &span {
+            Some(s) => locate(source, s.start),
+            None => (0, 0, String::new()),
+        };
+        let value = match &span {
+            Some(s) if s.end <= source.len() => {
+                source[s.clone()].lines().next().unwrap_or("").to_string()
+            }
+            _ => String::new(),
+        };
+        Self {
+            file: file.to_path_buf(),
+            span,
+            line,
+            column,
+            key: key.into(),
+            value,
+            message: message.into(),
+            expected: String::new(),
+            hint: String::new(),
+            source_line,
+        }
+    }
+    /// Sets the expected unit and range.
+    pub fn expected(mut self, e: impl Into<String>) -> Self {
+        self.expected = e.into();
+        self
+    }
+    /// Sets the hint.
+    pub fn hint(mut self, h: impl Into<String>) -> Self {
+        self.hint = h.into();
+        self
+    }
+    /// Overrides the value text.
+    pub fn value(mut self, v: impl Into<String>) -> Self {
+        self.value = v.into();
+        self
+    }
+}
+
+fn locate(source: &str, offset: usize) -> (usize, usize, String) {
+    let offset = offset.min(source.len());
+    let before = &source[..offset];
+    let line = before.matches('\n').count() + 1;
+    let start = before.rfind('\n').map(|i| i + 1).unwrap_or(0);
+    let column = source[start..offset].chars().count() + 1;
+    let end = source[start..]
+        .find('\n')
+        .map(|i| start + i)
+        .unwrap_or(source.len());
+    (
+        line,
+        column,
+        source[start..end].trim_end_matches('\r').to_string(),
+    )
+}
+
+impl fmt::Display for Diagnostic {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        writeln!(f, "error: {}", self.message)?;
+        if self.line > 0 {
+            writeln!(
+                f,
+                "  --> {}:{}:{}",
+                self.file.display(),
+                self.line,
+                self.column
+            )?;
+            let num = self.line.to_string();
+            let pad = " ".repeat(num.len());
+            writeln!(f, "{pad} |")?;
+            writeln!(f, "{num} | {}", self.source_line)?;
+            let width = self
+                .span
+                .as_ref()
+                .map(|s| {
+                    self.value
+                        .chars()
+                        .count()
+                        .max(1)
+                        .min(s.end.saturating_sub(s.start).max(1))
+                })
+                .unwrap_or(1);
+            writeln!(
+                f,
+                "{pad} | {}{}",
+                " ".repeat(self.column - 1),
+                "^".repeat(width)
+            )?;
+        } else {
+            writeln!(f, "  --> {}", self.file.display())?;
+        }
+        if !self.key.is_empty() {
+            writeln!(f, "  = key: {}", self.key)?;
+        }
+        if !self.value.is_empty() {
+            writeln!(f, "  = value: {}", self.value)?;
+        }
+        if !self.expected.is_empty() {
+            writeln!(f, "  = expected: {}", self.expected)?;
+        }
+        if !self.hint.is_empty() {
+            write!(f, "  = hint: {}", self.hint)?;
+        }
+        Ok(())
+    }
+}
+
+/// All problems found in a file (at least one).
+#[derive(Clone, Debug, PartialEq)]
+pub struct ScenarioError {
+    /// The problems, in file order.
+    pub diagnostics: Vec<Diagnostic>,
+}
+
+impl fmt::Display for ScenarioError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        for (i, d) in self.diagnostics.iter().enumerate() {
+            if i > 0 {
+                writeln!(f)?;
+                writeln!(f)?;
+            }
+            write!(f, "{d}")?;
+        }
+        if self.diagnostics.len() > 1 {
+            write!(
+                f,
+                "\n\n{} errors in {}",
+                self.diagnostics.len(),
+                self.diagnostics[0].file.display()
+            )?;
+        }
+        Ok(())
+    }
+}
+
+impl std::error::Error for ScenarioError {}
+
+impl From<Diagnostic> for ScenarioError {
+    fn from(d: Diagnostic) -> Self {
+        Self {
+            diagnostics: vec![d],
+        }
+    }
+}
+
+/// Edit distance for "did you mean" hints.
+pub fn closest<'a>(word: &str, candidates: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
+    let dist = |a: &str, b: &str| {
+        let b: Vec<char> = b.chars().collect();
+        let mut prev: Vec<usize> = (0..=b.len()).collect();
+        for (i, ca) in a.chars().enumerate() {
+            let mut cur = vec![i + 1];
+            for (j, cb) in b.iter().enumerate() {
+                cur.push(
+                    (prev[j] + usize::from(ca != *cb))
+                        .min(prev[j + 1] + 1)
+                        .min(cur[j] + 1),
+                );
+            }
+            prev = cur;
+        }
+        prev[b.len()]
+    };
+    candidates
+        .into_iter()
+        .map(|c| (dist(word, c), c))
+        .filter(|(d, c)| *d <= (c.len() / 3).max(2))
+        .min_by_key(|(d, _)| *d)
+        .map(|(_, c)| c)
+}

@@ -1,0 +1,475 @@
+//! The scenario file format (TOML): plain serde types that mirror the file, with the source
+//! span of every value kept for error messages. [`super::build`] turns them into a
+//! [`hawser::Model`]; docs/scenario.md documents every key, and `hawser schema` prints the
+//! JSON Schema generated from these types.
+
+use schemars::JsonSchema;
+use serde::Deserialize;
+use toml::Spanned;
+
+/// A number (the same for every axis) or one number per axis.
+#[derive(Clone, Debug, Deserialize, JsonSchema, PartialEq)]
+#[serde(untagged)]
+pub enum ScalarOrVec3 {
+    /// One value for x, y and z.
+    Scalar(f64),
+    /// [x, y, z].
+    Vector([f64; 3]),
+}
+
+impl ScalarOrVec3 {
+    /// As a 3-array.
+    pub fn as_array(&self) -> [f64; 3] {
+        match self {
+            ScalarOrVec3::Scalar(s) => [*s; 3],
+            ScalarOrVec3::Vector(v) => *v,
+        }
+    }
+}
+
+/// `time_step`: `"auto"` or a step in seconds.
+#[derive(Clone, Debug, Deserialize, JsonSchema, PartialEq)]
+#[serde(untagged)]
+pub enum TimeStepSpec {
+    /// A fixed step [s].
+    Value(f64),
+    /// `"auto"`: the CFL limit times the safety factor.
+    Keyword(String),
+}
+
+/// A whole scenario file.
+#[derive(Debug, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct Scenario {
+    /// Duration, time step, outputs.
+    #[serde(default)]
+    pub simulation: Option<SimulationSpec>,
+    /// Gravity, water, air, seabed and current.
+    #[serde(default)]
+    pub environment: Option<EnvironmentSpec>,
+    /// Cable properties, referenced by name from line sections.
+    #[serde(default)]
+    pub line_types: Vec<LineTypeSpec>,
+    /// Anchors, fairleads, free point masses.
+    #[serde(default)]
+    pub points: Vec<PointSpec>,
+    /// Lines between points.
+    #[serde(default)]
+    pub lines: Vec<LineSpec>,
+}
+
+/// Integration scheme.
+#[derive(Clone, Copy, Debug, Deserialize, JsonSchema, PartialEq, Eq)]
+#[serde(rename_all = "kebab-case")]
+pub enum SchemeSpec {
+    /// Classical 4th-order Runge–Kutta.
+    Rk4,
+    /// Third-order SSP Runge–Kutta.
+    SspRk3,
+}
+
+/// Initial condition of a dynamic run.
+#[derive(Clone, Copy, Debug, Deserialize, JsonSchema, PartialEq, Eq)]
+#[serde(rename_all = "kebab-case")]
+pub enum InitialConditionSpec {
+    /// Start from static equilibrium.
+    Statics,
+    /// Start from the catenary seed, at rest.
+    AsDefined,
+}
+
+/// `[simulation]`.
+#[derive(Debug, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct SimulationSpec {
+    /// Simulated duration [s].
+    #[schemars(with = "f64")]
+    pub duration: Spanned<f64>,
+    /// `"auto"` (default) or a fixed step [s].
+    #[serde(default)]
+    #[schemars(with = "Option<TimeStepSpec>")]
+    pub time_step: Option<Spanned<TimeStepSpec>>,
+    /// Fraction of the stability limit used by `time_step = "auto"` [-], default 0.8.
+    #[serde(default)]
+    #[schemars(with = "Option<f64>")]
+    pub safety_factor: Option<Spanned<f64>>,
+    /// `"rk4"` (default) or `"ssp-rk3"`.
+    #[serde(default)]
+    pub scheme: Option<SchemeSpec>,
+    /// Interval between time-series samples [s], default 0.1.
+    #[serde(default)]
+    #[schemars(with = "Option<f64>")]
+    pub output_interval: Option<Spanned<f64>>,
+    /// Interval between line shape snapshots [s]; none by default.
+    #[serde(default)]
+    #[schemars(with = "Option<f64>")]
+    pub snapshot_interval: Option<Spanned<f64>>,
+    /// `"statics"` (default) or `"as-defined"`.
+    #[serde(default)]
+    pub initial_condition: Option<InitialConditionSpec>,
+    /// Extra channels, e.g. `"L1.node10.tension"`, `"buoy.z"`.
+    #[serde(default)]
+    #[schemars(with = "Vec<String>")]
+    pub channels: Vec<Spanned<String>>,
+}
+
+/// `[environment]`.
+#[derive(Debug, Deserialize, JsonSchema, Default)]
+#[serde(deny_unknown_fields)]
+pub struct EnvironmentSpec {
+    /// Gravitational acceleration [m/s²], default 9.80665.
+    #[serde(default)]
+    #[schemars(with = "Option<f64>")]
+    pub gravity: Option<Spanned<f64>>,
+    /// Water density [kg/m³], default 1025.
+    #[serde(default)]
+    #[schemars(with = "Option<f64>")]
+    pub water_density: Option<Spanned<f64>>,
+    /// Air density [kg/m³], default 1.225.
+    #[serde(default)]
+    #[schemars(with = "Option<f64>")]
+    pub air_density: Option<Spanned<f64>>,
+    /// Water depth [m]: flat seabed at z = −depth. Omit for deep water without a seabed.
+    #[serde(default)]
+    #[schemars(with = "Option<f64>")]
+    pub depth: Option<Spanned<f64>>,
+    /// Seabed contact.
+    #[serde(default)]
+    pub seabed: Option<SeabedSpec>,
+    /// Current.
+    #[serde(default)]
+    pub current: Option<CurrentSpec>,
+}
+
+/// `[environment.seabed]`.
+#[derive(Debug, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct SeabedSpec {
+    /// Contact stiffness per unit area [Pa/m], default 3e6.
+    #[serde(default)]
+    #[schemars(with = "Option<f64>")]
+    pub stiffness: Option<Spanned<f64>>,
+    /// Damping ratio of the vertical contact [-], default 1 (critical).
+    #[serde(default)]
+    #[schemars(with = "Option<f64>")]
+    pub damping_ratio: Option<Spanned<f64>>,
+    /// Dynamic friction coefficient [-], default 0.
+    #[serde(default)]
+    #[schemars(with = "Option<f64>")]
+    pub friction_coefficient: Option<Spanned<f64>>,
+    /// Sliding speed over which friction builds up [m/s], default 0.01.
+    #[serde(default)]
+    #[schemars(with = "Option<f64>")]
+    pub friction_velocity: Option<Spanned<f64>>,
+}
+
+/// Kind of current.
+#[derive(Clone, Copy, Debug, Deserialize, JsonSchema, PartialEq, Eq)]
+#[serde(rename_all = "kebab-case")]
+pub enum CurrentKind {
+    /// The same velocity at every depth.
+    Uniform,
+    /// A table of velocity against height z.
+    Profile,
+}
+
+/// `[environment.current]`.
+#[derive(Debug, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct CurrentSpec {
+    /// `"uniform"` or `"profile"`.
+    #[serde(rename = "type")]
+    #[schemars(with = "CurrentKind")]
+    pub kind: Spanned<CurrentKind>,
+    /// Uniform current velocity [m/s].
+    #[serde(default)]
+    #[schemars(with = "Option<[f64; 3]>")]
+    pub velocity: Option<Spanned<[f64; 3]>>,
+    /// Profile rows `[z, ux, uy, uz]` [m, m/s], z increasing (negative below the surface).
+    #[serde(default)]
+    #[schemars(with = "Option<Vec<[f64; 4]>>")]
+    pub profile: Option<Spanned<Vec<[f64; 4]>>>,
+}
+
+/// Fourier coefficients of a drag loading function.
+#[derive(Debug, Deserialize, JsonSchema, Default, Clone)]
+#[serde(deny_unknown_fields)]
+pub struct FourierSpec {
+    /// Cosine coefficients a_0, a_1, ... [-].
+    #[serde(default)]
+    pub cos: Vec<f64>,
+    /// Sine coefficients b_0, b_1, ... [-].
+    #[serde(default)]
+    pub sin: Vec<f64>,
+}
+
+/// `[line_types.loading_functions]`.
+#[derive(Debug, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct LoadingFunctionsSpec {
+    /// Normal loading function C_n(φ).
+    pub normal: FourierSpec,
+    /// Tangential loading function C_t(φ).
+    pub tangential: FourierSpec,
+}
+
+/// `[[line_types]]`.
+#[derive(Debug, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct LineTypeSpec {
+    /// Name, referenced by line sections.
+    #[schemars(with = "String")]
+    pub name: Spanned<String>,
+    /// Nominal (hydrodynamic) diameter [m].
+    #[schemars(with = "f64")]
+    pub diameter: Spanned<f64>,
+    /// Mass per unit unstretched length [kg/m].
+    #[schemars(with = "f64")]
+    pub mass_per_length: Spanned<f64>,
+    /// Axial stiffness EA [N] (or give `tension_strain`).
+    #[serde(default)]
+    #[schemars(with = "Option<f64>")]
+    pub axial_stiffness: Option<Spanned<f64>>,
+    /// Tension–strain table rows `[strain, tension]` [-, N], from `[0, 0]`.
+    #[serde(default)]
+    #[schemars(with = "Option<Vec<[f64; 2]>>")]
+    pub tension_strain: Option<Spanned<Vec<[f64; 2]>>>,
+    /// Axial damping coefficient [N·s], default 0.
+    #[serde(default)]
+    #[schemars(with = "Option<f64>")]
+    pub axial_damping: Option<Spanned<f64>>,
+    /// Axial damping as a fraction of critical damping of one element's axial mode [-].
+    #[serde(default)]
+    #[schemars(with = "Option<f64>")]
+    pub axial_damping_ratio: Option<Spanned<f64>>,
+    /// Normal drag coefficient C_dn [-] on the area d per length.
+    #[serde(default)]
+    #[schemars(with = "Option<f64>")]
+    pub normal_drag: Option<Spanned<f64>>,
+    /// Tangential drag coefficient C_dt [-] on the area d per length.
+    #[serde(default)]
+    #[schemars(with = "Option<f64>")]
+    pub tangential_drag: Option<Spanned<f64>>,
+    /// Drag loading functions instead of `normal_drag`/`tangential_drag`.
+    #[serde(default)]
+    pub loading_functions: Option<LoadingFunctionsSpec>,
+    /// Normal added-mass coefficient C_an [-], default 1.
+    #[serde(default)]
+    #[schemars(with = "Option<f64>")]
+    pub normal_added_mass: Option<Spanned<f64>>,
+    /// Tangential added-mass coefficient C_at [-], default 0.
+    #[serde(default)]
+    #[schemars(with = "Option<f64>")]
+    pub tangential_added_mass: Option<Spanned<f64>>,
+    /// Whether the line carries compression, default false.
+    #[serde(default)]
+    pub compression: Option<bool>,
+    /// Bending stiffness EI [N·m²], default 0 (used by formulations with bending).
+    #[serde(default)]
+    #[schemars(with = "Option<f64>")]
+    pub bending_stiffness: Option<Spanned<f64>>,
+    /// Bending damping [N·m²·s], default 0.
+    #[serde(default)]
+    #[schemars(with = "Option<f64>")]
+    pub bending_damping: Option<Spanned<f64>>,
+}
+
+/// Kind of point.
+#[derive(Clone, Copy, Debug, Deserialize, JsonSchema, PartialEq, Eq)]
+#[serde(rename_all = "kebab-case")]
+pub enum PointKindSpec {
+    /// Fixed in space (anchor).
+    Fixed,
+    /// Free point mass, buoy, clump weight or joint.
+    Free,
+    /// Prescribed motion (fairlead).
+    Prescribed,
+}
+
+/// `[[points]]`.
+#[derive(Debug, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct PointSpec {
+    /// Name, referenced by lines and channels.
+    #[schemars(with = "String")]
+    pub name: Spanned<String>,
+    /// `"fixed"`, `"free"` or `"prescribed"`.
+    #[serde(rename = "type")]
+    #[schemars(with = "PointKindSpec")]
+    pub kind: Spanned<PointKindSpec>,
+    /// Position [m] (initial position for free points; reference position for motions).
+    #[serde(default)]
+    #[schemars(with = "Option<[f64; 3]>")]
+    pub position: Option<Spanned<[f64; 3]>>,
+    /// Mass [kg] (free points), default 0.
+    #[serde(default)]
+    #[schemars(with = "Option<f64>")]
+    pub mass: Option<Spanned<f64>>,
+    /// Displaced volume [m³] (free points), default 0.
+    #[serde(default)]
+    #[schemars(with = "Option<f64>")]
+    pub volume: Option<Spanned<f64>>,
+    /// Drag coefficient times area C_d·A [m²] (free points), default 0.
+    #[serde(default)]
+    #[schemars(with = "Option<f64>")]
+    pub drag_area: Option<Spanned<f64>>,
+    /// Added-mass coefficient on the displaced volume [-] (free points), default 0.
+    #[serde(default)]
+    #[schemars(with = "Option<f64>")]
+    pub added_mass_coefficient: Option<Spanned<f64>>,
+    /// Constant external force [N] (free points), default 0.
+    #[serde(default)]
+    #[schemars(with = "Option<[f64; 3]>")]
+    pub force: Option<Spanned<[f64; 3]>>,
+    /// Prescribed motion (prescribed points).
+    #[serde(default)]
+    pub motion: Option<MotionSpec>,
+}
+
+/// Kind of prescribed motion.
+#[derive(Clone, Copy, Debug, Deserialize, JsonSchema, PartialEq, Eq)]
+#[serde(rename_all = "kebab-case")]
+pub enum MotionKind {
+    /// Stays at `position`.
+    Fixed,
+    /// `position + velocity·t`.
+    ConstantVelocity,
+    /// Sinusoid per axis about `position`.
+    Sinusoid,
+    /// Circular orbit about `position` in a coordinate plane.
+    CircularOrbit,
+    /// Piecewise-linear positions from a table or a CSV file.
+    TimeSeries,
+}
+
+/// Coordinate plane of a circular orbit.
+#[derive(Clone, Copy, Debug, Deserialize, JsonSchema, PartialEq, Eq)]
+#[serde(rename_all = "lowercase")]
+pub enum PlaneSpec {
+    /// x–y (horizontal).
+    Xy,
+    /// x–z (vertical, along x).
+    Xz,
+    /// y–z (vertical, along y).
+    Yz,
+}
+
+/// `[points.motion]`.
+#[derive(Debug, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct MotionSpec {
+    /// Kind of motion.
+    #[serde(rename = "type")]
+    #[schemars(with = "MotionKind")]
+    pub kind: Spanned<MotionKind>,
+    /// Velocity [m/s] (`constant-velocity`).
+    #[serde(default)]
+    #[schemars(with = "Option<[f64; 3]>")]
+    pub velocity: Option<Spanned<[f64; 3]>>,
+    /// Amplitude per axis [m] (`sinusoid`).
+    #[serde(default)]
+    #[schemars(with = "Option<ScalarOrVec3>")]
+    pub amplitude: Option<Spanned<ScalarOrVec3>>,
+    /// Period [s], one or per axis (`sinusoid`; or give `frequency`).
+    #[serde(default)]
+    #[schemars(with = "Option<ScalarOrVec3>")]
+    pub period: Option<Spanned<ScalarOrVec3>>,
+    /// Frequency [Hz], one or per axis (`sinusoid`, `circular-orbit`).
+    #[serde(default)]
+    #[schemars(with = "Option<ScalarOrVec3>")]
+    pub frequency: Option<Spanned<ScalarOrVec3>>,
+    /// Phase [deg], one or per axis (`sinusoid`, `circular-orbit`), default 0.
+    #[serde(default)]
+    #[schemars(with = "Option<ScalarOrVec3>")]
+    pub phase: Option<Spanned<ScalarOrVec3>>,
+    /// Orbit radius [m] (`circular-orbit`).
+    #[serde(default)]
+    #[schemars(with = "Option<f64>")]
+    pub radius: Option<Spanned<f64>>,
+    /// Orbit plane, default `"xz"` (`circular-orbit`).
+    #[serde(default)]
+    pub plane: Option<PlaneSpec>,
+    /// Rows `[t, x, y, z]` [s, m] (`time-series`), or give `file`.
+    #[serde(default)]
+    #[schemars(with = "Option<Vec<[f64; 4]>>")]
+    pub table: Option<Spanned<Vec<[f64; 4]>>>,
+    /// CSV file with columns t, x, y, z [s, m], relative to the scenario file (`time-series`).
+    #[serde(default)]
+    #[schemars(with = "Option<String>")]
+    pub file: Option<Spanned<String>>,
+}
+
+/// Line formulation.
+#[derive(Clone, Copy, Debug, Deserialize, JsonSchema, PartialEq, Eq)]
+#[serde(rename_all = "lowercase")]
+pub enum FormulationSpec {
+    /// Position-vector finite elements.
+    Fe,
+    /// Discontinuous Galerkin (not yet available).
+    Dg,
+    /// Cubic Hermite elements (not yet available).
+    Hermite,
+}
+
+/// Mass matrix of `fe` lines.
+#[derive(Clone, Copy, Debug, Deserialize, JsonSchema, PartialEq, Eq)]
+#[serde(rename_all = "lowercase")]
+pub enum MassMatrixSpec {
+    /// Consistent (default).
+    Consistent,
+    /// Lumped.
+    Lumped,
+}
+
+/// `[[lines.sections]]`.
+#[derive(Debug, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct SectionSpec {
+    /// Line type name.
+    #[serde(rename = "type")]
+    #[schemars(with = "String")]
+    pub line_type: Spanned<String>,
+    /// Unstretched length [m].
+    #[schemars(with = "f64")]
+    pub length: Spanned<f64>,
+    /// Number of elements.
+    #[schemars(with = "i64")]
+    pub elements: Spanned<i64>,
+}
+
+/// `[[lines]]`.
+#[derive(Debug, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct LineSpec {
+    /// Name, used for channels and results.
+    #[schemars(with = "String")]
+    pub name: Spanned<String>,
+    /// Point at end A (arc length 0).
+    #[schemars(with = "String")]
+    pub end_a: Spanned<String>,
+    /// Point at end B.
+    #[schemars(with = "String")]
+    pub end_b: Spanned<String>,
+    /// `"fe"` (default), `"dg"` or `"hermite"`.
+    #[serde(default)]
+    #[schemars(with = "Option<FormulationSpec>")]
+    pub formulation: Option<Spanned<FormulationSpec>>,
+    /// `"consistent"` (default) or `"lumped"` (`fe`).
+    #[serde(default)]
+    pub mass_matrix: Option<MassMatrixSpec>,
+    /// Line type of a single-section line (or give `sections`).
+    #[serde(default, rename = "type")]
+    #[schemars(with = "Option<String>")]
+    pub line_type: Option<Spanned<String>>,
+    /// Unstretched length [m] of a single-section line.
+    #[serde(default)]
+    #[schemars(with = "Option<f64>")]
+    pub length: Option<Spanned<f64>>,
+    /// Elements of a single-section line.
+    #[serde(default)]
+    #[schemars(with = "Option<i64>")]
+    pub elements: Option<Spanned<i64>>,
+    /// Sections from end A to end B.
+    #[serde(default)]
+    pub sections: Vec<SectionSpec>,
+}
