@@ -17,7 +17,7 @@ use crate::linalg::LineBlocks;
 use crate::math::{Mat3, Real, Vec3};
 use crate::model::{LineType, MassMatrix};
 use crate::physics::environment::Environment;
-use crate::physics::hydrodynamics::{added_mass_matrix, drag_force, fluid_inertia_force};
+use crate::physics::hydrodynamics::{drag_force, fluid_inertia_force};
 use crate::physics::material::AxialLaw;
 
 /// Gauss points on [0, 1] for two-point quadrature (weight ½ each).
@@ -34,6 +34,8 @@ pub struct FeSection {
     pub area: Real,
     /// Axial law with the damping coefficient resolved for this element length.
     pub law: AxialLaw,
+    /// 1 / L0 [1/m].
+    pub inverse_length: Real,
 }
 
 /// An `fe` line: element lengths and section properties, nodes 0..=N.
@@ -66,6 +68,7 @@ impl FeLine {
                 element_length: l0,
                 area: t.area(),
                 law,
+                inverse_length: 1.0 / l0,
             });
             element_section.extend(std::iter::repeat_n(k, *n));
         }
@@ -160,9 +163,9 @@ pub fn line_forces(
         let (va, vb) = (v[e], v[e + 1]);
         let delta = rb - ra;
         let length = delta.norm();
-        let t = delta / length;
-        let strain = length / l0 - 1.0;
-        let strain_rate = t.dot(&(vb - va)) / l0;
+        let t = delta * (1.0 / length);
+        let strain = length * sec.inverse_length - 1.0;
+        let strain_rate = t.dot(&(vb - va)) * sec.inverse_length;
         let tension = sec.law.tension(strain, strain_rate);
         elements.tension[e] = tension;
         elements.strain[e] = strain;
@@ -178,14 +181,16 @@ pub fn line_forces(
         forces[e].z += buoy * sub_a - weight;
         forces[e + 1].z += buoy * sub_b - weight;
 
-        // Drag, fluid inertia and added mass at two Gauss points (eqs. 16–23).
+        // Drag and fluid inertia at two Gauss points (eqs. 16, 19–23).
+        let root_stretch = stretch.max(0.0).sqrt();
+        let w = 0.5 * l0;
         for &xi in &GAUSS {
             let (na, nb) = (1.0 - xi, xi);
             let rg = ra * na + rb * nb;
             let vg = va * na + vb * nb;
             let rho = env.fluid_density(rg.z);
             let uf = env.fluid_velocity(&rg, time) * options.current_factor;
-            let mut f = drag_force(&lt.drag, rho, lt.diameter, stretch, &t, &(uf - vg));
+            let mut f = drag_force(&lt.drag, rho, lt.diameter, root_stretch, &t, &(uf - vg));
             let af = env.fluid_acceleration(&rg, time);
             if af != Vec3::zeros() {
                 f += fluid_inertia_force(
@@ -197,27 +202,53 @@ pub fn line_forces(
                     &af,
                 );
             }
-            let w = 0.5 * l0;
             forces[e] += f * (w * na);
             forces[e + 1] += f * (w * nb);
-            if let Some(b) = blocks.as_deref_mut() {
-                let ma = added_mass_matrix(
-                    rho,
-                    sec.area,
-                    lt.normal_added_mass,
-                    lt.tangential_added_mass,
-                    &t,
-                );
-                let m = (ma + Mat3::identity() * lt.mass_per_length) * w;
+        }
+
+        // Structural and added mass (eqs. 12, 17–18): per unit length
+        // γ0 I + ρ A (C_an (I − t tᵀ) + C_at t tᵀ) = (γ0 + ρ A C_an) I + ρ A (C_at − C_an) t tᵀ,
+        // integrated with the linear shape functions; exact with one evaluation unless the
+        // element crosses the surface, where each Gauss point takes its own density.
+        if let Some(b) = blocks.as_deref_mut() {
+            let element_mass = |rho: Real, length: Real| -> Mat3 {
+                let alpha = length * (lt.mass_per_length + rho * sec.area * lt.normal_added_mass);
+                let beta =
+                    length * rho * sec.area * (lt.tangential_added_mass - lt.normal_added_mass);
+                let mut m = t * t.transpose() * beta;
+                m[(0, 0)] += alpha;
+                m[(1, 1)] += alpha;
+                m[(2, 2)] += alpha;
+                m
+            };
+            if (ra.z < 0.0) == (rb.z < 0.0) {
+                let m = element_mass(env.fluid_density(ra.z), l0);
                 if consistent {
-                    b.diag[e] += m * (na * na);
-                    b.diag[e + 1] += m * (nb * nb);
-                    let off = m * (na * nb);
-                    b.lower[e] += off;
-                    b.upper[e] += off;
+                    let third = m * (1.0 / 3.0);
+                    b.diag[e] += third;
+                    b.diag[e + 1] += third;
+                    let sixth = m * (1.0 / 6.0);
+                    b.lower[e] += sixth;
+                    b.upper[e] += sixth;
                 } else {
-                    b.diag[e] += m * na;
-                    b.diag[e + 1] += m * nb;
+                    let half = m * 0.5;
+                    b.diag[e] += half;
+                    b.diag[e + 1] += half;
+                }
+            } else {
+                for &xi in &GAUSS {
+                    let (na, nb) = (1.0 - xi, xi);
+                    let m = element_mass(env.fluid_density(ra.z * na + rb.z * nb), w);
+                    if consistent {
+                        b.diag[e] += m * (na * na);
+                        b.diag[e + 1] += m * (nb * nb);
+                        let off = m * (na * nb);
+                        b.lower[e] += off;
+                        b.upper[e] += off;
+                    } else {
+                        b.diag[e] += m * na;
+                        b.diag[e + 1] += m * nb;
+                    }
                 }
             }
         }

@@ -54,20 +54,21 @@ pub enum DragModel {
 
 /// Drag force per unit unstretched length [N/m] on a cable with unit tangent `t`.
 ///
-/// `relative_velocity` is v* = fluid velocity − cable velocity [m/s]; `stretch` is 1 + ε.
+/// `relative_velocity` is v* = fluid velocity − cable velocity [m/s]; `root_stretch` is
+/// √(1 + ε) (the volume-preserving factor of DG paper eq. 17).
 #[inline]
 pub fn drag_force(
     model: &DragModel,
     density: Real,
     diameter: Real,
-    stretch: Real,
+    root_stretch: Real,
     tangent: &Vec3,
     relative_velocity: &Vec3,
 ) -> Vec3 {
     let vt_scalar = relative_velocity.dot(tangent);
     let vt = tangent * vt_scalar;
     let vn = relative_velocity - vt;
-    let q = 0.5 * density * diameter * stretch.max(0.0).sqrt();
+    let q = 0.5 * density * diameter * root_stretch;
     match model {
         DragModel::Morison { normal, tangential } => {
             q * (normal * vn.norm() * vn + tangential * vt_scalar.abs() * vt)
@@ -152,8 +153,8 @@ mod tests {
         };
         let t = Vec3::new(0.6, 0.0, 0.8);
         let v = Vec3::new(0.3, -1.1, 0.7);
-        let a = drag_force(&lf, 1025.0, 0.04, 1.001, &t, &v);
-        let b = drag_force(&mor, 1025.0, 0.04, 1.001, &t, &v);
+        let a = drag_force(&lf, 1025.0, 0.04, 1.001f64.sqrt(), &t, &v);
+        let b = drag_force(&mor, 1025.0, 0.04, 1.001f64.sqrt(), &t, &v);
         assert!((a - b).norm() < 1e-12 * b.norm(), "{a} vs {b}");
     }
 }
