@@ -136,6 +136,9 @@ pub fn solve(
     let scale = weight * length + ea * 1e-12;
     for _ in 0..200 {
         let (rx, rz, _) = residual(x, z, length, weight, ea, seabed, h, vb);
+        if std::env::var_os("HAWSER_DEBUG_CATENARY").is_some() {
+            eprintln!("catenary: H {h:.6e} V {vb:.6e} rx {rx:.3e} rz {rz:.3e}");
+        }
         if rx.abs() < 1e-12 * length.max(x) && rz.abs() < 1e-12 * length.max(x) {
             let va = vb - weight * length;
             let grounded = if seabed && va < 0.0 {
@@ -167,16 +170,29 @@ pub fn solve(
         if det == 0.0 || !det.is_finite() {
             return None;
         }
-        let mut step_h = -(d * rx - b * rz) / det;
+        let step_h = -(d * rx - b * rz) / det;
         let step_v = -(-c * rx + a * rz) / det;
-        // Keep H positive.
-        if h + step_h <= 0.0 {
-            step_h = -0.5 * h;
+        // Damped step: keep H > 0 (and V_B > 0 with a seabed), and backtrack until the
+        // residual falls; the seabed branch is not smooth at V_A = 0.
+        let norm0 = rx.hypot(rz);
+        let mut alpha = 1.0;
+        let mut accepted = false;
+        for _ in 0..40 {
+            let hn = h + alpha * step_h;
+            let vn = vb + alpha * step_v;
+            if hn > 0.0 && (!seabed || vn > 0.0) {
+                let (rxn, rzn, _) = residual(x, z, length, weight, ea, seabed, hn, vn);
+                if rxn.hypot(rzn) < norm0 {
+                    h = hn;
+                    vb = vn;
+                    accepted = true;
+                    break;
+                }
+            }
+            alpha *= 0.5;
         }
-        h += step_h;
-        vb += step_v;
-        if seabed && vb < 0.0 {
-            vb = 0.0;
+        if !accepted {
+            return None;
         }
         if !(h.is_finite() && vb.is_finite()) {
             return None;
@@ -206,5 +222,16 @@ mod tests {
             let suspended = l - c.grounded_length;
             assert!((c.vertical_b - c.vertical_a - 700.0 * suspended).abs() < 1e-6 * c.vertical_b);
         }
+    }
+}
+#[cfg(test)]
+mod regression {
+    /// A long grounded chain whose first undamped Newton step overshot to V_B = 0.
+    #[test]
+    fn grounded_mooring_with_long_touchdown_converges() {
+        let c = super::solve(600.0, 135.0, 680.0, 1088.0, 5.8e8, true).expect("converges");
+        let (x, z) = c.position(680.0);
+        assert!((x - 600.0).abs() < 1e-6 && (z - 135.0).abs() < 1e-6);
+        assert!(c.grounded_length > 0.0);
     }
 }

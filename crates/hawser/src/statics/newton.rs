@@ -349,7 +349,12 @@ fn newton_step(
     delta.iter().all(|d| d.is_finite())
 }
 
-/// Newton iterations at a fixed load factor. Returns (converged, iterations, residual).
+/// Newton iterations at a fixed load factor, with a Levenberg–Marquardt shift: the Jacobian's
+/// diagonal blocks get −μI (a positive stiffness μ [N/m] at every node), μ grows tenfold when
+/// a step fails to lower the residual and shrinks tenfold when one succeeds. This handles the
+/// zero transverse stiffness of unloaded cables (straight seeds, slack spans). A short
+/// backtracking search and a cap on the largest nodal move guard each step.
+/// Returns (converged, iterations, residual).
 fn newton(
     system: &System,
     y: &mut [Real],
@@ -369,58 +374,77 @@ fn newton(
         .map(|l| l.fe.arc_length(l.fe.elements()))
         .fold(0.0, Real::max)
         * 0.2;
+    // Convergence is judged on the largest nodal imbalance; steps are accepted on the 2-norm,
+    // which a shifted Newton step is guaranteed to lower for a positive-definite stiffness
+    // (d‖R‖²/dα = −2 Rᵀ K (K + μI)⁻¹ R < 0), unlike the max-norm.
+    let two_norm = |r: &[Real]| r.iter().map(|x| x * x).sum::<Real>().sqrt();
     let (mut norm, _) = residual(system, y, current_factor, ws, &mut r);
+    let mut merit = two_norm(&r);
+    let mut mu: Real = 0.0;
+    let debug = std::env::var_os("HAWSER_DEBUG_NEWTON").is_some();
     for it in 0..max_iter {
         if norm <= tol {
             return (true, it, norm);
         }
         jacobian(system, y, current_factor, ws);
-        let diag_scale = ws
+        let scale = ws
             .blocks
             .iter()
             .flat_map(|b| b.diag.iter())
             .map(|m| m.abs().max())
-            .fold(0.0, Real::max);
-        let mut shift = 0.0;
-        let mut ok = false;
-        for _ in 0..8 {
-            if newton_step(system, &r, shift, ws, &mut delta) {
-                ok = true;
-                break;
-            }
-            jacobian(system, y, current_factor, ws);
-            shift = if shift == 0.0 {
-                1e-8 * diag_scale.max(1e-12)
-            } else {
-                shift * 100.0
-            };
-        }
-        if !ok {
-            return (false, it, norm);
-        }
-        // Limit the largest nodal move, then backtrack on the residual.
-        let big = (0..len / 3)
-            .map(|i| get3(&delta, i).norm())
-            .fold(0.0, Real::max);
-        let mut alpha = if big > max_step && max_step > 0.0 {
-            max_step / big
-        } else {
-            1.0
-        };
+            .fold(0.0, Real::max)
+            .max(1e-12);
+        let mut applied = 0.0;
         let mut accepted = false;
-        for _ in 0..30 {
-            for i in 0..len {
-                trial[i] = y[i] + alpha * delta[i];
+        for _ in 0..16 {
+            let solved = newton_step(system, &r, mu - applied, ws, &mut delta);
+            applied = mu;
+            if !solved {
+                if debug {
+                    eprintln!("newton {it}: singular with mu {mu:.2e}");
+                }
+                mu = (mu * 10.0).max(1e-9 * scale);
+                continue;
             }
-            let (tn, _) = residual(system, &trial, current_factor, ws, &mut trial_r);
-            if tn.is_finite() && (tn < (1.0 - 1e-4 * alpha) * norm || tn <= tol) {
-                y.copy_from_slice(&trial);
-                r.copy_from_slice(&trial_r);
-                norm = tn;
-                accepted = true;
+            let big = (0..len / 3)
+                .map(|i| get3(&delta, i).norm())
+                .fold(0.0, Real::max);
+            let mut alpha = if big > max_step && max_step > 0.0 {
+                max_step / big
+            } else {
+                1.0
+            };
+            for _ in 0..4 {
+                for i in 0..len {
+                    trial[i] = y[i] + alpha * delta[i];
+                }
+                let (tn, _) = residual(system, &trial, current_factor, ws, &mut trial_r);
+                let tm = two_norm(&trial_r);
+                if tn.is_finite() && tm < merit {
+                    y.copy_from_slice(&trial);
+                    r.copy_from_slice(&trial_r);
+                    if debug {
+                        eprintln!(
+                            "newton {it}: |R| {norm:.3e} -> {tn:.3e} (tol {tol:.1e}), mu {mu:.2e}, alpha {alpha:.2e}"
+                        );
+                    }
+                    norm = tn;
+                    merit = tm;
+                    accepted = true;
+                    break;
+                }
+                alpha *= 0.5;
+            }
+            if accepted {
+                mu = if mu > 1e-9 * scale { mu * 0.1 } else { 0.0 };
                 break;
             }
-            alpha *= 0.5;
+            if debug {
+                eprintln!(
+                    "newton {it}: rejected step with mu {mu:.2e} (|R| {norm:.3e}, largest move {big:.3e} m)"
+                );
+            }
+            mu = (mu * 10.0).max(1e-6 * scale);
         }
         if !accepted {
             return (norm <= tol, it + 1, norm);
