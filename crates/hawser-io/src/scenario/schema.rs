@@ -382,6 +382,11 @@ pub struct MotionSpec {
     #[serde(default)]
     #[schemars(with = "Option<ScalarOrVec3>")]
     pub phase: Option<Spanned<ScalarOrVec3>>,
+    /// Build-up time [s] over which the amplitude ramps smoothly from zero
+    /// (`sinusoid`, `circular-orbit`), default 0 (none).
+    #[serde(default)]
+    #[schemars(with = "Option<f64>")]
+    pub ramp_time: Option<Spanned<f64>>,
     /// Orbit radius [m] (`circular-orbit`).
     #[serde(default)]
     #[schemars(with = "Option<f64>")]

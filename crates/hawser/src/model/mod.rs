@@ -7,7 +7,7 @@ mod motion;
 mod point;
 
 pub use line::{Formulation, Line, LineEnd, LineType, MassMatrix, Section};
-pub use motion::Motion;
+pub use motion::{Motion, ramp};
 pub use point::{Point, PointKind};
 
 use crate::error::ModelError;

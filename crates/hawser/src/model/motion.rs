@@ -18,7 +18,8 @@ pub enum Motion {
         /// Velocity [m/s].
         velocity: Vec3,
     },
-    /// r_i(t) = centre_i + amplitude_i · sin(2π f_i t + phase_i) per axis.
+    /// r_i(t) = centre_i + R(t) · amplitude_i · (sin(2π f_i t + phase_i) − sin(phase_i)) per
+    /// axis, with R the build-up ramp (see [`ramp`]); the point starts at `centre`.
     Sinusoid {
         /// Mean position [m].
         centre: Vec3,
@@ -28,9 +29,13 @@ pub enum Motion {
         frequency: Vec3,
         /// Phase per axis [rad].
         phase: Vec3,
+        /// Build-up time [s] over which the amplitude ramps from 0 (0 for none).
+        ramp: Real,
     },
-    /// Circular orbit r(t) = centre + a (cos θ e1 + sin θ e2), θ = 2π f t + phase, in the
-    /// plane spanned by the orthonormal e1, e2 (the ROPOS fairlead: the x–z plane).
+    /// Circular orbit r(t) = centre + R(t) a (cos θ e1 + sin θ e2 − cos φ e1 − sin φ e2),
+    /// θ = 2π f t + φ, in the plane spanned by the orthonormal e1, e2 (the ROPOS fairlead: the
+    /// x–z plane); the point starts at `centre` and orbits the centre
+    /// `centre − a (cos φ e1 + sin φ e2)`; R is the build-up ramp.
     CircularOrbit {
         /// Centre [m].
         centre: Vec3,
@@ -44,6 +49,8 @@ pub enum Motion {
         e1: Vec3,
         /// Second in-plane unit vector.
         e2: Vec3,
+        /// Build-up time [s] (0 for none).
+        ramp: Real,
     },
     /// Piecewise-linear interpolation of positions at strictly increasing times, held at the
     /// end values outside the table.
@@ -68,16 +75,21 @@ impl Motion {
                 amplitude,
                 frequency,
                 phase,
+                ramp: tr,
             } => {
+                let (g, dg, ddg) = ramp(t, *tr);
                 let mut r = *centre;
                 let mut v = Vec3::zeros();
                 let mut a = Vec3::zeros();
                 for i in 0..3 {
                     let w = TAU * frequency[i];
                     let th = w * t + phase[i];
-                    r[i] += amplitude[i] * th.sin();
-                    v[i] = amplitude[i] * w * th.cos();
-                    a[i] = -amplitude[i] * w * w * th.sin();
+                    let s = amplitude[i] * (th.sin() - phase[i].sin());
+                    let ds = amplitude[i] * w * th.cos();
+                    let dds = -amplitude[i] * w * w * th.sin();
+                    r[i] += g * s;
+                    v[i] = dg * s + g * ds;
+                    a[i] = ddg * s + 2.0 * dg * ds + g * dds;
                 }
                 (r, v, a)
             }
@@ -88,14 +100,20 @@ impl Motion {
                 phase,
                 e1,
                 e2,
+                ramp: tr,
             } => {
+                let (g, dg, ddg) = ramp(t, *tr);
                 let w = TAU * frequency;
                 let th = w * t + phase;
-                let (s, c) = th.sin_cos();
+                let (sn, cs) = th.sin_cos();
+                let (s0, c0) = phase.sin_cos();
+                let p = (e1 * (cs - c0) + e2 * (sn - s0)) * *radius;
+                let dp = (-e1 * sn + e2 * cs) * (radius * w);
+                let ddp = -(e1 * cs + e2 * sn) * (radius * w * w);
                 (
-                    centre + (e1 * c + e2 * s) * *radius,
-                    (-e1 * s + e2 * c) * (radius * w),
-                    -(e1 * c + e2 * s) * (radius * w * w),
+                    centre + p * g,
+                    p * dg + dp * g,
+                    p * ddg + dp * (2.0 * dg) + ddp * g,
                 )
             }
             Motion::TimeSeries { times, positions } => {
@@ -141,6 +159,21 @@ impl Motion {
     }
 }
 
+/// Build-up ramp R(t) = ½(1 − cos(π t / T)) for t < T, 1 after, with its first and second
+/// derivatives; continuous in position, velocity and acceleration at t = 0 (R'(0) = 0), so a
+/// motion starts from rest without the velocity jump of a bare sinusoid.
+pub fn ramp(t: Real, duration: Real) -> (Real, Real, Real) {
+    if duration <= 0.0 || t >= duration {
+        return (1.0, 0.0, 0.0);
+    }
+    if t <= 0.0 {
+        return (0.0, 0.0, 0.0);
+    }
+    let k = std::f64::consts::PI / duration;
+    let (s, c) = (k * t).sin_cos();
+    (0.5 * (1.0 - c), 0.5 * k * s, 0.5 * k * k * c)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -153,13 +186,34 @@ mod tests {
             phase: 0.3,
             e1: Vec3::x(),
             e2: Vec3::z(),
+            ramp: 2.0,
         };
         let h = 1e-6;
-        for t in [0.0, 1.3, 4.0] {
+        for t in [0.0, 0.7, 1.3, 4.0] {
             let (r0, v, a) = m.kinematics(t);
             let (r1, v1, _) = m.kinematics(t + h);
             assert!(((r1 - r0) / h - v).norm() < 1e-5);
             assert!(((v1 - v) / h - a).norm() < 1e-4);
+        }
+    }
+
+    #[test]
+    fn ramped_sinusoid_is_consistent_and_starts_at_rest() {
+        let m = Motion::Sinusoid {
+            centre: Vec3::zeros(),
+            amplitude: Vec3::new(0.0, 0.0, 0.1),
+            frequency: Vec3::new(0.0, 0.0, 1.27),
+            phase: Vec3::new(0.0, 0.0, 0.4),
+            ramp: 3.0,
+        };
+        let (r, v, a) = m.kinematics(0.0);
+        assert_eq!((r.norm(), v.norm(), a.norm()), (0.0, 0.0, 0.0));
+        let h = 1e-6;
+        for t in [0.5, 2.9, 3.5] {
+            let (r0, v0, a0) = m.kinematics(t);
+            let (r1, v1, _) = m.kinematics(t + h);
+            assert!(((r1 - r0) / h - v0).norm() < 1e-5, "velocity at {t}");
+            assert!(((v1 - v0) / h - a0).norm() < 1e-4, "acceleration at {t}");
         }
     }
 }
