@@ -58,6 +58,16 @@ impl<'a> Builder<'a> {
         self.errors.push(d);
     }
 
+    /// 1-based line of a byte offset, for "first defined on line N" hints.
+    fn line_of(&self, span: Range<usize>) -> usize {
+        let end = span.start.min(self.source.len());
+        self.source.as_bytes()[..end]
+            .iter()
+            .filter(|&&c| c == b'\n')
+            .count()
+            + 1
+    }
+
     /// Checks a number is finite and in range; returns it (or a harmless default on error).
     fn num(&mut self, v: &Spanned<f64>, key: &str, check: Check, hint: &str) -> f64 {
         let x = *v.get_ref();
@@ -178,49 +188,278 @@ pub fn build(file: &Path, source: &str) -> Result<LoadedScenario, ScenarioError>
 fn toml_error(file: &Path, source: &str, e: &toml::de::Error) -> Diagnostic {
     let message = e.message().trim().to_string();
     let quoted: Vec<&str> = message.split('`').skip(1).step_by(2).collect();
-    let mut d = Diagnostic::new(
-        file,
-        source,
-        e.span(),
-        quoted.first().copied().unwrap_or(""),
-        message.clone(),
-    );
+    let first = quoted.first().copied().unwrap_or("");
+    let span = e.span();
+    let at = span
+        .as_ref()
+        .map(|s| key_at(source, s.start))
+        .unwrap_or_default();
+    let path = path_string(&at.path);
+    let leaf = match at.path.last() {
+        Some(Step::Key(k)) => k.clone(),
+        _ => path.clone(),
+    };
+    let mut d = Diagnostic::new(file, source, span.clone(), path.clone(), message.clone());
     if message.starts_with("unknown field") {
-        let key = quoted.first().copied().unwrap_or("");
-        let hint = match closest(key, quoted.iter().skip(1).copied()) {
+        let known = quoted.get(1..).unwrap_or(&[]);
+        let hint = match closest(first, known.iter().copied()) {
             Some(c) => format!("did you mean `{c}`? docs/scenario.md lists every key"),
             None => "remove it; docs/scenario.md lists every key".to_string(),
         };
+        d.message = format!("unknown key `{first}`");
+        if let Some(v) = at.value.filter(|v| v.end <= source.len()) {
+            d = d.value(source[v].lines().next().unwrap_or(""));
+        }
+        d = d.hint(hint).expected(if known.is_empty() {
+            "no keys in this table".to_string()
+        } else {
+            format!(
+                "one of {}",
+                known
+                    .iter()
+                    .map(|q| format!("`{q}`"))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            )
+        });
+    } else if message.starts_with("missing field") {
+        let mut field_path = at.path.clone();
+        field_path.push(Step::Key(first.to_string()));
+        d.key = path_string(&field_path);
+        d.message = format!("missing key `{first}`");
+        d = d
+            .value("")
+            .expected(field_doc(&field_path).unwrap_or_default())
+            .hint(format!("add `{first} = ...` to this table"));
+    } else if message.starts_with("invalid type") || message.contains("untagged enum") {
+        let wanted = if message.contains("untagged enum ScalarOrVec3") {
+            "a number or [x, y, z]"
+        } else if message.contains("untagged enum TimeStepSpec") {
+            "\"auto\" or a number"
+        } else {
+            match message.rsplit("expected ").next().unwrap_or("") {
+                "f64" => "a number",
+                "i64" => "a whole number",
+                "bool" | "a boolean" => "true or false",
+                "a string" => "a quoted string",
+                other => other,
+            }
+        };
+        if message.contains("untagged enum") {
+            d.message = format!("invalid type, expected {wanted}");
+        } else if let Some((found, _)) = message.rsplit_once(", expected ") {
+            d.message = format!("{found}, expected {wanted}");
+        }
+        d = d.expected(match field_doc(&at.path) {
+            Some(doc) => format!("{wanted}: {doc}"),
+            None => wanted.to_string(),
+        });
+        let text = d.value.trim().trim_matches('"').to_string();
+        let hint = if message.starts_with("invalid type: string") && text.parse::<f64>().is_ok() {
+            format!("write the number without quotes: `{leaf} = {text}`")
+        } else if wanted == "a whole number" {
+            match text.parse::<f64>() {
+                Ok(x) => format!(
+                    "write a whole number without a decimal point, e.g. `{leaf} = {}`",
+                    x.round().max(1.0)
+                ),
+                Err(_) => "write a whole number, e.g. 10".to_string(),
+            }
+        } else {
+            "numbers are unquoted, names are quoted, vectors are [x, y, z]".to_string()
+        };
+        d = d.hint(hint);
+    } else if message.starts_with("unknown variant") {
+        let known = quoted.get(1..).unwrap_or(&[]);
+        let hint = match closest(first, known.iter().copied()) {
+            Some(c) => format!("did you mean `{c}`?"),
+            None => "use one of the expected values".into(),
+        };
+        d.message = format!("unknown value `{first}` for `{leaf}`");
         d = d.hint(hint).expected(format!(
             "one of {}",
-            quoted[1..]
+            known
                 .iter()
                 .map(|q| format!("`{q}`"))
                 .collect::<Vec<_>>()
                 .join(", ")
         ));
-    } else if message.starts_with("missing field") {
-        d = d.value("").hint(format!(
-            "add `{}` to this table; docs/scenario.md gives its unit",
-            quoted.first().copied().unwrap_or("")
-        ));
-    } else if message.starts_with("invalid type") {
-        d = d.hint(
-            "check the value's type: numbers are unquoted, names are quoted, vectors are [x, y, z]",
-        );
-    } else if message.starts_with("unknown variant") {
-        let key = quoted.first().copied().unwrap_or("");
-        let hint = match closest(key, quoted.iter().skip(1).copied()) {
-            Some(c) => format!("did you mean `{c}`?"),
-            None => "use one of the expected values".into(),
-        };
-        d = d.hint(hint);
     } else {
-        d = d.hint(
-            "this is not valid TOML or does not match the scenario format (docs/scenario.md)",
-        );
+        // TOML syntax: point at the key being written and say what is usually wrong.
+        let line_of = |offset: usize| source[..offset.min(source.len())].matches('\n').count() + 1;
+        let value_start = at.value.as_ref().map(|v| v.start);
+        let hint = if message.starts_with("duplicate key") {
+            match at
+                .key
+                .as_ref()
+                .filter(|k| Some(k.start) != span.as_ref().map(|s| s.start))
+            {
+                Some(k) => format!(
+                    "a key may appear once per table; `{leaf}` is already set on line {}",
+                    line_of(k.start)
+                ),
+                None => "a key may appear once per table; remove one of them".to_string(),
+            }
+        } else if message.starts_with("string values must be quoted")
+            && d.value
+                .starts_with(|c: char| c.is_ascii_digit() || c == '-' || c == '+')
+        {
+            let doc = field_doc(&at.path)
+                .map(|doc| format!(" ({doc})"))
+                .unwrap_or_default();
+            format!("write the number alone; units are implied{doc}")
+        } else if message.starts_with("string values must be quoted") {
+            "quote names and keywords, e.g. `type = \"chain\"`".to_string()
+        } else if let (Some(v), Some(s)) = (value_start, span.as_ref())
+            && line_of(v) < line_of(s.start)
+            && source[v..].starts_with(['[', '{'])
+        {
+            format!(
+                "`{path}` opens a bracket on line {} that is not closed there",
+                line_of(v)
+            )
+        } else {
+            "this is not valid TOML (https://toml.io); docs/scenario.md shows the format"
+                .to_string()
+        };
+        if !path.is_empty() {
+            if let Some(doc) = field_doc(&at.path) {
+                d = d.expected(doc);
+            }
+        }
+        d = d.hint(hint);
     }
     d
+}
+
+/// One step of a key path.
+#[derive(Clone, Debug)]
+enum Step {
+    Key(String),
+    Index(usize),
+}
+
+/// Renders a key path as `lines[0].end_b`.
+fn path_string(path: &[Step]) -> String {
+    let mut s = String::new();
+    for step in path {
+        match step {
+            Step::Key(k) => {
+                if !s.is_empty() {
+                    s.push('.');
+                }
+                s.push_str(k);
+            }
+            Step::Index(i) => s.push_str(&format!("[{i}]")),
+        }
+    }
+    s
+}
+
+/// The innermost key around a byte offset: its path and the spans of the key and its value.
+#[derive(Default)]
+struct KeyAt {
+    path: Vec<Step>,
+    key: Option<Range<usize>>,
+    value: Option<Range<usize>>,
+}
+
+/// Finds the innermost key or value at `offset` in a best-effort parse of `source`.
+fn key_at(source: &str, offset: usize) -> KeyAt {
+    let (doc, _) = toml::de::DeTable::parse_recoverable(source);
+    let mut at = KeyAt::default();
+    find_in_table(doc.get_ref(), offset, &mut at);
+    at
+}
+
+fn find_in_table(t: &toml::de::DeTable, offset: usize, at: &mut KeyAt) -> bool {
+    for (k, v) in t.iter() {
+        at.path.push(Step::Key(k.get_ref().to_string()));
+        if k.span().contains(&offset) || find_in_value(v, offset, at) {
+            at.key.get_or_insert(k.span());
+            at.value.get_or_insert(v.span());
+            return true;
+        }
+        at.path.pop();
+    }
+    false
+}
+
+fn find_in_value(v: &Spanned<toml::de::DeValue>, offset: usize, at: &mut KeyAt) -> bool {
+    let inner = match v.get_ref() {
+        toml::de::DeValue::Table(t) => find_in_table(t, offset, at),
+        toml::de::DeValue::Array(a) => a.iter().enumerate().any(|(i, item)| {
+            at.path.push(Step::Index(i));
+            let found = find_in_value(item, offset, at);
+            if !found {
+                at.path.pop();
+            }
+            found
+        }),
+        _ => false,
+    };
+    inner || v.span().contains(&offset)
+}
+
+/// The span of the key at `path` (e.g. `["environment", "seabed"]`), if written.
+fn key_span(source: &str, path: &[&str]) -> Option<Range<usize>> {
+    let (doc, _) = toml::de::DeTable::parse_recoverable(source);
+    let mut table = doc.get_ref();
+    for (i, name) in path.iter().enumerate() {
+        let (k, v) = table.iter().find(|(k, _)| k.get_ref() == name)?;
+        if i + 1 == path.len() {
+            return Some(k.span());
+        }
+        match v.get_ref() {
+            toml::de::DeValue::Table(t) => table = t,
+            _ => return None,
+        }
+    }
+    None
+}
+
+/// The documentation (with unit) of the key at `path`, from the JSON Schema of the format.
+fn field_doc(path: &[Step]) -> Option<String> {
+    let schema = serde_json::to_value(schemars::schema_for!(Scenario)).ok()?;
+    let defs = &schema["$defs"];
+    fn resolve<'a>(
+        defs: &'a serde_json::Value,
+        mut v: &'a serde_json::Value,
+    ) -> &'a serde_json::Value {
+        for _ in 0..8 {
+            if let Some(r) = v.get("$ref").and_then(|r| r.as_str()) {
+                v = &defs[r.trim_start_matches("#/$defs/")];
+            } else if let Some(any) = v.get("anyOf").and_then(|a| a.as_array()) {
+                match any
+                    .iter()
+                    .find(|x| x.get("type").and_then(|t| t.as_str()) != Some("null"))
+                {
+                    Some(x) => v = x,
+                    None => break,
+                }
+            } else {
+                break;
+            }
+        }
+        v
+    }
+    let mut node = &schema;
+    let mut doc = None;
+    for step in path {
+        node = resolve(defs, node);
+        node = match step {
+            Step::Key(k) => {
+                let p = node.get("properties")?.get(k)?;
+                doc = p.get("description").and_then(|d| d.as_str());
+                p
+            }
+            Step::Index(_) => node.get("items")?,
+        };
+    }
+    let doc = doc?.trim_end_matches('.');
+    let mut chars = doc.chars();
+    let first = chars.next()?;
+    Some(first.to_lowercase().chain(chars).collect())
 }
 
 fn build_environment(b: &mut Builder, spec: Option<&EnvironmentSpec>) -> Environment {
@@ -262,6 +501,7 @@ fn build_environment(b: &mut Builder, spec: Option<&EnvironmentSpec>) -> Environ
         current: Current::None,
     };
     if let Some(d) = &e.depth {
+        let errors = b.errors.len();
         env.depth = b.num(
             d,
             "environment.depth",
@@ -271,6 +511,9 @@ fn build_environment(b: &mut Builder, spec: Option<&EnvironmentSpec>) -> Environ
             },
             "depth is positive; the seabed lies at z = −depth",
         );
+        if b.errors.len() > errors {
+            env.depth = f64::INFINITY;
+        }
     }
     if let Some(s) = &e.seabed {
         let d = Seabed::default();
@@ -317,13 +560,15 @@ fn build_environment(b: &mut Builder, spec: Option<&EnvironmentSpec>) -> Environ
             ),
         };
         if e.depth.is_none() {
+            let span = key_span(b.source, &["environment", "seabed"]);
             let d = b
                 .diag(
-                    None,
-                    "environment.seabed",
+                    span,
+                    "environment.depth",
                     "a seabed is given but no `environment.depth`",
                 )
-                .hint("set `depth` in [environment]");
+                .expected("m, > 0 (the seabed is at z = −depth)")
+                .hint("set `depth` in [environment], or remove the seabed for deep water");
             b.push(d);
         }
     }
@@ -410,14 +655,17 @@ fn build_line_types(
     for (i, t) in specs.iter().enumerate() {
         let k = |key: &str| format!("line_types[{i}].{key}");
         let name = t.name.get_ref().clone();
-        if index.insert(name.clone(), i).is_some() {
+        if let Some(first) = index.insert(name.clone(), i) {
+            let line = b.line_of(specs[first].name.span());
             let d = b
                 .diag(
                     Some(t.name.span()),
                     &k("name"),
                     format!("line type `{name}` is defined twice"),
                 )
-                .hint("give each line type its own name");
+                .hint(format!(
+                    "`{name}` is first defined on line {line}; give each line type its own name"
+                ));
             b.push(d);
         }
         let diameter = b.num(
@@ -450,16 +698,37 @@ fn build_line_types(
             )),
             (None, Some(table)) => {
                 let rows = table.get_ref();
-                let ok = rows.len() >= 2
-                    && rows[0] == [0.0, 0.0]
-                    && rows
-                        .windows(2)
-                        .all(|w| w[1][0] > w[0][0] && w[1][1] >= w[0][1])
-                    && rows.iter().flatten().all(|x| x.is_finite())
-                    && rows.last().map(|r| r[1] > 0.0).unwrap_or(false);
-                if !ok {
+                let problem = if rows.iter().flatten().any(|x| !x.is_finite()) {
+                    Some("the tension–strain table has a non-finite number".to_string())
+                } else if rows.len() < 2 {
+                    Some("the tension–strain table needs at least two rows".to_string())
+                } else if rows[0] != [0.0, 0.0] {
+                    Some(format!(
+                        "the tension–strain table must start at [0, 0], not [{}, {}]",
+                        rows[0][0], rows[0][1]
+                    ))
+                } else if let Some(r) = rows.windows(2).position(|w| !(w[1][0] > w[0][0])) {
+                    Some(format!(
+                        "strain must increase down the tension–strain table: row {} has {} after {}",
+                        r + 2,
+                        rows[r + 1][0],
+                        rows[r][0]
+                    ))
+                } else if let Some(r) = rows.windows(2).position(|w| w[1][1] < w[0][1]) {
+                    Some(format!(
+                        "tension must not decrease down the tension–strain table: row {} has {} N after {} N",
+                        r + 2,
+                        rows[r + 1][1],
+                        rows[r][1]
+                    ))
+                } else if !(rows[rows.len() - 1][1] > 0.0) {
+                    Some("the tension–strain table never rises above zero tension".to_string())
+                } else {
+                    None
+                };
+                if let Some(problem) = problem {
                     let d = b
-                        .diag(Some(table.span()), &k("tension_strain"), "the tension–strain table is not a valid curve")
+                        .diag(Some(table.span()), &k("tension_strain"), problem)
                         .expected("rows [strain, tension] in - and N, starting at [0, 0], strain increasing, tension non-decreasing")
                         .hint("e.g. [[0, 0], [0.01, 2e6], [0.02, 5e6]]");
                     b.push(d);
@@ -654,14 +923,17 @@ fn build_points(
     for (i, p) in specs.iter().enumerate() {
         let k = |key: &str| format!("points[{i}].{key}");
         let name = p.name.get_ref().clone();
-        if index.insert(name.clone(), i).is_some() {
+        if let Some(first) = index.insert(name.clone(), i) {
+            let line = b.line_of(specs[first].name.span());
             let d = b
                 .diag(
                     Some(p.name.span()),
                     &k("name"),
                     format!("point `{name}` is defined twice"),
                 )
-                .hint("give each point its own name");
+                .hint(format!(
+                    "`{name}` is first defined on line {line}; give each point its own name"
+                ));
             b.push(d);
         }
         let kind = *p.kind.get_ref();
@@ -763,7 +1035,14 @@ fn build_points(
                             &k("motion"),
                             format!("prescribed point `{name}` has no `motion`"),
                         )
-                        .hint("add a [points.motion] table, or make the point `fixed`");
+                        .expected(
+                            "a `motion` table of type fixed, constant-velocity, sinusoid, \
+                             circular-orbit or time-series",
+                        )
+                        .hint(
+                            "add e.g. `motion = { type = \"sinusoid\", amplitude = [2.0, 0.0, \
+                             0.0], period = 10.0 }`, or make the point `fixed`",
+                        );
                     b.push(d);
                     PointKind::Fixed
                 }
@@ -793,7 +1072,10 @@ fn build_points(
                         format!("point `{name}` is below the seabed"),
                     )
                     .expected(format!("z ≥ −depth = {}", -env.depth))
-                    .hint("anchors sit on the seabed at z = −depth");
+                    .hint(
+                        "raise the point, or increase `environment.depth`; anchors sit on the \
+                         seabed at z = −depth",
+                    );
                 b.push(d);
             }
         }
@@ -824,8 +1106,8 @@ fn build_motion(b: &mut Builder, m: &MotionSpec, position: Option<Vec3>, key: &s
     let allowed: &[&str] = match kind {
         MotionKind::Fixed => &[],
         MotionKind::ConstantVelocity => &["velocity"],
-        MotionKind::Sinusoid => &["amplitude", "period", "frequency", "phase"],
-        MotionKind::CircularOrbit => &["radius", "frequency", "phase", "plane"],
+        MotionKind::Sinusoid => &["amplitude", "period", "frequency", "phase", "ramp_time"],
+        MotionKind::CircularOrbit => &["radius", "frequency", "phase", "plane", "ramp_time"],
         MotionKind::TimeSeries => &["table", "file"],
     };
     for (name, is, span) in [
@@ -839,6 +1121,7 @@ fn build_motion(b: &mut Builder, m: &MotionSpec, position: Option<Vec3>, key: &s
         ("frequency", m.frequency.is_some(), span_of(&m.frequency)),
         ("phase", m.phase.is_some(), span_of(&m.phase)),
         ("radius", m.radius.is_some(), span_of(&m.radius)),
+        ("ramp_time", m.ramp_time.is_some(), span_of(&m.ramp_time)),
         ("plane", m.plane.is_some(), Some(m.kind.span())),
         ("table", m.table.is_some(), span_of(&m.table)),
         ("file", m.file.is_some(), span_of(&m.file)),
@@ -868,9 +1151,20 @@ fn build_motion(b: &mut Builder, m: &MotionSpec, position: Option<Vec3>, key: &s
                 &k(name),
                 format!("this motion needs `{name}`"),
             )
-            .expected(unit.to_string());
+            .expected(unit.to_string())
+            .hint(format!("add `{name} = ...` to the motion table"));
         b.push(d);
     };
+    let ramp = b.opt(
+        &m.ramp_time,
+        &k("ramp_time"),
+        0.0,
+        Check {
+            ok: NON_NEGATIVE,
+            expected: "s, ≥ 0",
+        },
+        "a few periods lets the system build up without a start-up jerk",
+    );
     match kind {
         MotionKind::Fixed => Motion::Fixed { position: centre },
         MotionKind::ConstantVelocity => match &m.velocity {
@@ -902,6 +1196,7 @@ fn build_motion(b: &mut Builder, m: &MotionSpec, position: Option<Vec3>, key: &s
                 amplitude: Vec3::from(amplitude),
                 frequency: Vec3::from(frequency),
                 phase: Vec3::from(phase).map(f64::to_radians),
+                ramp,
             }
         }
         MotionKind::CircularOrbit => {
@@ -939,6 +1234,7 @@ fn build_motion(b: &mut Builder, m: &MotionSpec, position: Option<Vec3>, key: &s
                 phase,
                 e1,
                 e2,
+                ramp,
             }
         }
         MotionKind::TimeSeries => {
@@ -1037,7 +1333,8 @@ fn frequency_of(b: &mut Builder, m: &MotionSpec, key: &str) -> [f64; 3] {
                     key,
                     "this motion needs `frequency` [Hz] or `period` [s]",
                 )
-                .expected("Hz or s, > 0");
+                .expected("`frequency` in Hz, ≥ 0, or `period` in s, > 0")
+                .hint("add e.g. `period = 10.0` to the motion table");
             b.push(d);
             [0.0; 3]
         }
@@ -1094,14 +1391,17 @@ fn build_lines(
     for (i, l) in specs.iter().enumerate() {
         let k = |key: &str| format!("lines[{i}].{key}");
         let name = l.name.get_ref().clone();
-        if names.insert(name.clone(), i).is_some() {
+        if let Some(first) = names.insert(name.clone(), i) {
+            let line = b.line_of(specs[first].name.span());
             let d = b
                 .diag(
                     Some(l.name.span()),
                     &k("name"),
                     format!("line `{name}` is defined twice"),
                 )
-                .hint("give each line its own name");
+                .hint(format!(
+                    "`{name}` is first defined on line {line}; give each line its own name"
+                ));
             b.push(d);
         }
         if name.contains(['.', ',', '"']) || name.is_empty() {
@@ -1118,13 +1418,19 @@ fn build_lines(
             match points.get(s.get_ref()) {
                 Some(&p) => p,
                 None => {
-                    let hint = match closest(s.get_ref(), points.keys().map(String::as_str)) {
+                    let mut defined: Vec<&str> = points.keys().map(String::as_str).collect();
+                    defined.sort();
+                    let hint = match closest(s.get_ref(), defined.iter().copied()) {
                         Some(c) => format!("did you mean `{c}`?"),
-                        None => format!("define it in a [[points]] table; defined points: {}", {
-                            let mut v: Vec<&str> = points.keys().map(String::as_str).collect();
-                            v.sort();
-                            v.join(", ")
-                        }),
+                        None => format!(
+                            "define a [[points]] table with `name = \"{}\"`, or correct the name",
+                            s.get_ref()
+                        ),
+                    };
+                    let expected = if defined.is_empty() {
+                        "the name of a point; no [[points]] are defined".to_string()
+                    } else {
+                        format!("the name of a point: {}", defined.join(", "))
                     };
                     let d = b
                         .diag(
@@ -1136,6 +1442,7 @@ fn build_lines(
                                 s.get_ref()
                             ),
                         )
+                        .expected(expected)
                         .hint(hint);
                     b.push(d);
                     0
@@ -1163,9 +1470,19 @@ fn build_lines(
             let ti = match types.get(t.get_ref()) {
                 Some(&ti) => ti,
                 None => {
-                    let hint = match closest(t.get_ref(), types.keys().map(String::as_str)) {
+                    let mut defined: Vec<&str> = types.keys().map(String::as_str).collect();
+                    defined.sort();
+                    let hint = match closest(t.get_ref(), defined.iter().copied()) {
                         Some(c) => format!("did you mean `{c}`?"),
-                        None => "define it in a [[line_types]] table".into(),
+                        None => format!(
+                            "define a [[line_types]] table with `name = \"{}\"`, or correct the name",
+                            t.get_ref()
+                        ),
+                    };
+                    let expected = if defined.is_empty() {
+                        "the name of a line type; no [[line_types]] are defined".to_string()
+                    } else {
+                        format!("the name of a line type: {}", defined.join(", "))
                     };
                     let d = b
                         .diag(
@@ -1173,6 +1490,7 @@ fn build_lines(
                             &key("type"),
                             format!("line type `{}` does not exist", t.get_ref()),
                         )
+                        .expected(expected)
                         .hint(hint);
                     b.push(d);
                     0
@@ -1418,10 +1736,32 @@ fn build_channels(b: &mut Builder, spec: Option<&SimulationSpec>, model: &Model)
                 }
             }
             Err(msg) => {
+                let first = c.get_ref().split('.').next().unwrap_or("");
+                let hint = if let Some(li) = model.line_index(first) {
+                    let prefix = format!("lines[{li}].");
+                    if b.errors.iter().any(|d| d.key.starts_with(&prefix)) {
+                        continue; // the line itself is wrong (e.g. its element count)
+                    }
+                    let n = model.lines[li].elements();
+                    format!(
+                        "line `{first}` has nodes node0 (end A) … node{n} (end B) and elements \
+                         element0 … element{}",
+                        n.saturating_sub(1)
+                    )
+                } else if model.point_index(first).is_some() {
+                    format!("point `{first}` has channels {first}.x|y|z|vx|vy|vz")
+                } else {
+                    let names = model.lines.iter().map(|l| l.name.as_str());
+                    let names = names.chain(model.points.iter().map(|p| p.name.as_str()));
+                    match closest(first, names) {
+                        Some(c) => format!("did you mean `{c}`?"),
+                        None => "a channel starts with the name of a line or a point".to_string(),
+                    }
+                };
                 let d = b
                     .diag(Some(c.span()), &format!("simulation.channels[{ci}]"), msg)
                     .expected("LINE.end_a|end_b.tension|fx|fy|fz, LINE.nodeK.tension|x|y|z|vx|vy|vz, LINE.elementK.strain, POINT.x|y|z|vx|vy|vz")
-                    .hint("node 0 is end A; a line of N elements has nodes 0..N");
+                    .hint(hint);
                 b.push(d);
             }
         }
@@ -1497,7 +1837,7 @@ pub fn parse_channel(name: &str, model: &Model) -> Result<Channel, String> {
                     return Err(format!(
                         "line `{}` has elements 0 … {}; element {k} does not exist",
                         parts[0],
-                        n - 1
+                        n.saturating_sub(1)
                     ));
                 }
                 return Ok(Channel::ElementStrain {
