@@ -65,6 +65,9 @@ enum Command {
         /// Time step [s] (default: the scenario's rule).
         #[arg(long)]
         dt: Option<Real>,
+        /// Mass matrix to measure: lumped, consistent or both.
+        #[arg(long, default_value = "both")]
+        mass: String,
         /// Print JSON.
         #[arg(long)]
         json: bool,
@@ -86,8 +89,9 @@ fn main() -> ExitCode {
             file,
             duration,
             dt,
+            mass,
             json,
-        } => bench(&file, duration, dt, json),
+        } => bench(&file, duration, dt, &mass, json),
     };
     match result {
         Ok(code) => code,
@@ -365,12 +369,27 @@ impl Observer for Null {
     fn sample(&mut self, _: &System, _: Real, _: &[Real], _: &Workspace) {}
 }
 
-fn bench(file: &Path, duration: Option<Real>, dt: Option<Real>, json: bool) -> Result<ExitCode> {
+fn bench(
+    file: &Path,
+    duration: Option<Real>,
+    dt: Option<Real>,
+    which: &str,
+    json: bool,
+) -> Result<ExitCode> {
     let Some(loaded) = load(file) else {
         return Ok(ExitCode::from(2));
     };
+    let masses: &[MassMatrix] = match which {
+        "lumped" => &[MassMatrix::Lumped],
+        "consistent" => &[MassMatrix::Consistent],
+        "both" => &[MassMatrix::Lumped, MassMatrix::Consistent],
+        other => {
+            eprintln!("error: --mass {other}: expected lumped, consistent or both");
+            return Ok(ExitCode::from(2));
+        }
+    };
     let mut results = Vec::new();
-    for mass in [MassMatrix::Lumped, MassMatrix::Consistent] {
+    for &mass in masses {
         let mut model = loaded.model.clone();
         for l in &mut model.lines {
             l.mass_matrix = mass;

@@ -62,8 +62,36 @@ pub fn inverse3(m: &Mat3) -> Option<Mat3> {
     )
 }
 
+/// Solves m x = b for a 3×3 matrix by Cramer's rule; `None` when m is singular relative to its
+/// diagonal (the fast path of block-diagonal mass solves).
+#[inline]
+pub fn solve3(m: &Mat3, b: &Vec3) -> Option<Vec3> {
+    let c0 = m.column(0);
+    let c1 = m.column(1);
+    let c2 = m.column(2);
+    let c12 = c1.cross(&c2);
+    let det = c0.dot(&c12);
+    let d = (m[(0, 0)].abs() + m[(1, 1)].abs() + m[(2, 2)].abs()) / 3.0;
+    if !(det.abs() > 1e-14 * d * d * d) {
+        return None;
+    }
+    let inv = 1.0 / det;
+    Some(Vec3::new(
+        b.dot(&c12) * inv,
+        c0.dot(&b.cross(&c2)) * inv,
+        c0.dot(&c1.cross(b)) * inv,
+    ))
+}
+
 #[cfg(test)]
 mod tests {
+    #[test]
+    fn solve3_matches_inverse() {
+        let m = Mat3::new(4.0, 1.0, 0.5, 1.0, 3.0, 0.2, 0.5, 0.2, 2.0);
+        let b = Vec3::new(1.0, -2.0, 0.5);
+        let x = solve3(&m, &b).unwrap();
+        assert!((m * x - b).norm() < 1e-14);
+    }
     use super::*;
     #[test]
     fn inverse3_matches_nalgebra() {

@@ -80,8 +80,10 @@ impl LineBlocks {
     /// Zeroes the blocks (not the ends' kinds).
     pub fn clear(&mut self) {
         self.diag.iter_mut().for_each(|m| *m = Mat3::zeros());
-        self.lower.iter_mut().for_each(|m| *m = Mat3::zeros());
-        self.upper.iter_mut().for_each(|m| *m = Mat3::zeros());
+        if self.coupled {
+            self.lower.iter_mut().for_each(|m| *m = Mat3::zeros());
+            self.upper.iter_mut().for_each(|m| *m = Mat3::zeros());
+        }
     }
 }
 
@@ -167,9 +169,8 @@ impl CoupledSystem {
                     }
                 } else {
                     for i in 1..n {
-                        let inv = crate::math::inverse3(&line.diag[i])
+                        line.x[i] = crate::math::solve3(&line.diag[i], &line.x[i])
                             .ok_or(Singular::Line { line: li, node: i })?;
-                        line.x[i] = inv * line.x[i];
                     }
                 }
             }

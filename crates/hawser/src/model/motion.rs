@@ -82,11 +82,15 @@ impl Motion {
                 let mut v = Vec3::zeros();
                 let mut a = Vec3::zeros();
                 for i in 0..3 {
+                    if amplitude[i] == 0.0 {
+                        continue;
+                    }
                     let w = TAU * frequency[i];
                     let th = w * t + phase[i];
-                    let s = amplitude[i] * (th.sin() - phase[i].sin());
-                    let ds = amplitude[i] * w * th.cos();
-                    let dds = -amplitude[i] * w * w * th.sin();
+                    let (sn, cs) = th.sin_cos();
+                    let s = amplitude[i] * (sn - phase[i].sin());
+                    let ds = amplitude[i] * w * cs;
+                    let dds = -amplitude[i] * w * w * sn;
                     r[i] += g * s;
                     v[i] = dg * s + g * ds;
                     a[i] = ddg * s + 2.0 * dg * ds + g * dds;
