@@ -33,9 +33,43 @@ sys.exit(0 if version('moordyn') == '$MOORDYN_VERSION' else 1)
         "moordyn==$MOORDYN_VERSION" >&2
 fi
 
+OUT="$(mktemp -d)"
+trap 'rm -rf "$OUT"' EXIT
 "$VENV/bin/python" "$ROOT/scripts/moordyn_bench.py" \
-    --deck "$DECK" --dt 0.002 --duration 60 --amplitude 2 --period 10 "$@"
+    --deck "$DECK" --dt 0.002 --duration 60 --amplitude 2 --period 10 --repeats 3 "$@" --json \
+    > "$OUT/moordyn.json"
 
-# ------------------------------------------------------------------------------
-# hawser side: hawser bench ... (added by the main developer)
-# ------------------------------------------------------------------------------
+# ---------------------------------------------------------------- hawser side
+# The same 3 lines × 20 segments (63 nodes), dt 0.002 s, 60 s, 2 m / 10 s surge, one core,
+# no file output, best of 3; examples/oc3_surge.toml is the hand-written equivalent of the deck.
+cargo build --release -q -p hawser-cli --manifest-path "$ROOT/Cargo.toml"
+HAWSER="$ROOT/target/release/hawser"
+for i in 1 2 3; do
+    "$HAWSER" bench "$ROOT/examples/oc3_surge.toml" --duration 60 --dt 0.002 --json > "$OUT/hawser$i.json"
+done
+
+python3 - "$OUT" <<'PY'
+import json, sys, glob, os
+out = sys.argv[1]
+md = json.load(open(os.path.join(out, "moordyn.json")))
+runs = [json.load(open(f)) for f in sorted(glob.glob(os.path.join(out, "hawser*.json")))]
+best = {}
+for run in runs:
+    for r in run:
+        k = r["mass_matrix"]
+        if k not in best or r["wall_s"] < best[k]["wall_s"]:
+            best[k] = r
+# MoorDyn headline: coupling interval 0.1 s, no file output.
+m = next(r for r in md["runs"] if r.get("headline"))
+m["scheme"] = md["settings"]["time_scheme"]
+m_ns = m["node_steps_per_s"]; m_ne = m["node_evaluations_per_s"]
+print(f"OC3, 63 nodes, dt 0.002 s, 60 s, surge 2 m / 10 s; MoorDyn {md.get('moordyn_version', '?')} "
+      f"{m.get('scheme', 'RK2')} vs hawser RK4 (best of 3, one core)")
+print(f"{'code':<22} {'wall [s]':>9} {'node-steps/s':>14} {'node-evals/s':>14} {'ratio (evals)':>14}")
+print(f"{'MoorDyn':<22} {m['wall_s']:>9.3f} {m_ns:>14.3e} {m_ne:>14.3e} {1.0:>14.2f}")
+for k in ("lumped", "consistent"):
+    if k in best:
+        r = best[k]
+        print(f"{'hawser fe ' + k:<22} {r['wall_s']:>9.3f} {r['node_steps_per_s']:>14.3e} "
+              f"{r['node_evaluations_per_s']:>14.3e} {r['node_evaluations_per_s'] / m_ne:>14.2f}")
+PY
