@@ -15,7 +15,7 @@ duration = 20.0
 time_step = "auto"
 safety_factor = 0.8
 output_interval = 0.1
-channels = ["L1.node5.tension", "buoy.z"]
+channels = ["L1.node5.tension", "L1.element3.strain", "buoy.z"]
 
 [environment]
 water_density = 1025.0
@@ -136,7 +136,13 @@ fn base_scenario_is_valid() {
 fn unknown_key() {
     let text = mutate("diameter = 0.09", "diamter = 0.09");
     let msg = error(&text);
-    assert_located(&msg, line_of(&text, "diamter"), "diamter", true, true);
+    assert_located(
+        &msg,
+        line_of(&text, "diamter"),
+        "line_types[0].diamter",
+        true,
+        true,
+    );
     assert!(msg.contains("did you mean `diameter`"), "{msg}");
     insta::assert_snapshot!(msg);
 }
@@ -220,6 +226,134 @@ fn fractional_elements() {
         &msg,
         line_of(&text, "elements = 10.5"),
         "lines[0].elements",
+        true,
+        true,
+    );
+    insta::assert_snapshot!(msg);
+}
+
+#[test]
+fn wrong_type_in_vector() {
+    let text = mutate("[400.0, 0.0, -100.0]", "[400.0, \"0\", -100.0]");
+    let msg = error(&text);
+    assert_located(
+        &msg,
+        line_of(&text, "\"0\""),
+        "points[0].position[1]",
+        true,
+        true,
+    );
+    insta::assert_snapshot!(msg);
+}
+
+#[test]
+fn wrong_type_scalar_or_vector() {
+    let text = mutate("period = 10.0", "period = \"10 s\"");
+    let msg = error(&text);
+    assert_located(
+        &msg,
+        line_of(&text, "\"10 s\""),
+        "points[1].motion.period",
+        true,
+        true,
+    );
+    insta::assert_snapshot!(msg);
+}
+
+#[test]
+fn wrong_type_time_step() {
+    let text = mutate("time_step = \"auto\"", "time_step = true");
+    let msg = error(&text);
+    assert_located(
+        &msg,
+        line_of(&text, "time_step"),
+        "simulation.time_step",
+        true,
+        true,
+    );
+    insta::assert_snapshot!(msg);
+}
+
+#[test]
+fn unknown_time_step_keyword() {
+    let text = mutate("time_step = \"auto\"", "time_step = \"automatic\"");
+    let msg = error(&text);
+    assert_located(
+        &msg,
+        line_of(&text, "time_step"),
+        "simulation.time_step",
+        true,
+        true,
+    );
+    insta::assert_snapshot!(msg);
+}
+
+#[test]
+fn unknown_key_in_inline_table() {
+    let text = mutate("period = 10.0", "perod = 10.0");
+    let msg = error(&text);
+    assert_located(
+        &msg,
+        line_of(&text, "perod"),
+        "points[1].motion.perod",
+        true,
+        true,
+    );
+    assert!(msg.contains("did you mean `period`"), "{msg}");
+    insta::assert_snapshot!(msg);
+}
+
+#[test]
+fn unknown_table() {
+    let text = mutate("[environment.current]", "[environment.currents]");
+    let msg = error(&text);
+    assert_located(
+        &msg,
+        line_of(&text, "currents"),
+        "environment.currents",
+        true,
+        true,
+    );
+    assert!(msg.contains("did you mean `current`"), "{msg}");
+    insta::assert_snapshot!(msg);
+}
+
+#[test]
+fn missing_required_field_of_inline_table() {
+    let text = mutate("{ type = \"sinusoid\", ", "{ ");
+    let msg = error(&text);
+    assert_located(
+        &msg,
+        line_of(&text, "motion = "),
+        "points[1].motion.type",
+        true,
+        true,
+    );
+    insta::assert_snapshot!(msg);
+}
+
+#[test]
+fn unknown_point_type() {
+    let text = mutate("type = \"free\"", "type = \"floating\"");
+    let msg = error(&text);
+    assert_located(
+        &msg,
+        line_of(&text, "\"floating\""),
+        "points[3].type",
+        true,
+        true,
+    );
+    insta::assert_snapshot!(msg);
+}
+
+#[test]
+fn seabed_without_depth() {
+    let text = mutate("depth = 100.0\n", "");
+    let msg = error(&text);
+    assert_located(
+        &msg,
+        line_of(&text, "[environment.seabed]"),
+        "environment.depth",
         true,
         true,
     );
@@ -405,6 +539,20 @@ fn sinusoid_without_period_or_frequency() {
 }
 
 #[test]
+fn non_finite_amplitude() {
+    let text = mutate("amplitude = [2.0, 0.0, 0.0]", "amplitude = [nan, 0.0, 0.0]");
+    let msg = error(&text);
+    assert_located(
+        &msg,
+        line_of(&text, "nan"),
+        "points[1].motion.amplitude",
+        true,
+        true,
+    );
+    insta::assert_snapshot!(msg);
+}
+
+#[test]
 fn current_profile_z_not_increasing() {
     let text = mutate(
         "[[-100.0, 0.1, 0.0, 0.0], [0.0, 0.5, 0.0, 0.0]]",
@@ -479,7 +627,7 @@ fn unknown_channel() {
     assert_located(
         &msg,
         line_of(&text, "channels"),
-        "simulation.channels[1]",
+        "simulation.channels[2]",
         true,
         true,
     );
@@ -533,7 +681,13 @@ fn unknown_formulation() {
 fn invalid_toml_syntax() {
     let text = mutate("diameter = 0.09", "diameter = 0.09 m");
     let msg = error(&text);
-    assert_located(&msg, line_of(&text, "0.09 m"), "", true, false);
+    assert_located(
+        &msg,
+        line_of(&text, "0.09 m"),
+        "line_types[0].diameter",
+        true,
+        true,
+    );
     insta::assert_snapshot!(msg);
 }
 
@@ -550,7 +704,14 @@ fn unclosed_array() {
 fn duplicate_toml_key() {
     let text = mutate("diameter = 0.09\n", "diameter = 0.09\ndiameter = 0.1\n");
     let msg = error(&text);
-    assert_located(&msg, line_of(&text, "diameter = 0.1"), "", true, false);
+    assert_located(
+        &msg,
+        line_of(&text, "diameter = 0.1"),
+        "line_types[0].diameter",
+        true,
+        false,
+    );
+    assert!(msg.contains("line 26"), "{msg}");
     insta::assert_snapshot!(msg);
 }
 
@@ -607,10 +768,31 @@ fn several_errors_at_once() {
     insta::assert_snapshot!(msg);
 }
 
-/// Runs `parse` on `text`, returning whether it panicked.
+#[test]
+fn several_schema_errors_at_once() {
+    let text = BASE
+        .replacen("duration = 20.0", "duration = \"20 s\"", 1)
+        .replacen("diameter = 0.09", "diamter = 0.09", 1)
+        .replacen("mass = 200.0", "mas = 200.0", 1)
+        .replacen("elements = 4", "elements = 4.5", 1);
+    let msg = error(&text);
+    for needle in ["\"20 s\"", "diamter", "mas = ", "elements = 4.5"] {
+        let at = format!("{FILE}:{}:", line_of(&text, needle));
+        assert!(msg.contains(&at), "`{needle}` not reported at {at}:\n{msg}");
+    }
+    assert!(msg.contains("4 errors in scenario.toml"), "{msg}");
+    insta::assert_snapshot!(msg);
+}
+
+/// Runs `parse` on `text` and, if it is accepted, sets the model up as `hawser check` does;
+/// returns whether anything panicked.
 fn panics(text: &str) -> bool {
     catch_unwind(AssertUnwindSafe(|| {
-        let _ = scenario::parse(Path::new(FILE), text);
+        if let Ok(s) = scenario::parse(Path::new(FILE), text) {
+            if let Ok(system) = hawser::system::System::new(&s.model) {
+                let _ = system.stable_step(s.model.settings.scheme);
+            }
+        }
     }))
     .is_err()
 }

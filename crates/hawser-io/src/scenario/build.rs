@@ -134,8 +134,7 @@ fn span_of<T>(v: &Option<Spanned<T>>) -> Option<Range<usize>> {
 
 /// Reads and validates scenario `source` (the text of `file`).
 pub fn build(file: &Path, source: &str) -> Result<LoadedScenario, ScenarioError> {
-    let scenario: Scenario =
-        toml::from_str(source).map_err(|e| ScenarioError::from(toml_error(file, source, &e)))?;
+    let scenario: Scenario = toml::from_str(source).map_err(|e| schema_errors(file, source, &e))?;
     let mut b = Builder {
         file,
         source,
@@ -184,20 +183,88 @@ pub fn build(file: &Path, source: &str) -> Result<LoadedScenario, ScenarioError>
     })
 }
 
+/// The first error of the file and, if the TOML itself is valid, the first error of every
+/// other table: each section and each `[[...]]` element is checked on its own.
+fn schema_errors(file: &Path, source: &str, first: &toml::de::Error) -> ScenarioError {
+    use serde::Deserialize;
+    use toml::de::{DeValue, ValueDeserializer};
+    let mut errors = vec![toml_error(file, source, first)];
+    if let Ok(doc) = toml::de::DeTable::parse(source) {
+        for (key, value) in doc.get_ref().iter() {
+            let items: Vec<&Spanned<DeValue>> = match value.get_ref() {
+                DeValue::Array(a) => a.iter().collect(),
+                _ => vec![value],
+            };
+            for item in items {
+                let de = || ValueDeserializer::from(item.clone());
+                let e = match key.get_ref().as_ref() {
+                    "simulation" => SimulationSpec::deserialize(de()).err(),
+                    "environment" => EnvironmentSpec::deserialize(de()).err(),
+                    "line_types" => LineTypeSpec::deserialize(de()).err(),
+                    "points" => PointSpec::deserialize(de()).err(),
+                    "lines" => LineSpec::deserialize(de()).err(),
+                    _ => None,
+                };
+                let Some(e) = e else { continue };
+                let d = toml_error(file, source, &e);
+                if !errors
+                    .iter()
+                    .any(|x| (x.line, x.column) == (d.line, d.column))
+                {
+                    errors.push(d);
+                }
+            }
+        }
+    }
+    errors.sort_by_key(|d| (d.line, d.column));
+    ScenarioError {
+        diagnostics: errors,
+    }
+}
+
 /// Turns a TOML or serde error into a diagnostic with a hint.
 fn toml_error(file: &Path, source: &str, e: &toml::de::Error) -> Diagnostic {
     let message = e.message().trim().to_string();
     let quoted: Vec<&str> = message.split('`').skip(1).step_by(2).collect();
     let first = quoted.first().copied().unwrap_or("");
     let span = e.span();
-    let at = span
+    let mut at = span
         .as_ref()
         .map(|s| key_at(source, s.start))
         .unwrap_or_default();
+    let syntax = !(message.starts_with("unknown field")
+        || message.starts_with("missing field")
+        || message.starts_with("invalid type")
+        || message.contains("untagged enum")
+        || message.starts_with("unknown variant"));
+    if syntax {
+        // The parser's recovery may have made up array elements after the error.
+        while matches!(at.path.last(), Some(Step::Index(_))) {
+            at.path.pop();
+        }
+    }
     let path = path_string(&at.path);
-    let leaf = match at.path.last() {
-        Some(Step::Key(k)) => k.clone(),
-        _ => path.clone(),
+    let leaf = at
+        .path
+        .iter()
+        .rev()
+        .find_map(|s| match s {
+            Step::Key(k) => Some(k.clone()),
+            Step::Index(_) => None,
+        })
+        .unwrap_or_default();
+    let in_array = matches!(at.path.last(), Some(Step::Index(_)));
+    let line_of = |offset: usize| {
+        let end = offset.min(source.len());
+        source.as_bytes()[..end]
+            .iter()
+            .filter(|&&c| c == b'\n')
+            .count()
+            + 1
+    };
+    let one_of = |known: &[&str]| {
+        let list: Vec<String> = known.iter().map(|q| format!("`{q}`")).collect();
+        format!("one of {}", list.join(", "))
     };
     let mut d = Diagnostic::new(file, source, span.clone(), path.clone(), message.clone());
     if message.starts_with("unknown field") {
@@ -213,14 +280,7 @@ fn toml_error(file: &Path, source: &str, e: &toml::de::Error) -> Diagnostic {
         d = d.hint(hint).expected(if known.is_empty() {
             "no keys in this table".to_string()
         } else {
-            format!(
-                "one of {}",
-                known
-                    .iter()
-                    .map(|q| format!("`{q}`"))
-                    .collect::<Vec<_>>()
-                    .join(", ")
-            )
+            one_of(known)
         });
     } else if message.starts_with("missing field") {
         let mut field_path = at.path.clone();
@@ -231,7 +291,7 @@ fn toml_error(file: &Path, source: &str, e: &toml::de::Error) -> Diagnostic {
             .value("")
             .expected(field_doc(&field_path).unwrap_or_default())
             .hint(format!("add `{first} = ...` to this table"));
-    } else if message.starts_with("invalid type") || message.contains("untagged enum") {
+    } else if !syntax && !message.starts_with("unknown variant") {
         let wanted = if message.contains("untagged enum ScalarOrVec3") {
             "a number or [x, y, z]"
         } else if message.contains("untagged enum TimeStepSpec") {
@@ -255,16 +315,30 @@ fn toml_error(file: &Path, source: &str, e: &toml::de::Error) -> Diagnostic {
             None => wanted.to_string(),
         });
         let text = d.value.trim().trim_matches('"').to_string();
-        let hint = if message.starts_with("invalid type: string") && text.parse::<f64>().is_ok() {
-            format!("write the number without quotes: `{leaf} = {text}`")
+        let number = text
+            .split_whitespace()
+            .next()
+            .filter(|n| n.parse::<f64>().is_ok());
+        let write = |v: &str| match in_array {
+            true => format!("`{v}`"),
+            false => format!("`{leaf} = {v}`"),
+        };
+        let hint = if d.value.starts_with('"')
+            && let Some(n) = number
+        {
+            let unit = if n == text { "" } else { " and unit" };
+            format!("write the number without quotes{unit}: {}", write(n))
         } else if wanted == "a whole number" {
             match text.parse::<f64>() {
                 Ok(x) => format!(
-                    "write a whole number without a decimal point, e.g. `{leaf} = {}`",
-                    x.round().max(1.0)
+                    "write a whole number without a decimal point, e.g. {}",
+                    write(&format!("{}", x.round().max(1.0)))
                 ),
-                Err(_) => "write a whole number, e.g. 10".to_string(),
+                Err(_) => format!("write a whole number, e.g. {}", write("10")),
             }
+        } else if wanted.contains("auto") {
+            "write `time_step = \"auto\"` or a step in seconds, e.g. `time_step = 0.001`"
+                .to_string()
         } else {
             "numbers are unquoted, names are quoted, vectors are [x, y, z]".to_string()
         };
@@ -273,22 +347,29 @@ fn toml_error(file: &Path, source: &str, e: &toml::de::Error) -> Diagnostic {
         let known = quoted.get(1..).unwrap_or(&[]);
         let hint = match closest(first, known.iter().copied()) {
             Some(c) => format!("did you mean `{c}`?"),
-            None => "use one of the expected values".into(),
+            None => {
+                let docs: Vec<String> = variant_docs(&at.path)
+                    .iter()
+                    .map(|(v, doc)| format!("`{v}`: {doc}"))
+                    .collect();
+                match docs.is_empty() {
+                    true => "use one of the expected values".to_string(),
+                    false => docs.join("; "),
+                }
+            }
         };
         d.message = format!("unknown value `{first}` for `{leaf}`");
-        d = d.hint(hint).expected(format!(
-            "one of {}",
-            known
-                .iter()
-                .map(|q| format!("`{q}`"))
-                .collect::<Vec<_>>()
-                .join(", ")
-        ));
+        d = d.hint(hint).expected(one_of(known));
     } else {
         // TOML syntax: point at the key being written and say what is usually wrong.
-        let line_of = |offset: usize| source[..offset.min(source.len())].matches('\n').count() + 1;
-        let value_start = at.value.as_ref().map(|v| v.start);
         let hint = if message.starts_with("duplicate key") {
+            if let Some(rest) = source
+                .lines()
+                .nth(d.line.saturating_sub(1))
+                .and_then(|l| l.split_once('=').map(|x| x.1.trim().to_string()))
+            {
+                d = d.value(rest);
+            }
             match at
                 .key
                 .as_ref()
@@ -301,31 +382,31 @@ fn toml_error(file: &Path, source: &str, e: &toml::de::Error) -> Diagnostic {
                 None => "a key may appear once per table; remove one of them".to_string(),
             }
         } else if message.starts_with("string values must be quoted")
-            && d.value
-                .starts_with(|c: char| c.is_ascii_digit() || c == '-' || c == '+')
+            && let Some(n) = d
+                .value
+                .split_whitespace()
+                .next()
+                .filter(|n| n.parse::<f64>().is_ok())
         {
-            let doc = field_doc(&at.path)
-                .map(|doc| format!(" ({doc})"))
-                .unwrap_or_default();
-            format!("write the number alone; units are implied{doc}")
+            format!("write the number alone, `{leaf} = {n}`: units are implied (see expected)")
         } else if message.starts_with("string values must be quoted") {
             "quote names and keywords, e.g. `type = \"chain\"`".to_string()
-        } else if let (Some(v), Some(s)) = (value_start, span.as_ref())
-            && line_of(v) < line_of(s.start)
-            && source[v..].starts_with(['[', '{'])
+        } else if let (Some(v), Some(s)) = (at.value.as_ref(), span.as_ref())
+            && line_of(v.start) < line_of(s.start)
+            && source
+                .get(v.start..)
+                .is_some_and(|t| t.starts_with(['[', '{']))
         {
             format!(
                 "`{path}` opens a bracket on line {} that is not closed there",
-                line_of(v)
+                line_of(v.start)
             )
         } else {
             "this is not valid TOML (https://toml.io); docs/scenario.md shows the format"
                 .to_string()
         };
-        if !path.is_empty() {
-            if let Some(doc) = field_doc(&at.path) {
-                d = d.expected(doc);
-            }
+        if let Some(doc) = field_doc(&at.path) {
+            d = d.expected(doc);
         }
         d = d.hint(hint);
     }
@@ -368,8 +449,62 @@ struct KeyAt {
 fn key_at(source: &str, offset: usize) -> KeyAt {
     let (doc, _) = toml::de::DeTable::parse_recoverable(source);
     let mut at = KeyAt::default();
-    find_in_table(doc.get_ref(), offset, &mut at);
+    if find_in_table(doc.get_ref(), offset, &mut at) {
+        return at;
+    }
+    // Not inside a parsed key or value (e.g. a duplicate key, which the parser drops): take
+    // the table whose header is the last before `offset`, and the key written at `offset`.
+    let mut best = (0, Vec::new(), doc.get_ref());
+    last_header(source, doc.get_ref(), offset, &mut Vec::new(), &mut best);
+    let (_, path, table) = best;
+    at.path = path;
+    let word: String = source
+        .get(offset..)
+        .unwrap_or("")
+        .chars()
+        .take_while(|c| c.is_ascii_alphanumeric() || *c == '_' || *c == '-')
+        .collect();
+    if !word.is_empty() {
+        if let Some((k, v)) = table.iter().find(|(k, _)| k.get_ref() == &word) {
+            at.key = Some(k.span());
+            at.value = Some(v.span());
+        }
+        at.path.push(Step::Key(word));
+    }
     at
+}
+
+/// The `[table]` or `[[array]]` header that comes last before `offset`.
+fn last_header<'a>(
+    source: &str,
+    t: &'a toml::de::DeTable,
+    offset: usize,
+    path: &mut Vec<Step>,
+    best: &mut (usize, Vec<Step>, &'a toml::de::DeTable<'a>),
+) {
+    let mut consider = |v: &'a Spanned<toml::de::DeValue>, path: &mut Vec<Step>| {
+        if let toml::de::DeValue::Table(inner) = v.get_ref() {
+            let start = v.span().start;
+            let inline = source.get(start..).is_some_and(|s| s.starts_with('{'));
+            if !inline && start <= offset && start >= best.0 {
+                *best = (start, path.clone(), inner);
+            }
+            last_header(source, inner, offset, path, best);
+        }
+    };
+    for (k, v) in t.iter() {
+        path.push(Step::Key(k.get_ref().to_string()));
+        if let toml::de::DeValue::Array(a) = v.get_ref() {
+            for (i, item) in a.iter().enumerate() {
+                path.push(Step::Index(i));
+                consider(item, path);
+                path.pop();
+            }
+        } else {
+            consider(v, path);
+        }
+        path.pop();
+    }
 }
 
 fn find_in_table(t: &toml::de::DeTable, offset: usize, at: &mut KeyAt) -> bool {
@@ -418,10 +553,8 @@ fn key_span(source: &str, path: &[&str]) -> Option<Range<usize>> {
     None
 }
 
-/// The documentation (with unit) of the key at `path`, from the JSON Schema of the format.
-fn field_doc(path: &[Step]) -> Option<String> {
-    let schema = serde_json::to_value(schemars::schema_for!(Scenario)).ok()?;
-    let defs = &schema["$defs"];
+/// The JSON Schema node of the key at `path`, and its documentation (with unit).
+fn schema_node(path: &[Step]) -> Option<(serde_json::Value, Option<String>)> {
     fn resolve<'a>(
         defs: &'a serde_json::Value,
         mut v: &'a serde_json::Value,
@@ -443,6 +576,8 @@ fn field_doc(path: &[Step]) -> Option<String> {
         }
         v
     }
+    let schema = serde_json::to_value(schemars::schema_for!(Scenario)).ok()?;
+    let defs = &schema["$defs"];
     let mut node = &schema;
     let mut doc = None;
     for step in path {
@@ -456,10 +591,39 @@ fn field_doc(path: &[Step]) -> Option<String> {
             Step::Index(_) => node.get("items")?,
         };
     }
-    let doc = doc?.trim_end_matches('.');
-    let mut chars = doc.chars();
-    let first = chars.next()?;
-    Some(first.to_lowercase().chain(chars).collect())
+    let doc = doc.map(|d| {
+        let d = d.trim_end_matches('.');
+        let mut chars = d.chars();
+        match chars.next() {
+            Some(c) => c.to_lowercase().chain(chars).collect(),
+            None => String::new(),
+        }
+    });
+    Some((resolve(defs, node).clone(), doc))
+}
+
+/// The documentation (with unit) of the key at `path`, from the JSON Schema of the format.
+fn field_doc(path: &[Step]) -> Option<String> {
+    schema_node(path)?.1.filter(|d| !d.is_empty())
+}
+
+/// The allowed values of the key at `path` with their documentation.
+fn variant_docs(path: &[Step]) -> Vec<(String, String)> {
+    let Some((node, _)) = schema_node(path) else {
+        return Vec::new();
+    };
+    let variants = node.get("oneOf").and_then(|v| v.as_array());
+    variants
+        .into_iter()
+        .flatten()
+        .filter_map(|v| {
+            let value = v.get("const")?.as_str()?;
+            let doc = v.get("description")?.as_str()?.trim_end_matches('.');
+            let mut chars = doc.chars();
+            let doc = chars.next()?.to_lowercase().chain(chars).collect();
+            Some((value.to_string(), doc))
+        })
+        .collect()
 }
 
 fn build_environment(b: &mut Builder, spec: Option<&EnvironmentSpec>) -> Environment {
@@ -567,6 +731,7 @@ fn build_environment(b: &mut Builder, spec: Option<&EnvironmentSpec>) -> Environ
                     "environment.depth",
                     "a seabed is given but no `environment.depth`",
                 )
+                .value("")
                 .expected("m, > 0 (the seabed is at z = −depth)")
                 .hint("set `depth` in [environment], or remove the seabed for deep water");
             b.push(d);
@@ -698,6 +863,10 @@ fn build_line_types(
             )),
             (None, Some(table)) => {
                 let rows = table.get_ref();
+                let num = |x: f64| match x.abs() >= 1e4 {
+                    true => format!("{x:e}"),
+                    false => format!("{x}"),
+                };
                 let problem = if rows.iter().flatten().any(|x| !x.is_finite()) {
                     Some("the tension–strain table has a non-finite number".to_string())
                 } else if rows.len() < 2 {
@@ -705,7 +874,8 @@ fn build_line_types(
                 } else if rows[0] != [0.0, 0.0] {
                     Some(format!(
                         "the tension–strain table must start at [0, 0], not [{}, {}]",
-                        rows[0][0], rows[0][1]
+                        num(rows[0][0]),
+                        num(rows[0][1])
                     ))
                 } else if let Some(r) = rows.windows(2).position(|w| !(w[1][0] > w[0][0])) {
                     Some(format!(
@@ -718,8 +888,8 @@ fn build_line_types(
                     Some(format!(
                         "tension must not decrease down the tension–strain table: row {} has {} N after {} N",
                         r + 2,
-                        rows[r + 1][1],
-                        rows[r][1]
+                        num(rows[r + 1][1]),
+                        num(rows[r][1])
                     ))
                 } else if !(rows[rows.len() - 1][1] > 0.0) {
                     Some("the tension–strain table never rises above zero tension".to_string())
@@ -747,6 +917,7 @@ fn build_line_types(
                         &k("axial_stiffness"),
                         "give either `axial_stiffness` or `tension_strain`, not both",
                     )
+                    .expected("`axial_stiffness` in N (EA), or a `tension_strain` table in - and N")
                     .hint("remove one of them");
                 b.push(d);
                 AxialStiffness::Linear(1.0)
@@ -1179,7 +1350,7 @@ fn build_motion(b: &mut Builder, m: &MotionSpec, position: Option<Vec3>, key: &s
         },
         MotionKind::Sinusoid => {
             let amplitude = match &m.amplitude {
-                Some(a) => a.get_ref().as_array(),
+                Some(a) => finite3(b, a, &k("amplitude"), "m"),
                 None => {
                     required(b, "amplitude", "m, one value or [ax, ay, az]");
                     [0.0; 3]
@@ -1189,7 +1360,7 @@ fn build_motion(b: &mut Builder, m: &MotionSpec, position: Option<Vec3>, key: &s
             let phase = m
                 .phase
                 .as_ref()
-                .map(|p| p.get_ref().as_array())
+                .map(|p| finite3(b, p, &k("phase"), "deg"))
                 .unwrap_or([0.0; 3]);
             Motion::Sinusoid {
                 centre,
@@ -1224,7 +1395,7 @@ fn build_motion(b: &mut Builder, m: &MotionSpec, position: Option<Vec3>, key: &s
             let phase = m
                 .phase
                 .as_ref()
-                .map(|p| p.get_ref().as_array()[0])
+                .map(|p| finite3(b, p, &k("phase"), "deg")[0])
                 .unwrap_or(0.0)
                 .to_radians();
             Motion::CircularOrbit {
@@ -1288,6 +1459,20 @@ fn build_motion(b: &mut Builder, m: &MotionSpec, position: Option<Vec3>, key: &s
             }
         }
     }
+}
+
+/// A motion parameter given as one number or one per axis, checked to be finite.
+fn finite3(b: &mut Builder, v: &Spanned<ScalarOrVec3>, key: &str, unit: &str) -> [f64; 3] {
+    let a = v.get_ref().as_array();
+    if a.iter().any(|x| !x.is_finite()) {
+        let d = b
+            .diag(Some(v.span()), key, format!("`{key}` is not finite"))
+            .expected(format!("{unit}, one finite number or [x, y, z]"))
+            .hint("nan and inf are not allowed here");
+        b.push(d);
+        return [0.0; 3];
+    }
+    a
 }
 
 fn frequency_of(b: &mut Builder, m: &MotionSpec, key: &str) -> [f64; 3] {

@@ -27,6 +27,8 @@ pub struct Diagnostic {
     /// How to fix it.
     pub hint: String,
     source_line: String,
+    /// Width of the underline: the span's first line, in characters.
+    width: usize,
 }
 
 impl Diagnostic {
@@ -42,12 +44,13 @@ impl Diagnostic {
             Some(s) => locate(source, s.start),
             None => (0, 0, String::new()),
         };
-        let value = match &span {
-            Some(s) if s.end <= source.len() => {
-                source[s.clone()].lines().next().unwrap_or("").to_string()
-            }
-            _ => String::new(),
-        };
+        let value = span
+            .clone()
+            .and_then(|s| source.get(s))
+            .and_then(|v| v.lines().next())
+            .unwrap_or("")
+            .to_string();
+        let width = value.chars().count().max(1);
         Self {
             file: file.to_path_buf(),
             span,
@@ -59,6 +62,7 @@ impl Diagnostic {
             expected: String::new(),
             hint: String::new(),
             source_line,
+            width,
         }
     }
     /// Sets the expected unit and range.
@@ -110,17 +114,7 @@ impl fmt::Display for Diagnostic {
             let pad = " ".repeat(num.len());
             writeln!(f, "{pad} |")?;
             writeln!(f, "{num} | {}", self.source_line)?;
-            let width = self
-                .span
-                .as_ref()
-                .map(|s| {
-                    self.value
-                        .chars()
-                        .count()
-                        .max(1)
-                        .min(s.end.saturating_sub(s.start).max(1))
-                })
-                .unwrap_or(1);
+            let width = self.width;
             writeln!(
                 f,
                 "{pad} | {}{}",

@@ -1,0 +1,195 @@
+//! The `hawser` binary: exit codes and messages for valid and bad scenario files.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+/// A valid scenario: a chain from an anchor to a moving fairlead, and a buoy on a riser.
+const VALID: &str = r#"[simulation]
+duration = 1.0
+time_step = "auto"
+output_interval = 0.1
+
+[environment]
+water_density = 1025.0
+depth = 100.0
+
+[environment.seabed]
+stiffness = 3.0e6
+damping_ratio = 1.0
+
+[environment.current]
+type = "uniform"
+velocity = [0.3, 0.0, 0.0]
+
+[[line_types]]
+name = "chain"
+diameter = 0.09
+mass_per_length = 77.7
+axial_stiffness = 3.84e8
+normal_drag = 1.6
+tangential_drag = 0.3
+
+[[points]]
+name = "anchor"
+type = "fixed"
+position = [400.0, 0.0, -100.0]
+
+[[points]]
+name = "fairlead"
+type = "prescribed"
+position = [5.0, 0.0, -10.0]
+motion = { type = "sinusoid", amplitude = [2.0, 0.0, 0.0], period = 10.0 }
+
+[[points]]
+name = "sinker"
+type = "fixed"
+position = [-50.0, 0.0, -100.0]
+
+[[points]]
+name = "buoy"
+type = "free"
+position = [-50.0, 0.0, -60.0]
+mass = 200.0
+volume = 2.0
+
+[[lines]]
+name = "L1"
+end_a = "anchor"
+end_b = "fairlead"
+type = "chain"
+length = 420.0
+elements = 10
+
+[[lines]]
+name = "L2"
+end_a = "sinker"
+end_b = "buoy"
+type = "chain"
+length = 40.0
+elements = 4
+"#;
+
+/// A fresh, empty directory for one test.
+fn temp_dir(test: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("hawser-cli-{}-{test}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("create the temporary directory");
+    dir
+}
+
+/// Writes `text` to `dir/name` and returns the path.
+fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
+    let path = dir.join(name);
+    std::fs::write(&path, text).expect("write the scenario");
+    path
+}
+
+fn hawser(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_hawser"))
+        .args(args)
+        .output()
+        .expect("run hawser")
+}
+
+/// Stderr with the temporary directory replaced by `[TMP]`, for stable snapshots.
+fn stderr(out: &Output, dir: &Path) -> String {
+    String::from_utf8_lossy(&out.stderr).replace(&dir.display().to_string(), "[TMP]")
+}
+
+#[test]
+fn check_accepts_a_valid_file() {
+    let dir = temp_dir("check-valid");
+    let file = write(&dir, "valid.toml", VALID);
+    let out = hawser(&["check", file.to_str().unwrap()]);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out, &dir));
+    assert!(stdout.contains("ok"), "{stdout}");
+    assert!(stdout.contains("2 line(s), 4 point(s)"), "{stdout}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn check_rejects_a_bad_file_with_exit_code_2() {
+    let dir = temp_dir("check-bad");
+    let text = VALID
+        .replacen("diameter = 0.09", "diamter = 0.09", 1)
+        .replacen("elements = 10", "elements = \"10\"", 1);
+    let file = write(&dir, "bad.toml", &text);
+    let out = hawser(&["check", file.to_str().unwrap()]);
+    let err = stderr(&out, &dir);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(out.stdout.is_empty());
+    assert!(err.contains("[TMP]/bad.toml:"), "{err}");
+    insta::assert_snapshot!(err);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn check_reports_every_error() {
+    let dir = temp_dir("check-several");
+    let text = VALID
+        .replacen("end_b = \"fairlead\"", "end_b = \"fairled\"", 1)
+        .replacen("mass_per_length = 77.7", "mass_per_length = -77.7", 1)
+        .replacen("elements = 4", "elements = 0", 1);
+    let file = write(&dir, "several.toml", &text);
+    let out = hawser(&["check", file.to_str().unwrap()]);
+    let err = stderr(&out, &dir);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(err.contains("3 errors in [TMP]/several.toml"), "{err}");
+    insta::assert_snapshot!(err);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn check_reports_a_missing_file() {
+    let dir = temp_dir("check-missing");
+    let file = dir.join("nowhere.toml");
+    let out = hawser(&["check", file.to_str().unwrap()]);
+    let err = stderr(&out, &dir);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(err.contains("[TMP]/nowhere.toml"), "{err}");
+    assert!(err.contains("hint"), "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn run_rejects_a_time_step_above_the_stability_limit() {
+    let dir = temp_dir("run-step");
+    let text = VALID.replacen("time_step = \"auto\"", "time_step = 0.01", 1);
+    let file = write(&dir, "step.toml", &text);
+    let out_dir = dir.join("out");
+    let out = hawser(&[
+        "run",
+        file.to_str().unwrap(),
+        "--out",
+        out_dir.to_str().unwrap(),
+        "--quiet",
+    ]);
+    let err = stderr(&out, &dir);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(err.contains("simulation.time_step"), "{err}");
+    assert!(err.contains("stability limit"), "{err}");
+    assert!(err.contains("[TMP]/step.toml:3:13"), "{err}");
+    insta::assert_snapshot!(err);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn check_rejects_a_time_step_above_the_stability_limit() {
+    let dir = temp_dir("check-step");
+    let text = VALID.replacen("time_step = \"auto\"", "time_step = 0.01", 1);
+    let file = write(&dir, "step.toml", &text);
+    let out = hawser(&["check", file.to_str().unwrap()]);
+    let err = stderr(&out, &dir);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(err.contains("[TMP]/step.toml:3:13"), "{err}");
+    assert!(err.contains("simulation.time_step"), "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn help() {
+    let out = hawser(&["--help"]);
+    assert_eq!(out.status.code(), Some(0));
+    insta::assert_snapshot!(String::from_utf8_lossy(&out.stdout));
+}
