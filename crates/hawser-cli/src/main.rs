@@ -39,6 +39,10 @@ enum Command {
         /// Hide the progress bar.
         #[arg(long)]
         quiet: bool,
+        /// Accept a `time_step` above the stability estimate (expert use; the run stops with
+        /// the time, line and node if it diverges).
+        #[arg(long)]
+        allow_unstable_step: bool,
     },
     /// Find the static equilibrium and print tensions and positions.
     Statics {
@@ -78,11 +82,18 @@ enum Command {
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
-        Command::Run { file, out, quiet } => run(&file, &out, quiet),
+        Command::Run {
+            file,
+            out,
+            quiet,
+            allow_unstable_step,
+        } => run(&file, &out, quiet, allow_unstable_step),
         Command::Statics { file, json } => statics(&file, json),
         Command::Check { file } => check(&file),
         Command::Schema => {
-            println!("{}", scenario::json_schema());
+            // Ignore a closed pipe (`hawser schema | head`).
+            use std::io::Write;
+            let _ = writeln!(std::io::stdout().lock(), "{}", scenario::json_schema());
             Ok(ExitCode::SUCCESS)
         }
         Command::Bench {
@@ -177,7 +188,7 @@ impl Observer for Progress<'_> {
     }
 }
 
-fn run(file: &Path, out: &Path, quiet: bool) -> Result<ExitCode> {
+fn run(file: &Path, out: &Path, quiet: bool, allow_unstable_step: bool) -> Result<ExitCode> {
     let Some(loaded) = load(file) else {
         return Ok(ExitCode::from(2));
     };
@@ -209,13 +220,34 @@ fn run(file: &Path, out: &Path, quiet: bool) -> Result<ExitCode> {
             );
         }
     }
-    let mut sim = match Simulation::new(&system, &model.settings, y0) {
+    let built = if allow_unstable_step {
+        Simulation::new_unchecked(&system, &model.settings, y0)
+    } else {
+        Simulation::new(&system, &model.settings, y0)
+    };
+    let mut sim = match built {
         Ok(s) => s,
         Err(e) => {
             eprintln!("{}", step_error(file, &loaded, &e));
             return Ok(ExitCode::from(2));
         }
     };
+    if sim.step > sim.stable_step.0 {
+        eprintln!(
+            "warning: time step {:.4e} s is above the stability estimate {:.4e} s ({}); --allow-unstable-step is set",
+            sim.step, sim.stable_step.0, sim.stable_step.1
+        );
+    }
+    if (sim.sample_interval() - model.settings.output_interval).abs()
+        > 1e-9 * model.settings.output_interval
+    {
+        eprintln!(
+            "note: output_interval {} s is not a whole number of {} s steps; sampling every {} s",
+            model.settings.output_interval,
+            sim.step,
+            sim.sample_interval()
+        );
+    }
     if !quiet {
         eprintln!(
             "time step {:.4e} s (stability limit {:.4e} s, set by {}), {} steps",
@@ -273,10 +305,10 @@ fn run(file: &Path, out: &Path, quiet: bool) -> Result<ExitCode> {
         }
         Err(e) => {
             let msg = e.to_string();
+            let last = writer.last_time();
             writer.finish(&system, &sim.state, &ws, Some(&msg))?;
             eprintln!(
-                "error: {msg}\n  = results up to t = {:.6} s are in {} (marked incomplete)",
-                sim.time,
+                "error: {msg}\n  = results up to t = {last:.6} s are in {} (marked incomplete)",
                 out.display()
             );
             Ok(ExitCode::from(1))

@@ -91,6 +91,11 @@ impl RunWriter {
         })
     }
 
+    /// Time of the last sample written [s].
+    pub fn last_time(&self) -> Real {
+        self.last_time
+    }
+
     fn write_sample(&mut self, system: &System, time: Real, ws: &Workspace) -> std::io::Result<()> {
         for (i, c) in self.channels.iter().enumerate() {
             self.row[i] = c.value(system, ws);

@@ -41,11 +41,31 @@ impl<'a> Simulation<'a> {
         settings: &Settings,
         initial: Vec<Real>,
     ) -> Result<Self, SimulationError> {
+        Self::build(system, settings, initial, true)
+    }
+
+    /// As [`Simulation::new`], but a fixed step above the stability estimate is taken as
+    /// given (for experts who know the estimate is conservative for their case; a run that
+    /// then diverges stops with [`SimulationError::Diverged`]).
+    pub fn new_unchecked(
+        system: &'a System,
+        settings: &Settings,
+        initial: Vec<Real>,
+    ) -> Result<Self, SimulationError> {
+        Self::build(system, settings, initial, false)
+    }
+
+    fn build(
+        system: &'a System,
+        settings: &Settings,
+        initial: Vec<Real>,
+        check: bool,
+    ) -> Result<Self, SimulationError> {
         let (limit, culprit) = system.stable_step(settings.scheme);
         let wanted = match settings.time_step {
             TimeStep::Auto => settings.safety_factor * limit,
             TimeStep::Fixed(dt) => {
-                if dt > limit {
+                if check && dt > limit {
                     return Err(SimulationError::StepTooLarge {
                         step: dt,
                         limit,
@@ -55,9 +75,15 @@ impl<'a> Simulation<'a> {
                 dt
             }
         };
-        // A whole number of steps per output interval, none longer than wanted.
-        let per_output = (settings.output_interval / wanted).ceil().max(1.0);
-        let step = settings.output_interval / per_output;
+        // Auto: a whole number of steps per output interval, none longer than wanted. Fixed:
+        // the user's step exactly, sampling every round(output_interval / step) steps.
+        let (step, per_output) = match settings.time_step {
+            TimeStep::Auto => {
+                let n = (settings.output_interval / wanted).ceil().max(1.0);
+                (settings.output_interval / n, n)
+            }
+            TimeStep::Fixed(dt) => (dt, (settings.output_interval / dt).round().max(1.0)),
+        };
         let ws = system.workspace();
         let n = initial.len();
         Ok(Self {
@@ -72,6 +98,11 @@ impl<'a> Simulation<'a> {
             steps_per_output: per_output as usize,
             steps_done: 0,
         })
+    }
+
+    /// Interval between samples [s] (a whole number of steps).
+    pub fn sample_interval(&self) -> Real {
+        self.step * self.steps_per_output as Real
     }
 
     /// Right-hand-side evaluations per step.
@@ -116,14 +147,14 @@ impl<'a> Simulation<'a> {
             if let Some(e) = lw.elements.strain.iter().position(|&s| !(s < 1.0)) {
                 let loc = crate::system::Location {
                     object: sys.lines[li].name.clone(),
-                    node: e,
+                    node: e + 1,
                 };
-                return Err(divergence(
-                    sys,
-                    self.time,
-                    loc,
-                    "runaway strain above 100 %",
-                ));
+                let reason = format!(
+                    "runaway strain {:.3} above 100 % in element {e}, between nodes {e} and {}",
+                    lw.elements.strain[e],
+                    e + 1
+                );
+                return Err(divergence(sys, self.time, loc, &reason));
             }
         }
         Ok(&self.ws)
