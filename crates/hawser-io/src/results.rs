@@ -22,6 +22,7 @@ pub struct RunWriter {
     timeseries: BufWriter<File>,
     snapshots: Vec<BufWriter<File>>,
     snapshot_interval: Option<Real>,
+    scenario: String,
     next_snapshot: Real,
     last_time: Real,
     samples: u64,
@@ -84,6 +85,7 @@ impl RunWriter {
             timeseries: ts,
             snapshots,
             snapshot_interval,
+            scenario: scenario.display().to_string(),
             next_snapshot: 0.0,
             last_time: 0.0,
             samples: 0,
@@ -123,7 +125,7 @@ impl RunWriter {
                         writeln!(
                             w,
                             "{time},{i},{},{},{},{},{t}",
-                            l.fe.arc_length(i),
+                            l.fe.arc_length(i) + 0.0,
                             p.x,
                             p.y,
                             p.z
@@ -206,7 +208,7 @@ impl RunWriter {
         )?;
         write_json(
             &self.dir.join("status.json"),
-            &json!({"complete": complete, "state": if complete {"finished"} else {"stopped"}, "error": error, "end_time": self.last_time}),
+            &json!({"complete": complete, "state": if complete {"finished"} else {"stopped"}, "error": error, "end_time": self.last_time, "scenario": self.scenario}),
         )
     }
 }

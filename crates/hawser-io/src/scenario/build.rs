@@ -151,6 +151,29 @@ pub fn build(file: &Path, source: &str) -> Result<LoadedScenario, ScenarioError>
         &line_types,
     );
     check_free_points_held(&mut b, &scenario.points, &lines, &points);
+    if scenario.lines.is_empty() {
+        let d = b
+            .diag(Some(0..0), "lines", "the scenario defines no lines")
+            .expected("at least one [[lines]] table")
+            .hint("add a line between two points; docs/scenario.md has a complete minimal example");
+        b.push(d);
+    }
+    for (i, p) in scenario.points.iter().enumerate() {
+        if let Some(li) = scenario
+            .lines
+            .iter()
+            .position(|l| l.name.get_ref() == p.name.get_ref())
+        {
+            let d = b
+                .diag(
+                    Some(p.name.span()),
+                    &format!("points[{i}].name"),
+                    format!("point `{}` has the name of line {}", p.name.get_ref(), li),
+                )
+                .hint("points and lines share the channel namespace: give them different names");
+            b.push(d);
+        }
+    }
     let (settings, time_step_span) = build_settings(&mut b, scenario.simulation.as_ref());
     let mut model = Model {
         environment,
@@ -1107,6 +1130,16 @@ fn build_points(
                 ));
             b.push(d);
         }
+        if name.contains(['.', ',', '"']) || name.is_empty() {
+            let d = b
+                .diag(
+                    Some(p.name.span()),
+                    &k("name"),
+                    "point names must be non-empty without `.`, `,` or quotes",
+                )
+                .hint("they become channel names such as `buoy.z`");
+            b.push(d);
+        }
         let kind = *p.kind.get_ref();
         let kind_name = match kind {
             PointKindSpec::Fixed => "a fixed point",
@@ -1278,7 +1311,14 @@ fn build_motion(b: &mut Builder, m: &MotionSpec, position: Option<Vec3>, key: &s
         MotionKind::Fixed => &[],
         MotionKind::ConstantVelocity => &["velocity"],
         MotionKind::Sinusoid => &["amplitude", "period", "frequency", "phase", "ramp_time"],
-        MotionKind::CircularOrbit => &["radius", "frequency", "phase", "plane", "ramp_time"],
+        MotionKind::CircularOrbit => &[
+            "radius",
+            "frequency",
+            "period",
+            "phase",
+            "plane",
+            "ramp_time",
+        ],
         MotionKind::TimeSeries => &["table", "file"],
     };
     for (name, is, span) in [
@@ -1302,7 +1342,10 @@ fn build_motion(b: &mut Builder, m: &MotionSpec, position: Option<Vec3>, key: &s
                 .diag(
                     span,
                     &k(name),
-                    format!("`{name}` does not apply to a `{:?}` motion", kind).to_lowercase(),
+                    format!(
+                        "`{name}` does not apply to a `{}` motion",
+                        motion_name(kind)
+                    ),
                 )
                 .hint(format!(
                     "this motion takes: {}",
@@ -1386,6 +1429,25 @@ fn build_motion(b: &mut Builder, m: &MotionSpec, position: Option<Vec3>, key: &s
                     1.0
                 }
             };
+            for (key, v) in [
+                ("frequency", &m.frequency),
+                ("period", &m.period),
+                ("phase", &m.phase),
+            ] {
+                if let Some(v) = v {
+                    if matches!(v.get_ref(), ScalarOrVec3::Vector(_)) {
+                        let d = b
+                            .diag(
+                                Some(v.span()),
+                                &k(key),
+                                format!("an orbit takes one `{key}`, not one per axis"),
+                            )
+                            .expected("a single number")
+                            .hint(format!("write e.g. `{key} = 0.2`"));
+                        b.push(d);
+                    }
+                }
+            }
             let f = frequency_of(b, m, &k("frequency"))[0];
             let (e1, e2) = match m.plane.unwrap_or(PlaneSpec::Xz) {
                 PlaneSpec::Xy => (Vec3::x(), Vec3::y()),
@@ -1473,6 +1535,17 @@ fn finite3(b: &mut Builder, v: &Spanned<ScalarOrVec3>, key: &str, unit: &str) ->
         return [0.0; 3];
     }
     a
+}
+
+/// The name of a motion kind as written in scenario files.
+fn motion_name(kind: MotionKind) -> &'static str {
+    match kind {
+        MotionKind::Fixed => "fixed",
+        MotionKind::ConstantVelocity => "constant-velocity",
+        MotionKind::Sinusoid => "sinusoid",
+        MotionKind::CircularOrbit => "circular-orbit",
+        MotionKind::TimeSeries => "time-series",
+    }
 }
 
 fn frequency_of(b: &mut Builder, m: &MotionSpec, key: &str) -> [f64; 3] {

@@ -297,7 +297,7 @@ pub struct PointSpec {
     #[serde(rename = "type")]
     #[schemars(with = "PointKindSpec")]
     pub kind: Spanned<PointKindSpec>,
-    /// Position [m] (initial position for free points; reference position for motions).
+    /// Position [m] (fixed; initial for free points; start of a prescribed motion)
     #[serde(default)]
     #[schemars(with = "Option<[f64; 3]>")]
     pub position: Option<Spanned<[f64; 3]>>,
@@ -334,9 +334,9 @@ pub enum MotionKind {
     Fixed,
     /// `position + velocity·t`.
     ConstantVelocity,
-    /// Sinusoid per axis about `position`.
+    /// Sinusoid per axis, starting at `position`.
     Sinusoid,
-    /// Circular orbit about `position` in a coordinate plane.
+    /// Circular orbit in a coordinate plane, starting at `position`.
     CircularOrbit,
     /// Piecewise-linear positions from a table or a CSV file.
     TimeSeries,
@@ -382,8 +382,7 @@ pub struct MotionSpec {
     #[serde(default)]
     #[schemars(with = "Option<ScalarOrVec3>")]
     pub phase: Option<Spanned<ScalarOrVec3>>,
-    /// Build-up time [s] over which the amplitude ramps smoothly from zero
-    /// (`sinusoid`, `circular-orbit`), default 0 (none).
+    /// Build-up time [s] over which the amplitude ramps smoothly from zero (`sinusoid`, `circular-orbit`), default 0 (none).
     #[serde(default)]
     #[schemars(with = "Option<f64>")]
     pub ramp_time: Option<Spanned<f64>>,

@@ -21,7 +21,7 @@ pub enum Motion {
     /// r_i(t) = centre_i + R(t) · amplitude_i · (sin(2π f_i t + phase_i) − sin(phase_i)) per
     /// axis, with R the build-up ramp (see [`ramp`]); the point starts at `centre`.
     Sinusoid {
-        /// Mean position [m].
+        /// Position at t = 0 [m] (the mean position when the phase is 0).
         centre: Vec3,
         /// Amplitude per axis [m].
         amplitude: Vec3,
@@ -37,7 +37,7 @@ pub enum Motion {
     /// x–z plane); the point starts at `centre` and orbits the centre
     /// `centre − a (cos φ e1 + sin φ e2)`; R is the build-up ramp.
     CircularOrbit {
-        /// Centre [m].
+        /// Position at t = 0 [m].
         centre: Vec3,
         /// Radius a [m].
         radius: Real,
@@ -163,9 +163,10 @@ impl Motion {
     }
 }
 
-/// Build-up ramp R(t) = ½(1 − cos(π t / T)) for t < T, 1 after, with its first and second
-/// derivatives; continuous in position, velocity and acceleration at t = 0 (R'(0) = 0), so a
-/// motion starts from rest without the velocity jump of a bare sinusoid.
+/// Build-up ramp R(t) = 10τ³ − 15τ⁴ + 6τ⁵ with τ = t/T for t < T, 1 after (the quintic
+/// smoothstep), with its first and second time derivatives. R' and R'' vanish at both ends,
+/// so a ramped motion starts from rest and its velocity and acceleration are continuous at
+/// t = 0 and at t = T: no start-up jerk for the lines to respond to.
 pub fn ramp(t: Real, duration: Real) -> (Real, Real, Real) {
     if duration <= 0.0 || t >= duration {
         return (1.0, 0.0, 0.0);
@@ -173,9 +174,13 @@ pub fn ramp(t: Real, duration: Real) -> (Real, Real, Real) {
     if t <= 0.0 {
         return (0.0, 0.0, 0.0);
     }
-    let k = std::f64::consts::PI / duration;
-    let (s, c) = (k * t).sin_cos();
-    (0.5 * (1.0 - c), 0.5 * k * s, 0.5 * k * k * c)
+    let x = t / duration;
+    let (x2, x3) = (x * x, x * x * x);
+    (
+        x3 * (10.0 - 15.0 * x + 6.0 * x2),
+        30.0 * x2 * (1.0 - x) * (1.0 - x) / duration,
+        60.0 * x * (1.0 - 3.0 * x + 2.0 * x2) / (duration * duration),
+    )
 }
 
 #[cfg(test)]
@@ -213,6 +218,10 @@ mod tests {
         let (r, v, a) = m.kinematics(0.0);
         assert_eq!((r.norm(), v.norm(), a.norm()), (0.0, 0.0, 0.0));
         let h = 1e-6;
+        // Continuous acceleration across the end of the ramp.
+        let (_, _, a_before) = m.kinematics(3.0 - 1e-9);
+        let (_, _, a_after) = m.kinematics(3.0 + 1e-9);
+        assert!((a_before - a_after).norm() < 1e-6);
         for t in [0.5, 2.9, 3.5] {
             let (r0, v0, a0) = m.kinematics(t);
             let (r1, v1, _) = m.kinematics(t + h);

@@ -1,0 +1,106 @@
+//! Input checks added after the first snapshot round: names that would break channel names,
+//! a scenario without lines, and circular-orbit parameters.
+
+use hawser_io::scenario::parse;
+use std::path::Path;
+
+const BASE: &str = r#"
+[[line_types]]
+name = "rope"
+diameter = 0.02
+mass_per_length = 0.5
+axial_stiffness = 1e7
+normal_drag = 1.2
+tangential_drag = 0.01
+
+[[points]]
+name = "top"
+type = "prescribed"
+position = [0.0, 0.0, -1.0]
+MOTION
+
+[[points]]
+name = "POINT"
+type = "free"
+position = [0.0, 0.0, -51.0]
+mass = 10.0
+
+[[lines]]
+name = "L1"
+end_a = "top"
+end_b = "POINT"
+type = "rope"
+length = 50.0
+elements = 10
+"#;
+
+fn scenario(motion: &str, point: &str) -> String {
+    BASE.replace("MOTION", motion).replace("POINT", point)
+}
+
+fn error(text: &str) -> String {
+    parse(Path::new("scenario.toml"), text)
+        .unwrap_err()
+        .to_string()
+}
+
+#[test]
+fn a_point_name_with_a_dot_is_refused_with_its_position() {
+    let e = error(&scenario(r#"motion = { type = "fixed" }"#, "weight.1"));
+    assert!(
+        e.contains("point names must be non-empty without `.`"),
+        "{e}"
+    );
+    assert!(e.contains("scenario.toml:17:8"), "{e}");
+    assert!(!e.contains("has no `motion`"), "{e}");
+}
+
+#[test]
+fn a_point_named_like_a_line_is_refused() {
+    let e = error(&scenario(r#"motion = { type = "fixed" }"#, "L1"));
+    assert!(e.contains("point `L1` has the name of line 0"), "{e}");
+    assert!(
+        e.contains("hint: points and lines share the channel namespace"),
+        "{e}"
+    );
+}
+
+#[test]
+fn a_scenario_without_lines_is_refused() {
+    let e = error("[[points]]\nname = \"a\"\ntype = \"fixed\"\nposition = [0.0, 0.0, -1.0]\n");
+    assert!(e.contains("the scenario defines no lines"), "{e}");
+    assert!(e.contains("hint: add a line between two points"), "{e}");
+}
+
+#[test]
+fn an_orbit_accepts_a_period_and_refuses_per_axis_values() {
+    let ok = scenario(
+        r#"motion = { type = "circular-orbit", radius = 2.0, period = 5.0 }"#,
+        "payload",
+    );
+    let loaded = parse(Path::new("scenario.toml"), &ok).expect("a period is accepted for an orbit");
+    let hawser::model::PointKind::Prescribed(hawser::model::Motion::CircularOrbit {
+        frequency,
+        ..
+    }) = &loaded.model.points[0].kind
+    else {
+        panic!("not an orbit")
+    };
+    assert!((frequency - 0.2).abs() < 1e-15);
+    let e = error(&scenario(
+        r#"motion = { type = "circular-orbit", radius = 2.0, frequency = [0.2, 0.2, 0.2] }"#,
+        "payload",
+    ));
+    assert!(
+        e.contains("an orbit takes one `frequency`, not one per axis"),
+        "{e}"
+    );
+    let e = error(&scenario(
+        r#"motion = { type = "circular-orbit", radius = 2.0, frequency = 0.2, amplitude = 1.0 }"#,
+        "payload",
+    ));
+    assert!(
+        e.contains("does not apply to a `circular-orbit` motion"),
+        "{e}"
+    );
+}
