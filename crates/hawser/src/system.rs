@@ -468,7 +468,8 @@ impl System {
     /// Per element: the highest mode of a two-node element with axial stiffness k = EA_max/L0,
     /// damping c/L0 and node mass γ_a L0/2 (lumped) or a third of it (consistent mass),
     /// λ = −ζω ± ω√(ζ² − 1) in the element's relative coordinate; per node in seabed contact:
-    /// ω = √(K_g d/γ0); the step is R/|λ|max with R the radius of the scheme's stability region
+    /// ω = √(K_g d/γ0); seabed friction, linearised about rest as a damper μ|w|π/v_μ per
+    /// length; the step is R/|λ|max with R the radius of the scheme's stability region
     /// along the left half-plane (RK4 2.6, SSP-RK3 1.7).
     pub fn stable_step(&self, scheme: Scheme) -> (Real, String) {
         let radius = match scheme {
@@ -511,6 +512,24 @@ impl System {
                     if lambda > worst {
                         worst = lambda;
                         culprit = format!("seabed contact of line {} section {}", l.name, k + 1);
+                    }
+                    // Friction μ w tanh(π|v|/v_μ) acts near v = 0 as a damper of coefficient
+                    // μ |w| π / v_μ per length on the sliding (lumped, least) mass γ0 + ρ A C_an:
+                    // a real eigenvalue −μ|w|π/(v_μ γ).
+                    let wet = (lt.mass_per_length - rho * s.area) * self.environment.gravity;
+                    if seabed.friction_coefficient > 0.0 && wet > 0.0 {
+                        let slider = lt.mass_per_length + rho * s.area * lt.normal_added_mass.max(0.0);
+                        let lambda = seabed.friction_coefficient * wet * std::f64::consts::PI
+                            / (seabed.friction_velocity * slider);
+                        if lambda > worst {
+                            worst = lambda;
+                            culprit = format!(
+                                "seabed friction of line {} section {} (friction_velocity {} m/s)",
+                                l.name,
+                                k + 1,
+                                seabed.friction_velocity
+                            );
+                        }
                     }
                 }
             }
