@@ -225,75 +225,72 @@ impl Observer for RunWriter {
     }
 }
 
-/// The positions, velocities and tensions of every line and point, as JSON.
-pub fn state_json(system: &System, ws: &Workspace, time: Real, state: &[Real]) -> Value {
-    let lines: serde_json::Map<String, Value> = system
-        .lines
-        .iter()
-        .enumerate()
-        .map(|(li, l)| {
-            let lw = &ws.lines[li];
-            (
-                l.name.clone(),
-                json!({
-                    "positions": lw.position.iter().map(|p| [p.x, p.y, p.z]).collect::<Vec<_>>(),
-                    "velocities": lw.velocity.iter().map(|p| [p.x, p.y, p.z]).collect::<Vec<_>>(),
-                    "tension": (0..=l.fe.elements()).map(|i| system.node_tension(ws, li, i)).collect::<Vec<_>>(),
-                }),
-            )
-        })
-        .collect();
-    json!({"time": time, "lines": lines, "points": points_json(system, ws), "state_vector": state})
+/// One line's node positions, node tensions and end forces as JSON fields; with `velocities`
+/// also the node velocities.
+fn line_json(system: &System, ws: &Workspace, li: usize, velocities: bool) -> Value {
+    let lw = &ws.lines[li];
+    let end = |b: bool| {
+        let f = system.end_force(ws, li, b);
+        json!({"tension": f.norm(), "force": [f.x, f.y, f.z]})
+    };
+    let mut v = json!({
+        "positions": lw.position.iter().map(|p| [p.x, p.y, p.z]).collect::<Vec<_>>(),
+        "tension": (0..=system.lines[li].fe.elements()).map(|i| system.node_tension(ws, li, i)).collect::<Vec<_>>(),
+        "end_a": end(false),
+        "end_b": end(true),
+    });
+    if velocities {
+        v["velocities"] = json!(
+            lw.velocity
+                .iter()
+                .map(|p| [p.x, p.y, p.z])
+                .collect::<Vec<_>>()
+        );
+    }
+    v
 }
 
-fn points_json(system: &System, ws: &Workspace) -> Value {
+/// Every point's position and, with `velocities`, velocity, as JSON.
+fn points_json(system: &System, ws: &Workspace, velocities: bool) -> Value {
     system
         .points
         .iter()
         .enumerate()
         .map(|(i, p)| {
             let k = &ws.points[i];
-            (p.name.clone(), json!({"position": [k.position.x, k.position.y, k.position.z], "velocity": [k.velocity.x, k.velocity.y, k.velocity.z]}))
+            let mut v = json!({"position": [k.position.x, k.position.y, k.position.z]});
+            if velocities {
+                v["velocity"] = json!([k.velocity.x, k.velocity.y, k.velocity.z]);
+            }
+            (p.name.clone(), v)
         })
         .collect::<serde_json::Map<String, Value>>()
         .into()
 }
 
-/// The static solution as JSON: per line node positions, node tensions and the force each end
-/// exerts on its attachment; per point its position.
-pub fn statics_json(system: &System, ws: &Workspace) -> Value {
-    let lines: serde_json::Map<String, Value> = system
+fn lines_json(system: &System, ws: &Workspace, velocities: bool) -> Value {
+    system
         .lines
         .iter()
         .enumerate()
-        .map(|(li, l)| {
-            let lw = &ws.lines[li];
-            let end = |b: bool| {
-                let f = system.end_force(ws, li, b);
-                json!({"tension": f.norm(), "force": [f.x, f.y, f.z]})
-            };
-            (
-                l.name.clone(),
-                json!({
-                    "positions": lw.position.iter().map(|p| [p.x, p.y, p.z]).collect::<Vec<_>>(),
-                    "tension": (0..=l.fe.elements()).map(|i| system.node_tension(ws, li, i)).collect::<Vec<_>>(),
-                    "end_a": end(false),
-                    "end_b": end(true),
-                }),
-            )
-        })
-        .collect();
-    let points: serde_json::Map<String, Value> = system
-        .points
-        .iter()
-        .enumerate()
-        .map(|(i, p)| {
-            let k = &ws.points[i];
-            (
-                p.name.clone(),
-                json!({"position": [k.position.x, k.position.y, k.position.z]}),
-            )
-        })
-        .collect();
-    json!({"lines": lines, "points": points})
+        .map(|(li, l)| (l.name.clone(), line_json(system, ws, li, velocities)))
+        .collect::<serde_json::Map<String, Value>>()
+        .into()
+}
+
+/// The positions, velocities, tensions and end forces of every line and point, and the state
+/// vector, as JSON (`final_state.json`).
+pub fn state_json(system: &System, ws: &Workspace, time: Real, state: &[Real]) -> Value {
+    json!({
+        "time": time,
+        "lines": lines_json(system, ws, true),
+        "points": points_json(system, ws, true),
+        "state_vector": state,
+    })
+}
+
+/// The static solution as JSON: per line node positions, node tensions and the force each end
+/// exerts on its attachment; per point its position.
+pub fn statics_json(system: &System, ws: &Workspace) -> Value {
+    json!({"lines": lines_json(system, ws, false), "points": points_json(system, ws, false)})
 }

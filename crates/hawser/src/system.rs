@@ -518,7 +518,8 @@ impl System {
                     // a real eigenvalue −μ|w|π/(v_μ γ).
                     let wet = (lt.mass_per_length - rho * s.area) * self.environment.gravity;
                     if seabed.friction_coefficient > 0.0 && wet > 0.0 {
-                        let slider = lt.mass_per_length + rho * s.area * lt.normal_added_mass.max(0.0);
+                        let slider =
+                            lt.mass_per_length + rho * s.area * lt.normal_added_mass.max(0.0);
                         let lambda = seabed.friction_coefficient * wet * std::f64::consts::PI
                             / (seabed.friction_velocity * slider);
                         if lambda > worst {
