@@ -462,76 +462,124 @@ impl System {
         }
     }
 
-    /// Largest stable time step [s] of `scheme` for this system near the state in `ws`, and a
-    /// description of what sets it.
+    /// Largest stable time step [s] of `scheme` for this system, and what sets it.
     ///
-    /// Per element: the highest mode of a two-node element with axial stiffness k = EA_max/L0,
-    /// damping c/L0 and node mass γ_a L0/2 (lumped) or a third of it (consistent mass),
-    /// λ = −ζω ± ω√(ζ² − 1) in the element's relative coordinate; per node in seabed contact:
-    /// ω = √(K_g d/γ0); seabed friction, linearised about rest as a damper μ|w|π/v_μ per
-    /// length; the step is R/|λ|max with R the radius of the scheme's stability region
-    /// along the left half-plane (RK4 2.6, SSP-RK3 1.7).
+    /// The linearised equations at a node are M ẍ + C ẋ + K x = 0. For an eigenvector, with
+    /// the Rayleigh quotients m, c, k, λ² m + λ c + k = 0, so |λ| ≤ max(c/m, √(k/m)) (the
+    /// larger root is √(k/m) when underdamped and below c/m when overdamped). We bound c and k
+    /// by Gershgorin row sums at every node, and m by the node's smallest mass: the lumped
+    /// mass (γ0 + ρA·min(C_an, C_at)) L_node, a third of it for the consistent mass matrix
+    /// (whose top mode has that mass), plus a free point's own mass and added mass.
+    ///
+    /// Rows per adjacent element: axial stiffness 2·EA_max/L0 and damping 2·c/L0. Where the
+    /// line can reach the seabed, the contact spring K_g d L0/2 and damper 2ζ√(K_g d γ0) L0/2
+    /// act vertically and the friction, linearised about rest, μ|w|π/v_μ · L0/2, horizontally
+    /// (DG paper eqs. 15–16). A line resting on the bed is horizontal, so the vertical bound
+    /// takes the contact terms alone and the horizontal bound the axial terms plus friction.
+    /// The step is R/|λ|max with R the smallest radius of the scheme's stability region over
+    /// the left half-plane: RK4 2.6 (2.615 computed), SSP-RK3 1.7 (1.732).
     pub fn stable_step(&self, scheme: Scheme) -> (Real, String) {
         let radius = match scheme {
             Scheme::Rk4 => 2.6,
             Scheme::SspRk3 => 1.7,
         };
+        let env = &self.environment;
+        let rho = env.water_density;
+        let seabed = &env.seabed;
+        let mut point_rows = vec![NodeRows::default(); self.points.len()];
+        for (i, p) in self.points.iter().enumerate() {
+            if let PointKind::Free {
+                mass,
+                volume,
+                added_mass_coefficient,
+                ..
+            } = &p.kind
+            {
+                point_rows[i].mass = mass + rho * volume * added_mass_coefficient;
+            }
+        }
         let mut worst = 0.0;
         let mut culprit = String::from("nothing (no elements)");
-        let rho = self.environment.water_density;
         for l in &self.lines {
+            let n = l.fe.elements();
             let consistent = l.fe.mass_matrix == crate::model::MassMatrix::Consistent;
-            for (k, s) in l.fe.sections.iter().enumerate() {
+            let mass_factor = if consistent { 1.0 / 3.0 } else { 1.0 };
+            // Can this line touch the seabed? Its lowest possible point is its lower end minus
+            // its length.
+            let low = self.points[l.end_a]
+                .position
+                .z
+                .min(self.points[l.end_b].position.z);
+            let reaches_bed = env.depth.is_finite()
+                && seabed.stiffness > 0.0
+                && low - l.fe.arc_length(n) <= env.seabed_z();
+            let mut rows = vec![NodeRows::default(); n + 1];
+            for e in 0..n {
+                let s = &l.fe.sections[l.fe.element_section[e]];
                 let lt = &s.line_type;
-                let gamma = lt.mass_per_length + rho * s.area * lt.tangential_added_mass.max(0.0);
                 let l0 = s.element_length;
-                let mut node_mass = gamma * l0 * 0.5;
-                if consistent {
-                    node_mass /= 3.0;
+                let gamma = lt.mass_per_length
+                    + rho * s.area * lt.normal_added_mass.min(lt.tangential_added_mass).max(0.0);
+                let mut add = NodeRows {
+                    mass: gamma * 0.5 * l0 * mass_factor,
+                    axial_damping: 2.0 * s.law.damping / l0,
+                    axial_stiffness: 2.0 * s.law.stiffness.max_tangent() / l0,
+                    ..Default::default()
+                };
+                if reaches_bed {
+                    let kd = seabed.stiffness * lt.diameter;
+                    add.contact_stiffness = kd * 0.5 * l0;
+                    add.contact_damping =
+                        2.0 * seabed.damping_ratio * (kd * lt.mass_per_length).sqrt() * 0.5 * l0;
+                    let wet = (lt.mass_per_length - rho * s.area) * env.gravity;
+                    if seabed.friction_coefficient > 0.0 && wet > 0.0 {
+                        add.friction_damping =
+                            seabed.friction_coefficient * wet * std::f64::consts::PI
+                                / seabed.friction_velocity
+                                * 0.5
+                                * l0;
+                    }
                 }
-                // Relative coordinate of the two nodes: mass m/2, stiffness k, damper c.
-                let mr = 0.5 * node_mass;
-                let stiffness = s.law.stiffness.max_tangent() / l0;
-                let damper = s.law.damping / l0;
-                let lambda = eigen_magnitude(mr, stiffness, damper);
+                rows[e].add(&add);
+                rows[e + 1].add(&add);
+            }
+            for (node, row) in rows.iter().enumerate() {
+                let end = if node == 0 {
+                    Some(l.end_a)
+                } else if node == n {
+                    Some(l.end_b)
+                } else {
+                    None
+                };
+                if let Some(p) = end {
+                    // End nodes move with their point: only free points are unknowns.
+                    if self.points[p].free_index.is_some() {
+                        point_rows[p].add(row);
+                    }
+                    continue;
+                }
+                let (lambda, what) = row.bound();
+                if lambda > worst {
+                    worst = lambda;
+                    let s = &l.fe.sections[l.fe.element_section[node.min(n - 1)]];
+                    culprit = format!(
+                        "{what} at line {} node {node} (element length {:.4} m, axial wave speed {:.1} m/s)",
+                        l.name,
+                        s.element_length,
+                        (s.law.stiffness.max_tangent() / s.line_type.mass_per_length).sqrt()
+                    );
+                }
+            }
+        }
+        for (p, row) in point_rows.iter().enumerate() {
+            if self.points[p].free_index.is_some() && row.mass > 0.0 {
+                let (lambda, what) = row.bound();
                 if lambda > worst {
                     worst = lambda;
                     culprit = format!(
-                        "line {} section {} (element length {:.4} m, axial wave speed {:.1} m/s)",
-                        l.name,
-                        k + 1,
-                        l0,
-                        (s.law.stiffness.max_tangent() / lt.mass_per_length).sqrt()
+                        "{what} at free point {} and its line ends",
+                        self.points[p].name
                     );
-                }
-                let seabed = &self.environment.seabed;
-                if self.environment.depth.is_finite() && seabed.stiffness > 0.0 {
-                    let ks = seabed.stiffness * lt.diameter;
-                    let cs = 2.0 * seabed.damping_ratio * (ks * lt.mass_per_length).sqrt();
-                    let lambda = eigen_magnitude(lt.mass_per_length, ks, cs);
-                    if lambda > worst {
-                        worst = lambda;
-                        culprit = format!("seabed contact of line {} section {}", l.name, k + 1);
-                    }
-                    // Friction μ w tanh(π|v|/v_μ) acts near v = 0 as a damper of coefficient
-                    // μ |w| π / v_μ per length on the sliding (lumped, least) mass γ0 + ρ A C_an:
-                    // a real eigenvalue −μ|w|π/(v_μ γ).
-                    let wet = (lt.mass_per_length - rho * s.area) * self.environment.gravity;
-                    if seabed.friction_coefficient > 0.0 && wet > 0.0 {
-                        let slider =
-                            lt.mass_per_length + rho * s.area * lt.normal_added_mass.max(0.0);
-                        let lambda = seabed.friction_coefficient * wet * std::f64::consts::PI
-                            / (seabed.friction_velocity * slider);
-                        if lambda > worst {
-                            worst = lambda;
-                            culprit = format!(
-                                "seabed friction of line {} section {} (friction_velocity {} m/s)",
-                                l.name,
-                                k + 1,
-                                seabed.friction_velocity
-                            );
-                        }
-                    }
                 }
             }
         }
@@ -542,14 +590,48 @@ impl System {
     }
 }
 
-/// Largest |λ| of m ẍ + c ẋ + k x = 0.
-fn eigen_magnitude(m: Real, k: Real, c: Real) -> Real {
-    let a = c / (2.0 * m);
-    let disc = a * a - k / m;
-    if disc >= 0.0 {
-        a + disc.sqrt()
-    } else {
-        (k / m).sqrt()
+/// Gershgorin row sums of one node's linearised mass, damping and stiffness, by direction.
+#[derive(Clone, Copy, Debug, Default)]
+struct NodeRows {
+    mass: Real,
+    axial_damping: Real,
+    axial_stiffness: Real,
+    contact_damping: Real,
+    contact_stiffness: Real,
+    friction_damping: Real,
+}
+
+impl NodeRows {
+    fn add(&mut self, o: &NodeRows) {
+        self.mass += o.mass;
+        self.axial_damping += o.axial_damping;
+        self.axial_stiffness += o.axial_stiffness;
+        self.contact_damping += o.contact_damping;
+        self.contact_stiffness += o.contact_stiffness;
+        self.friction_damping += o.friction_damping;
+    }
+
+    /// Bound on |λ| [1/s] and the term that sets it.
+    fn bound(&self) -> (Real, &'static str) {
+        let m = self.mass;
+        [
+            (
+                (self.axial_damping + self.friction_damping) / m,
+                if self.friction_damping > 0.0 {
+                    "axial damping and seabed friction"
+                } else {
+                    "axial damping"
+                },
+            ),
+            ((self.axial_stiffness / m).sqrt(), "axial stiffness"),
+            (self.contact_damping / m, "seabed contact damping"),
+            (
+                (self.contact_stiffness / m).sqrt(),
+                "seabed contact stiffness",
+            ),
+        ]
+        .into_iter()
+        .fold((0.0, "nothing"), |a, b| if b.0 > a.0 { b } else { a })
     }
 }
 

@@ -4,7 +4,7 @@
 //! its stiffness, m_i = 2 Σ k (Gershgorin bound for a unit step), so all nodes converge at
 //! similar rates; the velocities are reset whenever the kinetic energy peaks.
 
-use super::newton::residual;
+use super::newton::{effective_tolerance, residual};
 use crate::math::{Real, Vec3, get3, set3};
 use crate::system::{System, Workspace};
 
@@ -40,7 +40,7 @@ pub fn relax(system: &System, y: &mut [Real], tol: Real, ws: &mut Workspace) -> 
     for _ in 0..200_000 {
         let (n, _) = residual(system, y, 1.0, ws, &mut r);
         norm = n;
-        if !(norm > tol) {
+        if !(norm > effective_tolerance(tol, ws)) {
             break;
         }
         let mut ke = 0.0;

@@ -68,6 +68,19 @@ fn force_scale(system: &System) -> Real {
     s.max(1e-9)
 }
 
+/// The convergence tolerance [N] in force at the current iterate: the weight-based `tol`, or
+/// 1e-10 of the largest element tension in the workspace when that is larger (a pretensioned
+/// or current-loaded line in zero gravity has forces far above its weight, and round-off in
+/// its nodal balance scales with its tension).
+pub(super) fn effective_tolerance(tol: Real, ws: &Workspace) -> Real {
+    let tension = ws
+        .lines
+        .iter()
+        .flat_map(|l| l.elements.tension.iter())
+        .fold(0.0, |m: Real, t| m.max(t.abs()));
+    tol.max(1e-10 * tension)
+}
+
 /// Static residual: the net force [N] on every position unknown, stored at that unknown's
 /// index in the state layout (velocity entries are left at zero). Returns the largest entry
 /// magnitude and its index.
@@ -383,6 +396,7 @@ fn newton(
     let mut mu: Real = 0.0;
     let debug = std::env::var_os("HAWSER_DEBUG_NEWTON").is_some();
     for it in 0..max_iter {
+        let tol = effective_tolerance(tol, ws);
         if norm <= tol {
             return (true, it, norm);
         }
@@ -447,10 +461,10 @@ fn newton(
             mu = (mu * 10.0).max(1e-6 * scale);
         }
         if !accepted {
-            return (norm <= tol, it + 1, norm);
+            return (norm <= effective_tolerance(tol, ws), it + 1, norm);
         }
     }
-    (norm <= tol, max_iter, norm)
+    (norm <= effective_tolerance(tol, ws), max_iter, norm)
 }
 
 /// Finds the static equilibrium of the system with prescribed points at their t = 0
@@ -527,7 +541,7 @@ pub fn solve(
     y.copy_from_slice(&seed);
     let dr_res = dynamic_relaxation::relax(system, &mut y, tol, &mut ws);
     let (ok, it, res) = newton(system, &mut y, 1.0, tol, options.max_iterations, &mut ws);
-    if ok || dr_res <= tol {
+    if ok || dr_res <= effective_tolerance(tol, &ws) {
         return Ok(StaticSolution {
             state: y,
             iterations: total + it,
