@@ -1,0 +1,58 @@
+//! `time_step = "auto"` must be stable: every bundled example, switched to the automatic step,
+//! runs 10 s to completion. (An earlier stability estimate took the largest single-term rate
+//! and let the OC3 example diverge within 0.2 s.)
+
+use std::path::PathBuf;
+use std::process::Command;
+
+#[test]
+fn every_example_runs_stably_with_the_automatic_step() {
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let dir = std::env::temp_dir().join(format!("hawser-auto-step-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let mut examples: Vec<_> = std::fs::read_dir(root.join("examples"))
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+        .collect();
+    examples.sort();
+    assert!(examples.len() >= 4, "{examples:?}");
+    for example in examples {
+        let text = std::fs::read_to_string(&example).unwrap();
+        let text: String = text
+            .lines()
+            .map(|l| {
+                if l.starts_with("time_step =") {
+                    "time_step = \"auto\"".to_string()
+                } else if l.starts_with("duration =") {
+                    "duration = 10.0".to_string()
+                } else {
+                    l.to_string()
+                }
+            })
+            .collect::<Vec<_>>()
+            .join("\n");
+        let name = example.file_stem().unwrap().to_str().unwrap().to_string();
+        let file = dir.join(format!("{name}.toml"));
+        std::fs::write(&file, text).unwrap();
+        let out = dir.join(&name);
+        let result = Command::new(env!("CARGO_BIN_EXE_hawser"))
+            .args([
+                "run",
+                file.to_str().unwrap(),
+                "--out",
+                out.to_str().unwrap(),
+                "--quiet",
+            ])
+            .output()
+            .unwrap();
+        assert!(
+            result.status.success(),
+            "{name}: {}",
+            String::from_utf8_lossy(&result.stderr)
+        );
+        let status = std::fs::read_to_string(out.join("status.json")).unwrap();
+        assert!(status.contains("\"complete\": true"), "{name}: {status}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
