@@ -7,6 +7,8 @@
 //! Conventions (SPEC §1): SI units, z up, z = 0 at the still water level, seabed at
 //! z = −depth; strain ε = |∂r/∂s| − 1 from current positions.
 #![warn(missing_docs)]
+// `!(x > 0.0)` is deliberate throughout: it rejects NaN, which `x <= 0.0` would let through.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 pub mod analysis;
 pub mod error;

@@ -5,8 +5,8 @@
 use crate::error::SimulationError;
 use crate::integrate::ExplicitRk;
 use crate::math::Real;
-use crate::model::{Scheme, Settings, TimeStep};
-use crate::system::{System, Workspace, divergence};
+use crate::model::{Settings, TimeStep};
+use crate::system::{Location, System, Workspace};
 
 /// Receives the state at every output time.
 pub trait Observer {
@@ -122,13 +122,18 @@ impl<'a> Simulation<'a> {
             self.integrator
                 .step(sys, &mut self.ws, self.time, self.step, &mut self.state)
         {
-            return Err(divergence(sys, self.time, loc, "singular mass matrix"));
+            return Err(divergence(
+                self.stable_step.0,
+                self.time,
+                loc,
+                "singular mass matrix",
+            ));
         }
         self.steps_done += 1;
         self.time = self.steps_done as Real * self.step;
         if let Some(i) = self.state.iter().position(|x| !x.is_finite()) {
             return Err(divergence(
-                sys,
+                self.stable_step.0,
                 self.time - self.step,
                 sys.locate(i),
                 "non-finite position or velocity",
@@ -141,11 +146,13 @@ impl<'a> Simulation<'a> {
     pub fn evaluate(&mut self) -> Result<&Workspace, SimulationError> {
         let sys = self.system;
         sys.rhs(self.time, &self.state, &mut self.derivative, &mut self.ws)
-            .map_err(|loc| divergence(sys, self.time, loc, "singular mass matrix"))?;
+            .map_err(|loc| {
+                divergence(self.stable_step.0, self.time, loc, "singular mass matrix")
+            })?;
         // Runaway strain: more than 100 % is no cable.
         for (li, lw) in self.ws.lines.iter().enumerate() {
             if let Some(e) = lw.elements.strain.iter().position(|&s| !(s < 1.0)) {
-                let loc = crate::system::Location {
+                let loc = Location {
                     object: sys.lines[li].name.clone(),
                     node: e + 1,
                 };
@@ -154,7 +161,7 @@ impl<'a> Simulation<'a> {
                     lw.elements.strain[e],
                     e + 1
                 );
-                return Err(divergence(sys, self.time, loc, &reason));
+                return Err(divergence(self.stable_step.0, self.time, loc, &reason));
             }
         }
         Ok(&self.ws)
@@ -180,9 +187,15 @@ impl<'a> Simulation<'a> {
         }
         Ok(())
     }
+}
 
-    /// The scheme used.
-    pub fn scheme_name(&self, scheme: Scheme) -> &'static str {
-        scheme.tableau().name
+/// The error for a non-finite or runaway state at `location`, with the stable step estimate.
+fn divergence(stable_step: Real, time: Real, location: Location, reason: &str) -> SimulationError {
+    SimulationError::Diverged {
+        time,
+        object: location.object,
+        node: location.node,
+        reason: reason.to_string(),
+        stable_step,
     }
 }

@@ -6,7 +6,7 @@
 //! position then its velocity. End nodes are not line state: they belong to the point they are
 //! attached to (fixed, prescribed, or free and then in the state).
 
-use crate::error::{ModelError, SimulationError};
+use crate::error::ModelError;
 use crate::formulation::fe::{ElementState, FeLine, LoadOptions, line_forces};
 use crate::linalg::{CoupledSystem, EndKind, LineBlocks, Singular};
 use crate::math::{Mat3, Real, Vec3, get3, set3};
@@ -338,7 +338,6 @@ impl System {
         self.gather_lines(y, ws);
         let options = LoadOptions {
             current_factor: 1.0,
-            with_mass: true,
         };
         for (li, l) in self.lines.iter().enumerate() {
             let lw = &mut ws.lines[li];
@@ -632,28 +631,5 @@ impl NodeRows {
         ]
         .into_iter()
         .fold((0.0, "nothing"), |a, b| if b.0 > a.0 { b } else { a })
-    }
-}
-
-impl Workspace {
-    /// Element tensions [N] of a line from the last evaluation.
-    pub fn tensions(&self, line: usize) -> &[Real] {
-        &self.lines[line].elements.tension
-    }
-}
-
-/// Builds the error for a non-finite or runaway state.
-pub fn divergence(
-    system: &System,
-    time: Real,
-    location: Location,
-    reason: &str,
-) -> SimulationError {
-    SimulationError::Diverged {
-        time,
-        object: location.object,
-        node: location.node,
-        reason: reason.to_string(),
-        stable_step: system.stable_step(Scheme::Rk4).0,
     }
 }

@@ -118,14 +118,12 @@ impl ElementState {
     }
 }
 
-/// Scale factor on loads for statics continuation: current drag and point loads are
-/// multiplied by `load_factor`.
+/// Load scaling for statics continuation (the mass blocks are assembled when the caller
+/// passes them).
 #[derive(Clone, Copy, Debug)]
 pub struct LoadOptions {
     /// Multiplies the current velocity seen by drag [-].
     pub current_factor: Real,
-    /// Whether to assemble the mass blocks.
-    pub with_mass: bool,
 }
 
 /// Evaluates the nodal forces [N] of an `fe` line at positions `r` [m] and velocities `v`

@@ -97,10 +97,7 @@ pub fn residual(
         k.velocity = Vec3::zeros();
     }
     system.gather_lines(y, ws);
-    let options = LoadOptions {
-        current_factor,
-        with_mass: false,
-    };
+    let options = LoadOptions { current_factor };
     for (li, l) in system.lines.iter().enumerate() {
         let lw = &mut ws.lines[li];
         lw.velocity.iter_mut().for_each(|v| *v = Vec3::zeros());
@@ -210,10 +207,7 @@ pub fn catenary_seed(system: &System, y: &mut [Real], ws: &mut Workspace) {
 /// Finite-difference Jacobian ∂F/∂x of the static residual into the workspace's line blocks
 /// and point blocks.
 fn jacobian(system: &System, y: &[Real], current_factor: Real, ws: &mut Workspace) {
-    let options = LoadOptions {
-        current_factor,
-        with_mass: false,
-    };
+    let options = LoadOptions { current_factor };
     system.point_kinematics(0.0, y, ws);
     system.gather_lines(y, ws);
     let env = &system.environment;
