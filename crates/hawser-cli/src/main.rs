@@ -209,16 +209,16 @@ fn run(file: &Path, out: &Path, quiet: bool, allow_unstable_step: bool) -> Resul
             return Ok(ExitCode::from(1));
         }
     };
-    if let Some(sol) = &sol {
-        if !quiet {
-            eprintln!(
-                "statics: {} after {} iterations, residual {:.2e} N ({:.2} s)",
-                sol.method,
-                sol.iterations,
-                sol.residual,
-                t0.elapsed().as_secs_f64()
-            );
-        }
+    if let Some(sol) = &sol
+        && !quiet
+    {
+        eprintln!(
+            "statics: {} after {} iterations, residual {:.2e} N ({:.2} s)",
+            sol.method,
+            sol.iterations,
+            sol.residual,
+            t0.elapsed().as_secs_f64()
+        );
     }
     let built = if allow_unstable_step {
         Simulation::new_unchecked(&system, &model.settings, y0)
@@ -372,16 +372,16 @@ fn check(file: &Path) -> Result<ExitCode> {
     let model = &loaded.model;
     let system = system_of(model)?;
     let (limit, culprit) = system.stable_step(model.settings.scheme);
-    if let hawser::model::TimeStep::Fixed(dt) = model.settings.time_step {
-        if dt > limit {
-            let e = SimulationError::StepTooLarge {
-                step: dt,
-                limit,
-                culprit,
-            };
-            eprintln!("{}", step_error(file, &loaded, &e));
-            return Ok(ExitCode::from(2));
-        }
+    if let hawser::model::TimeStep::Fixed(dt) = model.settings.time_step
+        && dt > limit
+    {
+        let e = SimulationError::StepTooLarge {
+            step: dt,
+            limit,
+            culprit,
+        };
+        eprintln!("{}", step_error(file, &loaded, &e));
+        return Ok(ExitCode::from(2));
     }
     let nodes: usize = system.lines.iter().map(|l| l.fe.elements() + 1).sum();
     println!(

@@ -115,27 +115,27 @@ impl RunWriter {
                 0.5 * (l.fe.arc_length(e) + l.fe.arc_length(e + 1))
             });
         }
-        if let Some(interval) = self.snapshot_interval {
-            if time >= self.next_snapshot - 1e-9 * interval {
-                for (li, l) in system.lines.iter().enumerate() {
-                    let w = &mut self.snapshots[li];
-                    let lw = &ws.lines[li];
-                    for (i, p) in lw.position.iter().enumerate() {
-                        let t = system.node_tension(ws, li, i);
-                        writeln!(
-                            w,
-                            "{time},{i},{},{},{},{},{t}",
-                            l.fe.arc_length(i) + 0.0,
-                            p.x,
-                            p.y,
-                            p.z
-                        )?;
-                    }
-                    w.flush()?;
+        if let Some(interval) = self.snapshot_interval
+            && time >= self.next_snapshot - 1e-9 * interval
+        {
+            for (li, l) in system.lines.iter().enumerate() {
+                let w = &mut self.snapshots[li];
+                let lw = &ws.lines[li];
+                for (i, p) in lw.position.iter().enumerate() {
+                    let t = system.node_tension(ws, li, i);
+                    writeln!(
+                        w,
+                        "{time},{i},{},{},{},{},{t}",
+                        l.fe.arc_length(i) + 0.0,
+                        p.x,
+                        p.y,
+                        p.z
+                    )?;
                 }
-                while self.next_snapshot <= time + 1e-9 * interval {
-                    self.next_snapshot += interval;
-                }
+                w.flush()?;
+            }
+            while self.next_snapshot <= time + 1e-9 * interval {
+                self.next_snapshot += interval;
             }
         }
         Ok(())
@@ -217,10 +217,10 @@ impl Observer for RunWriter {
     fn sample(&mut self, system: &System, time: Real, _state: &[Real], ws: &Workspace) {
         self.last_time = time;
         self.samples += 1;
-        if self.error.is_none() {
-            if let Err(e) = self.write_sample(system, time, ws) {
-                self.error = Some(e);
-            }
+        if self.error.is_none()
+            && let Err(e) = self.write_sample(system, time, ws)
+        {
+            self.error = Some(e);
         }
     }
 }

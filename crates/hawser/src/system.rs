@@ -418,13 +418,14 @@ impl System {
             }
         }
         for (p, off) in self.layout.point_offset.iter().enumerate() {
-            if let Some(o) = off {
-                if index >= *o && index < o + 6 {
-                    return Location {
-                        object: self.points[p].name.clone(),
-                        node: 0,
-                    };
-                }
+            if let Some(o) = off
+                && index >= *o
+                && index < o + 6
+            {
+                return Location {
+                    object: self.points[p].name.clone(),
+                    node: 0,
+                };
             }
         }
         Location {

@@ -183,11 +183,11 @@ pub fn build(file: &Path, source: &str) -> Result<LoadedScenario, ScenarioError>
         settings,
     };
     let channels = build_channels(&mut b, scenario.simulation.as_ref(), &model);
-    if b.errors.is_empty() {
-        if let Err(e) = model.validate() {
-            let d = b.diag(None, "", e.to_string());
-            b.push(d);
-        }
+    if b.errors.is_empty()
+        && let Err(e) = model.validate()
+    {
+        let d = b.diag(None, "", e.to_string());
+        b.push(d);
     }
     if !b.errors.is_empty() {
         b.errors.sort_by_key(|d| (d.line, d.column));
@@ -1146,10 +1146,7 @@ fn build_points(
             PointKindSpec::Free => "a free point",
             PointKindSpec::Prescribed => "a prescribed point",
         };
-        let position = match &p.position {
-            Some(v) => Some(b.vec3(v, &k("position"))),
-            None => None,
-        };
+        let position = p.position.as_ref().map(|v| b.vec3(v, &k("position")));
         if kind != PointKindSpec::Free {
             for (present, span, key) in [
                 (p.mass.is_some(), span_of(&p.mass), "mass"),
@@ -1267,21 +1264,22 @@ fn build_points(
                 Vec3::zeros()
             }
         };
-        if env.depth.is_finite() && pos.z < -env.depth - 1e-9 {
-            if let Some(ps) = &p.position {
-                let d = b
-                    .diag(
-                        Some(ps.span()),
-                        &k("position"),
-                        format!("point `{name}` is below the seabed"),
-                    )
-                    .expected(format!("z ≥ −depth = {}", -env.depth))
-                    .hint(
-                        "raise the point, or increase `environment.depth`; anchors sit on the \
+        if env.depth.is_finite()
+            && pos.z < -env.depth - 1e-9
+            && let Some(ps) = &p.position
+        {
+            let d = b
+                .diag(
+                    Some(ps.span()),
+                    &k("position"),
+                    format!("point `{name}` is below the seabed"),
+                )
+                .expected(format!("z ≥ −depth = {}", -env.depth))
+                .hint(
+                    "raise the point, or increase `environment.depth`; anchors sit on the \
                          seabed at z = −depth",
-                    );
-                b.push(d);
-            }
+                );
+            b.push(d);
         }
         out.push(Point {
             name,
@@ -1434,18 +1432,18 @@ fn build_motion(b: &mut Builder, m: &MotionSpec, position: Option<Vec3>, key: &s
                 ("period", &m.period),
                 ("phase", &m.phase),
             ] {
-                if let Some(v) = v {
-                    if matches!(v.get_ref(), ScalarOrVec3::Vector(_)) {
-                        let d = b
-                            .diag(
-                                Some(v.span()),
-                                &k(key),
-                                format!("an orbit takes one `{key}`, not one per axis"),
-                            )
-                            .expected("a single number")
-                            .hint(format!("write e.g. `{key} = 0.2`"));
-                        b.push(d);
-                    }
+                if let Some(v) = v
+                    && matches!(v.get_ref(), ScalarOrVec3::Vector(_))
+                {
+                    let d = b
+                        .diag(
+                            Some(v.span()),
+                            &k(key),
+                            format!("an orbit takes one `{key}`, not one per axis"),
+                        )
+                        .expected("a single number")
+                        .hint(format!("write e.g. `{key} = 0.2`"));
+                    b.push(d);
                 }
             }
             let f = frequency_of(b, m, &k("frequency"))[0];
@@ -1764,7 +1762,7 @@ fn build_lines(
                 "the unstretched length of this section",
             );
             let n = *elements.get_ref();
-            if n < 1 || n > 1_000_000 {
+            if !(1..=1_000_000).contains(&n) {
                 let d = b
                     .diag(
                         Some(elements.span()),
@@ -2112,10 +2110,11 @@ pub fn parse_channel(name: &str, model: &Model) -> Result<Channel, String> {
             if let Some(a) = axis(q) {
                 return Ok(Channel::PointPosition { point: pi, axis: a });
             }
-            if q.len() == 2 && q.starts_with('v') {
-                if let Some(a) = axis(&q[1..]) {
-                    return Ok(Channel::PointVelocity { point: pi, axis: a });
-                }
+            if q.len() == 2
+                && q.starts_with('v')
+                && let Some(a) = axis(&q[1..])
+            {
+                return Ok(Channel::PointVelocity { point: pi, axis: a });
             }
         }
         return Err(format!("unknown channel `{name}`"));
