@@ -149,6 +149,8 @@ pub fn line_forces(
     let rho_w = env.water_density;
     let bed_z = env.seabed_z();
     let consistent = line.mass_matrix == MassMatrix::Consistent;
+    // No current and no waves: the fluid is at rest everywhere.
+    let still_water = env.is_still_water();
     let mut blocks = blocks;
     if let Some(b) = blocks.as_deref_mut() {
         b.clear();
@@ -184,13 +186,19 @@ pub fn line_forces(
         let w = 0.5 * l0;
         for &xi in &GAUSS {
             let (na, nb) = (1.0 - xi, xi);
-            let rg = ra * na + rb * nb;
+            let zg = ra.z * na + rb.z * nb;
             let vg = va * na + vb * nb;
-            let rho = env.fluid_density(rg.z);
-            let uf = env.fluid_velocity(&rg, time) * options.current_factor;
-            let mut f = drag_force(&lt.drag, rho, lt.diameter, root_stretch, &t, &(uf - vg));
-            let af = env.fluid_acceleration(&rg, time);
-            if af != Vec3::zeros() {
+            let rho = env.fluid_density(zg);
+            let relative = if still_water {
+                -vg
+            } else {
+                let rg = ra * na + rb * nb;
+                env.fluid_velocity(&rg, time) * options.current_factor - vg
+            };
+            let mut f = drag_force(&lt.drag, rho, lt.diameter, root_stretch, &t, &relative);
+            if !still_water {
+                let rg = ra * na + rb * nb;
+                let af = env.fluid_acceleration(&rg, time);
                 f += fluid_inertia_force(
                     rho,
                     sec.area,
@@ -220,18 +228,18 @@ pub fn line_forces(
                 m
             };
             if (ra.z < 0.0) == (rb.z < 0.0) {
-                let m = element_mass(env.fluid_density(ra.z), l0);
+                // α I + β t tᵀ, added straight into the blocks.
+                let rho = env.fluid_density(ra.z);
+                let alpha = l0 * (lt.mass_per_length + rho * sec.area * lt.normal_added_mass);
+                let beta = l0 * rho * sec.area * (lt.tangential_added_mass - lt.normal_added_mass);
                 if consistent {
-                    let third = m * (1.0 / 3.0);
-                    b.diag[e] += third;
-                    b.diag[e + 1] += third;
-                    let sixth = m * (1.0 / 6.0);
-                    b.lower[e] += sixth;
-                    b.upper[e] += sixth;
+                    add_isotropic_plus_outer(&mut b.diag[e], alpha / 3.0, beta / 3.0, &t);
+                    add_isotropic_plus_outer(&mut b.diag[e + 1], alpha / 3.0, beta / 3.0, &t);
+                    add_isotropic_plus_outer(&mut b.lower[e], alpha / 6.0, beta / 6.0, &t);
+                    add_isotropic_plus_outer(&mut b.upper[e], alpha / 6.0, beta / 6.0, &t);
                 } else {
-                    let half = m * 0.5;
-                    b.diag[e] += half;
-                    b.diag[e + 1] += half;
+                    add_isotropic_plus_outer(&mut b.diag[e], 0.5 * alpha, 0.5 * beta, &t);
+                    add_isotropic_plus_outer(&mut b.diag[e + 1], 0.5 * alpha, 0.5 * beta, &t);
                 }
             } else {
                 for &xi in &GAUSS {
@@ -268,6 +276,24 @@ pub fn line_forces(
             }
         }
     }
+}
+
+/// m += α I + β t tᵀ (symmetric: six products).
+#[inline(always)]
+fn add_isotropic_plus_outer(m: &mut Mat3, alpha: Real, beta: Real, t: &Vec3) {
+    let (bx, by) = (beta * t.x, beta * t.y);
+    let xy = bx * t.y;
+    let xz = bx * t.z;
+    let yz = by * t.z;
+    m[(0, 0)] += alpha + bx * t.x;
+    m[(1, 1)] += alpha + by * t.y;
+    m[(2, 2)] += alpha + beta * t.z * t.z;
+    m[(0, 1)] += xy;
+    m[(1, 0)] += xy;
+    m[(0, 2)] += xz;
+    m[(2, 0)] += xz;
+    m[(1, 2)] += yz;
+    m[(2, 1)] += yz;
 }
 
 /// ∫ N_a and ∫ N_b over the submerged (z < 0) part of a straight element from height `za` to

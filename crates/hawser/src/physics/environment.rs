@@ -114,6 +114,13 @@ impl Environment {
         Vec3::zeros()
     }
 
+    /// Whether the fluid is at rest everywhere (no current; waves come with issue 6): drag and
+    /// fluid inertia then need no fluid kinematics.
+    #[inline]
+    pub fn is_still_water(&self) -> bool {
+        matches!(self.current, Current::None)
+    }
+
     /// Height of the seabed z = −depth [m].
     #[inline]
     pub fn seabed_z(&self) -> Real {
