@@ -16,6 +16,19 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::Instant;
 
+/// `println!` that ends the program quietly when stdout is a closed pipe (`hawser ... | head`)
+/// instead of panicking.
+macro_rules! out {
+    ($($arg:tt)*) => {{
+        use std::io::Write as _;
+        if let Err(e) = writeln!(std::io::stdout(), $($arg)*) {
+            if e.kind() == std::io::ErrorKind::BrokenPipe {
+                std::process::exit(0);
+            }
+        }
+    }};
+}
+
 #[derive(Parser)]
 #[command(
     name = "hawser",
@@ -331,19 +344,24 @@ fn statics(file: &Path, json: bool) -> Result<ExitCode> {
     let mut ws = system.workspace();
     hawser::statics::evaluate(&system, &sol.state, &mut ws);
     if json {
-        println!(
+        out!(
             "{}",
             serde_json::to_string_pretty(&statics_json(&system, &ws))?
         );
         return Ok(ExitCode::SUCCESS);
     }
-    println!(
+    out!(
         "static equilibrium: {} ({} iterations, residual {:.2e} N)",
-        sol.method, sol.iterations, sol.residual
+        sol.method,
+        sol.iterations,
+        sol.residual
     );
-    println!(
+    out!(
         "{:<16} {:>14} {:>14} {:>14}",
-        "line", "end A T [N]", "end B T [N]", "max T [N]"
+        "line",
+        "end A T [N]",
+        "end B T [N]",
+        "max T [N]"
     );
     for (li, l) in system.lines.iter().enumerate() {
         let ta = system.end_force(&ws, li, false).norm();
@@ -351,14 +369,17 @@ fn statics(file: &Path, json: bool) -> Result<ExitCode> {
         let tmax = (0..=l.fe.elements())
             .map(|i| system.node_tension(&ws, li, i))
             .fold(0.0, Real::max);
-        println!("{:<16} {:>14.2} {:>14.2} {:>14.2}", l.name, ta, tb, tmax);
+        out!("{:<16} {:>14.2} {:>14.2} {:>14.2}", l.name, ta, tb, tmax);
     }
     for (i, p) in system.points.iter().enumerate() {
         if p.free_index.is_some() {
             let x = ws.points[i].position;
-            println!(
+            out!(
                 "point {:<10} at [{:.4}, {:.4}, {:.4}] m",
-                p.name, x.x, x.y, x.z
+                p.name,
+                x.x,
+                x.y,
+                x.z
             );
         }
     }
@@ -384,7 +405,7 @@ fn check(file: &Path) -> Result<ExitCode> {
         return Ok(ExitCode::from(2));
     }
     let nodes: usize = system.lines.iter().map(|l| l.fe.elements() + 1).sum();
-    println!(
+    out!(
         "{}: ok — {} line(s), {} point(s), {} nodes; stable time step {:.4e} s ({})",
         file.display(),
         system.lines.len(),
@@ -464,14 +485,20 @@ fn bench(
         }));
     }
     if json {
-        println!("{}", serde_json::to_string_pretty(&results)?);
+        out!("{}", serde_json::to_string_pretty(&results)?);
     } else {
-        println!(
+        out!(
             "{:<12} {:>6} {:>10} {:>9} {:>9} {:>16} {:>16}",
-            "mass", "nodes", "dt [s]", "steps", "wall [s]", "node-steps/s", "node-evals/s"
+            "mass",
+            "nodes",
+            "dt [s]",
+            "steps",
+            "wall [s]",
+            "node-steps/s",
+            "node-evals/s"
         );
         for r in &results {
-            println!(
+            out!(
                 "{:<12} {:>6} {:>10.3e} {:>9} {:>9.3} {:>16.3e} {:>16.3e}",
                 r["mass_matrix"].as_str().unwrap_or(""),
                 r["nodes"],

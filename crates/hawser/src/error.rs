@@ -60,6 +60,20 @@ pub enum SimulationError {
 /// A static solve that failed.
 #[derive(Debug, thiserror::Error, Clone, PartialEq)]
 pub enum StaticsError {
+    /// Free points and lines held by no fixed or prescribed point, under a net load.
+    #[error(
+        "no static equilibrium exists: {points} are held by no fixed or prescribed point and carry \
+         a net static force of {net_force:.4e} N ({what}); hint: attach them to an anchor or a \
+         prescribed point, or balance their weight with buoyancy"
+    )]
+    Unsupported {
+        /// Names of the free points of the unsupported group.
+        points: String,
+        /// Magnitude of the group's net static force [N].
+        net_force: Real,
+        /// What that force is made of.
+        what: String,
+    },
     /// Newton and the dynamic-relaxation fallback both failed to converge.
     #[error(
         "no static equilibrium found: Newton stopped after {iterations} iterations with residual \

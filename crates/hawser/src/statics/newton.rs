@@ -461,6 +461,84 @@ fn newton(
     (norm <= effective_tolerance(tol, ws), max_iter, norm)
 }
 
+/// Groups of points joined by lines that contain no fixed or prescribed point: they have no
+/// static equilibrium under a net weight, buoyancy, point force or current drag.
+fn check_supported(system: &System) -> Result<(), StaticsError> {
+    let n = system.points.len();
+    let mut parent: Vec<usize> = (0..n).collect();
+    fn find(parent: &mut [usize], mut i: usize) -> usize {
+        while parent[i] != i {
+            parent[i] = parent[parent[i]];
+            i = parent[i];
+        }
+        i
+    }
+    for l in &system.lines {
+        let (a, b) = (find(&mut parent, l.end_a), find(&mut parent, l.end_b));
+        parent[a] = b;
+    }
+    let env = &system.environment;
+    let g = env.gravity;
+    let roots: Vec<usize> = (0..n).map(|i| find(&mut parent, i)).collect();
+    let mut anchored = vec![false; n];
+    for (i, p) in system.points.iter().enumerate() {
+        if p.free_index.is_none() {
+            anchored[roots[i]] = true;
+        }
+    }
+    for root in 0..n {
+        if anchored[root] || roots[root] != root {
+            continue;
+        }
+        // Net static force on the group: weights, buoyancy (at the initial positions) and
+        // point forces; a current would also push it away.
+        let mut net = Vec3::zeros();
+        let mut names = Vec::new();
+        for (i, p) in system.points.iter().enumerate() {
+            if roots[i] != root {
+                continue;
+            }
+            names.push(format!("`{}`", p.name));
+            if let crate::model::PointKind::Free {
+                mass,
+                volume,
+                force,
+                ..
+            } = &p.kind
+            {
+                net += force - Vec3::z() * (mass * g);
+                if p.position.z < 0.0 {
+                    net.z += env.water_density * volume * g;
+                }
+            }
+        }
+        for l in &system.lines {
+            if roots[l.end_a] != root {
+                continue;
+            }
+            for &k in &l.fe.element_section {
+                let s = &l.fe.sections[k];
+                net.z -= (s.line_type.mass_per_length - env.water_density * s.area)
+                    * g
+                    * s.element_length;
+            }
+        }
+        let drifting = !env.is_still_water();
+        if net.norm() > 1e-9 * force_scale(system) || drifting {
+            return Err(StaticsError::Unsupported {
+                points: names.join(", "),
+                net_force: net.norm(),
+                what: if drifting {
+                    "and a current pushes them".to_string()
+                } else {
+                    "weight, buoyancy and point forces".to_string()
+                },
+            });
+        }
+    }
+    Ok(())
+}
+
 /// Finds the static equilibrium of the system with prescribed points at their t = 0
 /// positions, starting from `initial` (or a catenary seed when `None`).
 pub fn solve(
@@ -468,6 +546,7 @@ pub fn solve(
     initial: Option<&[Real]>,
     options: &StaticOptions,
 ) -> Result<StaticSolution, StaticsError> {
+    check_supported(system)?;
     let mut ws = system.workspace();
     let mut y = match initial {
         Some(y0) => y0.to_vec(),
