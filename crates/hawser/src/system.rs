@@ -319,7 +319,27 @@ impl System {
         }
         let rel = env.fluid_velocity(&k.position, t) * load_factor - k.velocity;
         f += rel * (0.5 * rho * drag_area * rel.norm());
+        if let Some(contact) = self.point_seabed_contact(*volume, m) {
+            f += contact.force(env.seabed_z(), &k.position, &k.velocity, &env.seabed);
+        }
         (f, Mat3::identity() * m)
+    }
+
+    /// Seabed contact of a free point with displaced volume V, modelled as a sphere of that
+    /// volume: `None` without a seabed or without a volume (a massless joint or a point mass
+    /// has no extent to rest on).
+    fn point_seabed_contact(&self, volume: Real, mass: Real) -> Option<SphereContact> {
+        let env = &self.environment;
+        if !(env.depth.is_finite() && env.seabed.stiffness > 0.0 && volume > 0.0 && mass > 0.0) {
+            return None;
+        }
+        let radius = (3.0 * volume / (4.0 * std::f64::consts::PI)).cbrt();
+        let stiffness = env.seabed.stiffness * std::f64::consts::PI * radius * radius;
+        Some(SphereContact {
+            radius,
+            stiffness,
+            damping: 2.0 * env.seabed.damping_ratio * (stiffness * mass).sqrt(),
+        })
     }
 
     /// Right-hand side of the equations of motion: dy/dt at (t, y).
@@ -587,6 +607,43 @@ impl System {
             return (Real::INFINITY, culprit);
         }
         (radius / worst, culprit)
+    }
+}
+
+/// Seabed contact of a free point: a sphere of the point's displaced volume pressing on the
+/// bed with the ground stiffness K_g over its projected area, k = K_g π r² [N/m], damped at
+/// the seabed's damping ratio of the point's own critical damping, with sliding friction
+/// μ N tanh(π|v_xy|/v_μ) (the line contact of DG paper eqs. 15–16 applied to a sphere).
+#[derive(Clone, Copy, Debug)]
+struct SphereContact {
+    radius: Real,
+    stiffness: Real,
+    damping: Real,
+}
+
+impl SphereContact {
+    fn force(
+        &self,
+        bed_z: Real,
+        position: &Vec3,
+        velocity: &Vec3,
+        seabed: &crate::physics::seabed::Seabed,
+    ) -> Vec3 {
+        let penetration = bed_z - (position.z - self.radius);
+        if penetration <= 0.0 {
+            return Vec3::zeros();
+        }
+        let normal = self.stiffness * penetration - self.damping * velocity.z;
+        let mut f = Vec3::new(0.0, 0.0, normal);
+        let vxy = Vec3::new(velocity.x, velocity.y, 0.0);
+        let speed = vxy.norm();
+        if seabed.friction_coefficient > 0.0 && speed > 0.0 && normal > 0.0 {
+            let mag = seabed.friction_coefficient
+                * normal
+                * (std::f64::consts::PI * speed / seabed.friction_velocity).tanh();
+            f -= vxy * (mag / speed);
+        }
+        f
     }
 }
 

@@ -1,4 +1,4 @@
-//! Statics that cannot succeed say why, naming the points.
+//! Statics of free points: unsupported groups are named; a hanging mass and a clump weight on the bed settle where they must.
 
 mod common;
 use common::*;
@@ -59,5 +59,38 @@ fn the_same_pair_hung_from_an_anchor_has_an_equilibrium() {
         sol.state[o].abs() < 1e-6 && sol.state[o + 2] < -19.9,
         "{:?}",
         &sol.state[o..o + 3]
+    );
+}
+
+/// A clump weight resting on the bed (a free point with a volume) sinks into it until the
+/// contact spring K_g π r² carries its wet weight: the sphere's bottom lies W/k below the bed.
+/// The line to it is neutrally buoyant, so it adds no vertical load. Tolerance 1e-9 m: the
+/// statics residual tolerance over k.
+#[test]
+fn a_clump_weight_rests_on_the_seabed() {
+    let d: f64 = 0.05;
+    let neutral = 1025.0 * std::f64::consts::PI * d * d / 4.0;
+    let depth = 50.0;
+    let (mass, volume) = (1000.0, 0.13);
+    let radius = (3.0 * volume / (4.0 * std::f64::consts::PI)).cbrt();
+    let mut model = single_line(
+        line_type(d, neutral, 1e7),
+        10.0,
+        10,
+        fixed("anchor", Vec3::new(0.0, 0.0, -depth + radius)),
+        free("clump", Vec3::new(10.0, 0.0, -depth + radius), mass, volume),
+        MassMatrix::Consistent,
+    );
+    model.environment.depth = depth;
+    let system = System::new(&model).unwrap();
+    let sol = solve(&system, None, &StaticOptions::default()).expect("statics");
+    let o = system.layout.point_offset[1].unwrap();
+    let k = model.environment.seabed.stiffness * std::f64::consts::PI * radius * radius;
+    let wet = (mass - 1025.0 * volume) * 9.80665;
+    let bottom = sol.state[o + 2] - radius;
+    let expected = -depth - wet / k;
+    assert!(
+        (bottom - expected).abs() < 1e-9,
+        "bottom {bottom} vs {expected}"
     );
 }
