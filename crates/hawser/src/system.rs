@@ -50,6 +50,8 @@ pub struct SystemPoint {
     pub kind: PointKind,
     /// Index among free points.
     pub free_index: Option<usize>,
+    /// Seabed contact of a free point with a volume, fixed at assembly.
+    seabed_contact: Option<SphereContact>,
 }
 
 /// The immutable, assembled system.
@@ -135,6 +137,7 @@ impl System {
                 position,
                 kind: p.kind.clone(),
                 free_index,
+                seabed_contact: SphereContact::new(&model.environment, &p.kind),
             });
         }
         let mut lines = Vec::new();
@@ -319,27 +322,10 @@ impl System {
         }
         let rel = env.fluid_velocity(&k.position, t) * load_factor - k.velocity;
         f += rel * (0.5 * rho * drag_area * rel.norm());
-        if let Some(contact) = self.point_seabed_contact(*volume, m) {
+        if let Some(contact) = &self.points[p].seabed_contact {
             f += contact.force(env.seabed_z(), &k.position, &k.velocity, &env.seabed);
         }
         (f, Mat3::identity() * m)
-    }
-
-    /// Seabed contact of a free point with displaced volume V, modelled as a sphere of that
-    /// volume: `None` without a seabed or without a volume (a massless joint or a point mass
-    /// has no extent to rest on).
-    fn point_seabed_contact(&self, volume: Real, mass: Real) -> Option<SphereContact> {
-        let env = &self.environment;
-        if !(env.depth.is_finite() && env.seabed.stiffness > 0.0 && volume > 0.0 && mass > 0.0) {
-            return None;
-        }
-        let radius = (3.0 * volume / (4.0 * std::f64::consts::PI)).cbrt();
-        let stiffness = env.seabed.stiffness * std::f64::consts::PI * radius * radius;
-        Some(SphereContact {
-            radius,
-            stiffness,
-            damping: 2.0 * env.seabed.damping_ratio * (stiffness * mass).sqrt(),
-        })
     }
 
     /// Right-hand side of the equations of motion: dy/dt at (t, y).
@@ -622,6 +608,32 @@ struct SphereContact {
 }
 
 impl SphereContact {
+    /// The contact of a free point with a volume V (mass with added mass m), modelled as a
+    /// sphere of that volume; `None` for other points, without a seabed, or without a volume
+    /// (a joint or a point mass has no extent to rest on).
+    fn new(env: &Environment, kind: &PointKind) -> Option<Self> {
+        let PointKind::Free {
+            mass,
+            volume,
+            added_mass_coefficient,
+            ..
+        } = kind
+        else {
+            return None;
+        };
+        let m = mass + env.water_density * volume * added_mass_coefficient;
+        if !(env.depth.is_finite() && env.seabed.stiffness > 0.0 && *volume > 0.0 && *mass > 0.0) {
+            return None;
+        }
+        let radius = (3.0 * volume / (4.0 * std::f64::consts::PI)).cbrt();
+        let stiffness = env.seabed.stiffness * std::f64::consts::PI * radius * radius;
+        Some(Self {
+            radius,
+            stiffness,
+            damping: 2.0 * env.seabed.damping_ratio * (stiffness * m).sqrt(),
+        })
+    }
+
     fn force(
         &self,
         bed_z: Real,

@@ -42,7 +42,6 @@ struct Check {
 
 const POSITIVE: fn(f64) -> bool = |x| x > 0.0;
 const NON_NEGATIVE: fn(f64) -> bool = |x| x >= 0.0;
-const ANY: fn(f64) -> bool = |_| true;
 
 impl<'a> Builder<'a> {
     fn diag(
@@ -143,13 +142,7 @@ pub fn build(file: &Path, source: &str) -> Result<LoadedScenario, ScenarioError>
     let environment = build_environment(&mut b, scenario.environment.as_ref());
     let (line_types, type_index) = build_line_types(&mut b, &scenario.line_types);
     let (points, point_index) = build_points(&mut b, &scenario.points, &environment);
-    let lines = build_lines(
-        &mut b,
-        &scenario.lines,
-        &type_index,
-        &point_index,
-        &line_types,
-    );
+    let lines = build_lines(&mut b, &scenario.lines, &type_index, &point_index);
     check_free_points_held(&mut b, &scenario.points, &lines, &points);
     if scenario.lines.is_empty() {
         let d = b
@@ -1036,13 +1029,12 @@ fn build_line_types(
                     tangential: 0.0,
                 }
             }
-            (None, n, tg) => {
+            (None, n, _) => {
                 let missing = if n.is_none() {
                     "normal_drag"
                 } else {
                     "tangential_drag"
                 };
-                let _ = tg;
                 let d = b
                     .diag(Some(t.name.span()), &k(missing), format!("line type `{name}` has no `{missing}`"))
                     .expected("`normal_drag` and `tangential_drag` (dimensionless, on the area d per length), or `loading_functions`")
@@ -1304,7 +1296,6 @@ fn build_motion(b: &mut Builder, m: &MotionSpec, position: Option<Vec3>, key: &s
             .expected("`position = [x, y, z]` on the point, in m");
         b.push(d);
     }
-    let present = |o: bool| o;
     let allowed: &[&str] = match kind {
         MotionKind::Fixed => &[],
         MotionKind::ConstantVelocity => &["velocity"],
@@ -1320,11 +1311,7 @@ fn build_motion(b: &mut Builder, m: &MotionSpec, position: Option<Vec3>, key: &s
         MotionKind::TimeSeries => &["table", "file"],
     };
     for (name, is, span) in [
-        (
-            "velocity",
-            present(m.velocity.is_some()),
-            span_of(&m.velocity),
-        ),
+        ("velocity", m.velocity.is_some(), span_of(&m.velocity)),
         ("amplitude", m.amplitude.is_some(), span_of(&m.amplitude)),
         ("period", m.period.is_some(), span_of(&m.period)),
         ("frequency", m.frequency.is_some(), span_of(&m.frequency)),
@@ -1640,7 +1627,6 @@ fn build_lines(
     specs: &[LineSpec],
     types: &HashMap<String, usize>,
     points: &HashMap<String, usize>,
-    line_types: &[LineType],
 ) -> Vec<Line> {
     let mut out = Vec::new();
     let mut names = HashMap::new();
@@ -1849,7 +1835,6 @@ fn build_lines(
                 Formulation::Fe
             }
         };
-        let _ = line_types;
         out.push(Line {
             name,
             sections,
@@ -1960,7 +1945,6 @@ fn build_settings(
             }
         }
     }
-    let _ = ANY;
     (s, span)
 }
 

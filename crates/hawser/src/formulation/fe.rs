@@ -17,7 +17,7 @@ use crate::linalg::LineBlocks;
 use crate::math::{Mat3, Real, Vec3};
 use crate::model::{LineType, MassMatrix};
 use crate::physics::environment::Environment;
-use crate::physics::hydrodynamics::{drag_force, fluid_inertia_force};
+use crate::physics::hydrodynamics::{added_mass_matrix, drag_force, fluid_inertia_force};
 use crate::physics::material::AxialLaw;
 
 /// Gauss points on [0, 1] for two-point quadrature (weight ½ each).
@@ -189,15 +189,13 @@ pub fn line_forces(
             let zg = ra.z * na + rb.z * nb;
             let vg = va * na + vb * nb;
             let rho = env.fluid_density(zg);
-            let relative = if still_water {
-                -vg
+            let mut f;
+            if still_water {
+                f = drag_force(&lt.drag, rho, lt.diameter, root_stretch, &t, &-vg);
             } else {
                 let rg = ra * na + rb * nb;
-                env.fluid_velocity(&rg, time) * options.current_factor - vg
-            };
-            let mut f = drag_force(&lt.drag, rho, lt.diameter, root_stretch, &t, &relative);
-            if !still_water {
-                let rg = ra * na + rb * nb;
+                let relative = env.fluid_velocity(&rg, time) * options.current_factor - vg;
+                f = drag_force(&lt.drag, rho, lt.diameter, root_stretch, &t, &relative);
                 let af = env.fluid_acceleration(&rg, time);
                 f += fluid_inertia_force(
                     rho,
@@ -217,40 +215,46 @@ pub fn line_forces(
         // integrated with the linear shape functions; exact with one evaluation unless the
         // element crosses the surface, where each Gauss point takes its own density.
         if let Some(b) = blocks.as_deref_mut() {
+            // Element mass over `length` at density `rho`: (γ0 I + added mass) · length.
             let element_mass = |rho: Real, length: Real| -> Mat3 {
-                let alpha = length * (lt.mass_per_length + rho * sec.area * lt.normal_added_mass);
-                let beta =
-                    length * rho * sec.area * (lt.tangential_added_mass - lt.normal_added_mass);
-                let mut m = t * t.transpose() * beta;
-                m[(0, 0)] += alpha;
-                m[(1, 1)] += alpha;
-                m[(2, 2)] += alpha;
-                m
+                let mut m = added_mass_matrix(
+                    rho,
+                    sec.area,
+                    lt.normal_added_mass,
+                    lt.tangential_added_mass,
+                    &t,
+                );
+                for k in 0..3 {
+                    m[(k, k)] += lt.mass_per_length;
+                }
+                m * length
             };
             if (ra.z < 0.0) == (rb.z < 0.0) {
-                // α I + β t tᵀ, added straight into the blocks.
+                // Uniform density: exact shape-function integrals, ∫NaNa = ∫NbNb = 1/3 and
+                // ∫NaNb = 1/6 (consistent), ∫Na = ∫Nb = 1/2 (lumped).
                 let rho = env.fluid_density(ra.z);
-                let alpha = l0 * (lt.mass_per_length + rho * sec.area * lt.normal_added_mass);
-                let beta = l0 * rho * sec.area * (lt.tangential_added_mass - lt.normal_added_mass);
                 if consistent {
-                    add_isotropic_plus_outer(&mut b.diag[e], alpha / 3.0, beta / 3.0, &t);
-                    add_isotropic_plus_outer(&mut b.diag[e + 1], alpha / 3.0, beta / 3.0, &t);
-                    add_isotropic_plus_outer(&mut b.lower[e], alpha / 6.0, beta / 6.0, &t);
-                    add_isotropic_plus_outer(&mut b.upper[e], alpha / 6.0, beta / 6.0, &t);
+                    let third = element_mass(rho, l0 / 3.0);
+                    b.diag[e] += third;
+                    b.diag[e + 1] += third;
+                    let sixth = third * 0.5;
+                    b.lower[e] += sixth;
+                    b.upper[e] += sixth;
                 } else {
-                    add_isotropic_plus_outer(&mut b.diag[e], 0.5 * alpha, 0.5 * beta, &t);
-                    add_isotropic_plus_outer(&mut b.diag[e + 1], 0.5 * alpha, 0.5 * beta, &t);
+                    let half = element_mass(rho, 0.5 * l0);
+                    b.diag[e] += half;
+                    b.diag[e + 1] += half;
                 }
             } else {
+                // Crossing the surface: each Gauss point takes its own density.
                 for &xi in &GAUSS {
                     let (na, nb) = (1.0 - xi, xi);
                     let m = element_mass(env.fluid_density(ra.z * na + rb.z * nb), w);
                     if consistent {
                         b.diag[e] += m * (na * na);
                         b.diag[e + 1] += m * (nb * nb);
-                        let off = m * (na * nb);
-                        b.lower[e] += off;
-                        b.upper[e] += off;
+                        b.lower[e] += m * (na * nb);
+                        b.upper[e] += m * (na * nb);
                     } else {
                         b.diag[e] += m * na;
                         b.diag[e + 1] += m * nb;
@@ -276,24 +280,6 @@ pub fn line_forces(
             }
         }
     }
-}
-
-/// m += α I + β t tᵀ (symmetric: six products).
-#[inline(always)]
-fn add_isotropic_plus_outer(m: &mut Mat3, alpha: Real, beta: Real, t: &Vec3) {
-    let (bx, by) = (beta * t.x, beta * t.y);
-    let xy = bx * t.y;
-    let xz = bx * t.z;
-    let yz = by * t.z;
-    m[(0, 0)] += alpha + bx * t.x;
-    m[(1, 1)] += alpha + by * t.y;
-    m[(2, 2)] += alpha + beta * t.z * t.z;
-    m[(0, 1)] += xy;
-    m[(1, 0)] += xy;
-    m[(0, 2)] += xz;
-    m[(2, 0)] += xz;
-    m[(1, 2)] += yz;
-    m[(2, 1)] += yz;
 }
 
 /// ∫ N_a and ∫ N_b over the submerged (z < 0) part of a straight element from height `za` to

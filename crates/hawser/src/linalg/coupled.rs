@@ -301,10 +301,9 @@ mod tests {
         for l in &lines {
             let n = l.nodes() - 1;
             let mut idx = vec![None; n + 1];
-            for (i, slot) in idx.iter_mut().enumerate().take(n).skip(1) {
+            for slot in idx.iter_mut().take(n).skip(1) {
                 *slot = Some(count);
                 count += 1;
-                let _ = i;
             }
             index.push(idx);
         }

@@ -145,22 +145,6 @@ impl Motion {
     pub fn initial_position(&self) -> Vec3 {
         self.kinematics(0.0).0
     }
-
-    /// Frequencies this motion excites [Hz] (for resonance reports).
-    pub fn frequencies(&self) -> Vec<Real> {
-        match self {
-            Motion::Sinusoid {
-                frequency,
-                amplitude,
-                ..
-            } => (0..3)
-                .filter(|&i| amplitude[i] != 0.0)
-                .map(|i| frequency[i])
-                .collect(),
-            Motion::CircularOrbit { frequency, .. } => vec![*frequency],
-            _ => vec![],
-        }
-    }
 }
 
 /// Build-up ramp R(t) = 10τ³ − 15τ⁴ + 6τ⁵ with τ = t/T for t < T, 1 after (the quintic

@@ -93,7 +93,8 @@ pub fn drag_force(
 }
 
 /// Added-mass matrix per unit unstretched length [kg/m] (DG paper eq. 13):
-/// m_a = ρ A (C_an (I − t tᵀ) + C_at t tᵀ), with A = π d²/4.
+/// m_a = ρ A (C_an (I − t tᵀ) + C_at t tᵀ), with A = π d²/4, evaluated as
+/// ρ A C_an I + ρ A (C_at − C_an) t tᵀ (symmetric: six products).
 #[inline]
 pub fn added_mass_matrix(
     density: Real,
@@ -102,8 +103,21 @@ pub fn added_mass_matrix(
     tangential: Real,
     tangent: &Vec3,
 ) -> Mat3 {
-    let tt = tangent * tangent.transpose();
-    (Mat3::identity() - tt) * (density * area * normal) + tt * (density * area * tangential)
+    let alpha = density * area * normal;
+    let beta = density * area * (tangential - normal);
+    let (t, bx, by) = (tangent, beta * tangent.x, beta * tangent.y);
+    let (xy, xz, yz) = (bx * t.y, bx * t.z, by * t.z);
+    Mat3::new(
+        alpha + bx * t.x,
+        xy,
+        xz,
+        xy,
+        alpha + by * t.y,
+        yz,
+        xz,
+        yz,
+        alpha + beta * t.z * t.z,
+    )
 }
 
 /// Froude–Krylov plus added-mass force from the fluid acceleration a_w per unit unstretched
@@ -125,6 +139,16 @@ pub fn fluid_inertia_force(
 #[cfg(test)]
 mod tests {
     use super::*;
+    #[test]
+    fn added_mass_splits_normal_and_tangential() {
+        let t = Vec3::new(0.6, 0.0, 0.8);
+        let m = added_mass_matrix(1025.0, 0.01, 1.0, 0.2, &t);
+        let n = Vec3::new(0.8, 0.0, -0.6);
+        assert!((m * t - t * (1025.0 * 0.01 * 0.2)).norm() < 1e-12);
+        assert!((m * n - n * (1025.0 * 0.01 * 1.0)).norm() < 1e-12);
+        assert!((m * Vec3::y() - Vec3::y() * (1025.0 * 0.01)).norm() < 1e-12);
+    }
+
     #[test]
     fn morison_splits_normal_and_tangential() {
         let m = DragModel::Morison {

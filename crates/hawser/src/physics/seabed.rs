@@ -67,9 +67,4 @@ impl Seabed {
         }
         f
     }
-
-    /// Largest vertical contact stiffness per length K_g·d [N/m²] seen by a cable of diameter d.
-    pub fn stiffness_per_length(&self, diameter: Real) -> Real {
-        self.stiffness * diameter
-    }
 }

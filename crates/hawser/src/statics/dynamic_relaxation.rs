@@ -5,7 +5,7 @@
 //! similar rates; the velocities are reset whenever the kinetic energy peaks.
 
 use super::newton::{effective_tolerance, residual};
-use crate::math::{Real, Vec3, get3, set3};
+use crate::math::{Real, get3, set3};
 use crate::system::{System, Workspace};
 
 /// Relaxes the positions in `y` toward equilibrium; returns the final largest imbalance [N].
@@ -62,7 +62,6 @@ pub fn relax(system: &System, y: &mut [Real], tol: Real, ws: &mut Workspace) -> 
             let p = get3(y, i) + get3(&vel, i);
             set3(y, i, &p);
         }
-        let _ = Vec3::zeros();
     }
     norm
 }

@@ -325,12 +325,10 @@ fn newton_step(
         for i in 1..n {
             b.x[i] = -get3(&r[o..], i - 1);
         }
-        for (node, p) in [(0, l.end_a), (n, l.end_b)] {
-            b.x[node] = match system.layout.point_offset[p] {
-                Some(_) => Vec3::zeros(), // the point's residual goes in once, below
-                None => Vec3::zeros(),
-            };
-        }
+        // End rows: a known end does not move; a free end's residual goes in once, with its
+        // point, below.
+        b.x[0] = Vec3::zeros();
+        b.x[n] = Vec3::zeros();
     }
     for (f, &p) in system.free_points.iter().enumerate() {
         let o = system.layout.point_offset[p].expect("free point");
