@@ -536,7 +536,7 @@ impl System {
                     let kd = seabed.stiffness * lt.diameter;
                     add.contact_stiffness = kd * 0.5 * l0;
                     add.contact_damping =
-                        2.0 * seabed.damping_ratio * (kd * lt.mass_per_length).sqrt() * 0.5 * l0;
+                        seabed.damping_per_length(lt.diameter, lt.mass_per_length) * 0.5 * l0;
                     let wet = (lt.mass_per_length - rho * s.area) * env.gravity;
                     if seabed.friction_coefficient > 0.0 && wet > 0.0 {
                         add.friction_damping =
@@ -630,7 +630,9 @@ impl SphereContact {
         Some(Self {
             radius,
             stiffness,
-            damping: 2.0 * env.seabed.damping_ratio * (stiffness * m).sqrt(),
+            damping: env
+                .seabed
+                .damping_of_area(std::f64::consts::PI * radius * radius, stiffness, m),
         })
     }
 
