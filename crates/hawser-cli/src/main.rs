@@ -4,13 +4,13 @@
 use anyhow::{Context, Result};
 use clap::{Parser, Subcommand};
 use hawser::math::Real;
-use hawser::model::{InitialCondition, MassMatrix, Model};
+use hawser::model::{InitialCondition, MassMatrix, Model, TimeStep};
 use hawser::simulation::{Observer, Simulation};
 use hawser::statics::{StaticOptions, StaticSolution};
 use hawser::system::{System, Workspace};
 use hawser::{SimulationError, StaticsError};
 use hawser_io::results::{RunWriter, statics_json};
-use hawser_io::scenario::{self, Diagnostic, LoadedScenario};
+use hawser_io::scenario::{self, Diagnostic, InputFormat, LoadedScenario};
 use indicatif::{ProgressBar, ProgressStyle};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -40,11 +40,32 @@ struct Cli {
     command: Command,
 }
 
+/// Choices a MoorDyn deck leaves to its host program.
+#[derive(clap::Args, Clone, Debug, Default)]
+struct DeckArgs {
+    /// MoorDyn decks: simulated duration [s] (default: the vessel motion's length, else 60 s).
+    #[arg(long = "duration", value_name = "SECONDS")]
+    deck_duration: Option<Real>,
+    /// MoorDyn decks: move every Coupled/Vessel point with this vessel motion (columns t, x,
+    /// y, z, roll, pitch, yaw in s, m, deg; its first row is t = 0).
+    #[arg(long, value_name = "FILE")]
+    vessel_motion: Option<PathBuf>,
+}
+
+impl DeckArgs {
+    fn options(&self) -> hawser_io::moordyn::ConvertOptions {
+        hawser_io::moordyn::ConvertOptions {
+            duration: self.deck_duration,
+            vessel_motion: self.vessel_motion.clone(),
+        }
+    }
+}
+
 #[derive(Subcommand)]
 enum Command {
     /// Run a dynamic simulation and write results into a directory.
     Run {
-        /// Scenario file (TOML).
+        /// Scenario file (TOML) or MoorDyn v2 deck.
         file: PathBuf,
         /// Output directory.
         #[arg(long, short, default_value = "out")]
@@ -56,19 +77,33 @@ enum Command {
         /// the time, line and node if it diverges).
         #[arg(long)]
         allow_unstable_step: bool,
+        #[command(flatten)]
+        deck: DeckArgs,
     },
     /// Find the static equilibrium and print tensions and positions.
     Statics {
-        /// Scenario file (TOML).
+        /// Scenario file (TOML) or MoorDyn v2 deck.
         file: PathBuf,
         /// Print the full solution as JSON.
         #[arg(long)]
         json: bool,
     },
-    /// Validate a scenario file without running it.
+    /// Validate a scenario file or MoorDyn deck without running it.
     Check {
-        /// Scenario file (TOML).
+        /// Scenario file (TOML) or MoorDyn v2 deck.
         file: PathBuf,
+        #[command(flatten)]
+        deck: DeckArgs,
+    },
+    /// Convert a MoorDyn v2 deck into the equivalent hawser scenario (TOML).
+    Convert {
+        /// MoorDyn v2 input deck.
+        file: PathBuf,
+        /// Output file (default: standard output).
+        #[arg(long, short)]
+        out: Option<PathBuf>,
+        #[command(flatten)]
+        deck: DeckArgs,
     },
     /// Print the JSON Schema of scenario files.
     Schema,
@@ -100,9 +135,11 @@ fn main() -> ExitCode {
             out,
             quiet,
             allow_unstable_step,
-        } => run(&file, &out, quiet, allow_unstable_step),
+            deck,
+        } => run(&file, &out, quiet, allow_unstable_step, &deck),
         Command::Statics { file, json } => statics(&file, json),
-        Command::Check { file } => check(&file),
+        Command::Check { file, deck } => check(&file, &deck),
+        Command::Convert { file, out, deck } => convert(&file, out.as_deref(), &deck),
         Command::Schema => {
             // Ignore a closed pipe (`hawser schema | head`).
             use std::io::Write;
@@ -126,15 +163,67 @@ fn main() -> ExitCode {
     }
 }
 
-/// Loads a scenario, printing diagnostics; `None` means bad input (already reported).
+/// Loads a scenario or MoorDyn deck, printing diagnostics; `None` means bad input (already
+/// reported).
 fn load(file: &Path) -> Option<LoadedScenario> {
-    match scenario::load(file) {
-        Ok(s) => Some(s),
+    load_with(file, &DeckArgs::default(), false)
+}
+
+/// [`load`] with the choices for a MoorDyn deck; prints the deck's conversion notes unless
+/// `quiet`.
+fn load_with(file: &Path, deck: &DeckArgs, quiet: bool) -> Option<LoadedScenario> {
+    match scenario::load_input(file, &deck.options()) {
+        Ok((s, notes)) => {
+            if !quiet {
+                print_notes(file, &notes);
+            }
+            Some(s)
+        }
         Err(e) => {
             eprintln!("{e}");
             None
         }
     }
+}
+
+fn print_notes(file: &Path, notes: &[hawser_io::moordyn::Note]) {
+    for n in notes {
+        if n.line > 0 {
+            eprintln!("note: {}:{}: {}", file.display(), n.line, n.message);
+        } else {
+            eprintln!("note: {}: {}", file.display(), n.message);
+        }
+    }
+}
+
+fn convert(file: &Path, out: Option<&Path>, deck: &DeckArgs) -> Result<ExitCode> {
+    let source =
+        std::fs::read_to_string(file).with_context(|| format!("cannot read {}", file.display()))?;
+    if !hawser_io::moordyn::looks_like_deck(&source) {
+        eprintln!(
+            "error: {} is not a MoorDyn deck (no `---- LINE TYPES ----`, `---- POINTS ----` or `---- LINES ----` section)\n  = hint: `hawser convert` reads MoorDyn v2 input decks; hawser scenarios need no conversion",
+            file.display()
+        );
+        return Ok(ExitCode::from(2));
+    }
+    let loaded = match hawser_io::moordyn::parse(file, &source, &deck.options()) {
+        Ok(d) => d,
+        Err(e) => {
+            eprintln!("{e}");
+            return Ok(ExitCode::from(2));
+        }
+    };
+    let text = hawser_io::moordyn::to_toml(&loaded, file);
+    match out {
+        Some(path) => {
+            std::fs::write(path, &text)
+                .with_context(|| format!("cannot write {}", path.display()))?;
+            print_notes(file, &loaded.notes);
+            eprintln!("wrote {}", path.display());
+        }
+        None => out!("{text}"),
+    }
+    Ok(ExitCode::SUCCESS)
 }
 
 fn system_of(model: &Model) -> Result<System> {
@@ -201,8 +290,14 @@ impl Observer for Progress<'_> {
     }
 }
 
-fn run(file: &Path, out: &Path, quiet: bool, allow_unstable_step: bool) -> Result<ExitCode> {
-    let Some(loaded) = load(file) else {
+fn run(
+    file: &Path,
+    out: &Path,
+    quiet: bool,
+    allow_unstable_step: bool,
+    deck: &DeckArgs,
+) -> Result<ExitCode> {
+    let Some(mut loaded) = load_with(file, deck, quiet) else {
         return Ok(ExitCode::from(2));
     };
     if !loaded.has_simulation {
@@ -212,8 +307,20 @@ fn run(file: &Path, out: &Path, quiet: bool, allow_unstable_step: bool) -> Resul
         );
         return Ok(ExitCode::from(2));
     }
+    let system = system_of(&loaded.model)?;
+    if loaded.format == InputFormat::MoorDyn
+        && let TimeStep::Fixed(dt) = loaded.model.settings.time_step
+    {
+        let (limit, culprit) = system.stable_step(loaded.model.settings.scheme);
+        if dt > limit && !allow_unstable_step {
+            eprintln!(
+                "warning: the deck's dtM = {dt} s is above hawser's stability limit {limit:.4e} s \
+                 (set by {culprit}); using time_step = \"auto\""
+            );
+            loaded.model.settings.time_step = TimeStep::Auto;
+        }
+    }
     let model = &loaded.model;
-    let system = system_of(model)?;
     let t0 = Instant::now();
     let (y0, sol) = match initial_state(&system, model) {
         Ok(x) => x,
@@ -386,8 +493,8 @@ fn statics(file: &Path, json: bool) -> Result<ExitCode> {
     Ok(ExitCode::SUCCESS)
 }
 
-fn check(file: &Path) -> Result<ExitCode> {
-    let Some(loaded) = load(file) else {
+fn check(file: &Path, deck: &DeckArgs) -> Result<ExitCode> {
+    let Some(loaded) = load_with(file, deck, false) else {
         return Ok(ExitCode::from(2));
     };
     let model = &loaded.model;
@@ -396,13 +503,20 @@ fn check(file: &Path) -> Result<ExitCode> {
     if let hawser::model::TimeStep::Fixed(dt) = model.settings.time_step
         && dt > limit
     {
-        let e = SimulationError::StepTooLarge {
-            step: dt,
-            limit,
-            culprit,
-        };
-        eprintln!("{}", step_error(file, &loaded, &e));
-        return Ok(ExitCode::from(2));
+        if loaded.format == InputFormat::MoorDyn {
+            eprintln!(
+                "warning: the deck's dtM = {dt} s is above hawser's stability limit {limit:.4e} s \
+                 ({culprit}); `hawser run` will use time_step = \"auto\""
+            );
+        } else {
+            let e = SimulationError::StepTooLarge {
+                step: dt,
+                limit,
+                culprit,
+            };
+            eprintln!("{}", step_error(file, &loaded, &e));
+            return Ok(ExitCode::from(2));
+        }
     }
     let nodes: usize = system.lines.iter().map(|l| l.fe.elements() + 1).sum();
     out!(

@@ -5,5 +5,6 @@
 // `!(x > 0.0)` is deliberate throughout: it rejects NaN, which `x <= 0.0` would let through.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
+pub mod moordyn;
 pub mod results;
 pub mod scenario;

@@ -12,6 +12,34 @@ use std::fs::File;
 use std::io::{BufWriter, Write};
 use std::path::{Path, PathBuf};
 
+/// An output column: a channel and, when the scenario named it (`"FairTen1 = L1.end_b.node_force"`,
+/// or a MoorDyn deck's OUTPUTS), its column name.
+#[derive(Clone, Debug, PartialEq)]
+pub struct OutputChannel {
+    /// What is measured.
+    pub channel: Channel,
+    /// Column name given by the scenario, if any.
+    pub label: Option<String>,
+}
+
+impl OutputChannel {
+    /// An unnamed channel (named after what it measures).
+    pub fn new(channel: Channel) -> Self {
+        Self {
+            channel,
+            label: None,
+        }
+    }
+
+    /// Column name without the unit.
+    pub fn name(&self, system: &System) -> String {
+        match &self.label {
+            Some(l) => l.clone(),
+            None => self.channel.name(system),
+        }
+    }
+}
+
 /// Writes a dynamic run's results into a directory while it runs.
 pub struct RunWriter {
     dir: PathBuf,
@@ -44,7 +72,7 @@ impl RunWriter {
     pub fn create(
         dir: &Path,
         system: &System,
-        channels: Vec<Channel>,
+        outputs: Vec<OutputChannel>,
         snapshot_interval: Option<Real>,
         scenario: &Path,
     ) -> std::io::Result<Self> {
@@ -55,7 +83,8 @@ impl RunWriter {
         )?;
         let path = dir.join("timeseries.csv");
         let mut ts = BufWriter::new(File::create(&path).map_err(|e| io_context(&path, e))?);
-        let names: Vec<String> = channels.iter().map(|c| c.name(system)).collect();
+        let names: Vec<String> = outputs.iter().map(|c| c.name(system)).collect();
+        let channels: Vec<Channel> = outputs.iter().map(|c| c.channel).collect();
         write!(ts, "time [s]")?;
         for (c, n) in channels.iter().zip(&names) {
             write!(ts, ",{n} [{}]", c.unit())?;

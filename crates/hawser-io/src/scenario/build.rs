@@ -3,13 +3,14 @@
 
 use super::diagnostics::{Diagnostic, ScenarioError, closest};
 use super::schema::*;
+use crate::results::OutputChannel;
 use hawser::analysis::Channel;
 use hawser::math::Vec3;
 use hawser::model::*;
 use hawser::physics::environment::{Current, Environment};
 use hawser::physics::hydrodynamics::{DragModel, LoadingFunction};
 use hawser::physics::material::{AxialDamping, AxialStiffness};
-use hawser::physics::seabed::Seabed;
+use hawser::physics::seabed::{ContactDamping, Seabed};
 use std::collections::HashMap;
 use std::ops::Range;
 use std::path::Path;
@@ -21,11 +22,23 @@ pub struct LoadedScenario {
     /// The model.
     pub model: Model,
     /// Time-series channels (defaults plus `simulation.channels`).
-    pub channels: Vec<Channel>,
+    pub channels: Vec<OutputChannel>,
     /// Whether `[simulation]` was given.
     pub has_simulation: bool,
     /// Span of `simulation.time_step`, for step errors.
     pub time_step_span: Option<Range<usize>>,
+    /// What the file was.
+    pub format: InputFormat,
+}
+
+/// The format of an input file.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum InputFormat {
+    /// A hawser scenario (TOML).
+    Toml,
+    /// A MoorDyn v2 input deck. Its `dtM` was chosen for MoorDyn's integrator: where it is
+    /// above hawser's stability limit, hawser takes the limit instead of refusing the step.
+    MoorDyn,
 }
 
 struct Builder<'a> {
@@ -134,6 +147,16 @@ fn span_of<T>(v: &Option<Spanned<T>>) -> Option<Range<usize>> {
 /// Reads and validates scenario `source` (the text of `file`).
 pub fn build(file: &Path, source: &str) -> Result<LoadedScenario, ScenarioError> {
     let scenario: Scenario = toml::from_str(source).map_err(|e| schema_errors(file, source, &e))?;
+    build_scenario(file, source, &scenario)
+}
+
+/// Validates a scenario whose values carry spans into `source` (the text of `file`: the TOML
+/// file itself, or a MoorDyn deck the scenario was converted from).
+pub fn build_scenario(
+    file: &Path,
+    source: &str,
+    scenario: &Scenario,
+) -> Result<LoadedScenario, ScenarioError> {
     let mut b = Builder {
         file,
         source,
@@ -196,6 +219,7 @@ pub fn build(file: &Path, source: &str) -> Result<LoadedScenario, ScenarioError>
         channels,
         has_simulation: scenario.simulation.is_some(),
         time_step_span,
+        format: InputFormat::Toml,
     })
 }
 
@@ -708,16 +732,38 @@ fn build_environment(b: &mut Builder, spec: Option<&EnvironmentSpec>) -> Environ
                 },
                 "3e6 Pa/m is a firm bed",
             ),
-            damping_ratio: b.opt(
-                &s.damping_ratio,
-                "environment.seabed.damping_ratio",
-                d.damping_ratio,
-                Check {
-                    ok: NON_NEGATIVE,
-                    expected: "-, ≥ 0 (1 = critical)",
-                },
-                "use 1 for critical damping",
-            ),
+            damping: match (&s.damping_ratio, &s.damping) {
+                (Some(_), Some(c)) => {
+                    let d = b
+                        .diag(
+                            Some(c.span()),
+                            "environment.seabed.damping",
+                            "give either `damping_ratio` or `damping`, not both",
+                        )
+                        .hint("`damping_ratio` scales with each cable's mass; `damping` is per contact area");
+                    b.push(d);
+                    ContactDamping::Ratio(1.0)
+                }
+                (_, Some(c)) => ContactDamping::PerArea(b.num(
+                    c,
+                    "environment.seabed.damping",
+                    Check {
+                        ok: NON_NEGATIVE,
+                        expected: "Pa·s/m, ≥ 0",
+                    },
+                    "MoorDyn's cBot, e.g. 3e5 Pa·s/m",
+                )),
+                (ratio, None) => ContactDamping::Ratio(b.opt(
+                    ratio,
+                    "environment.seabed.damping_ratio",
+                    1.0,
+                    Check {
+                        ok: NON_NEGATIVE,
+                        expected: "-, ≥ 0 (1 = critical)",
+                    },
+                    "use 1 for critical damping",
+                )),
+            },
             friction_coefficient: b.opt(
                 &s.friction_coefficient,
                 "environment.seabed.friction_coefficient",
@@ -1309,6 +1355,7 @@ fn build_motion(b: &mut Builder, m: &MotionSpec, position: Option<Vec3>, key: &s
             "ramp_time",
         ],
         MotionKind::TimeSeries => &["table", "file"],
+        MotionKind::VesselMotion => &["file", "time_offset"],
     };
     for (name, is, span) in [
         ("velocity", m.velocity.is_some(), span_of(&m.velocity)),
@@ -1321,6 +1368,11 @@ fn build_motion(b: &mut Builder, m: &MotionSpec, position: Option<Vec3>, key: &s
         ("plane", m.plane.is_some(), Some(m.kind.span())),
         ("table", m.table.is_some(), span_of(&m.table)),
         ("file", m.file.is_some(), span_of(&m.file)),
+        (
+            "time_offset",
+            m.time_offset.is_some(),
+            span_of(&m.time_offset),
+        ),
     ] {
         if is && !allowed.contains(&name) {
             let d = b
@@ -1460,7 +1512,7 @@ fn build_motion(b: &mut Builder, m: &MotionSpec, position: Option<Vec3>, key: &s
                 (Some(t), None) => Some((t.get_ref().clone(), Some(t.span()))),
                 (None, Some(f)) => {
                     let path = b.file.parent().unwrap_or(Path::new(".")).join(f.get_ref());
-                    match read_motion_csv(&path) {
+                    match read_table::<4>(&path, "t, x, y, z") {
                         Ok(rows) => Some((rows, Some(f.span()))),
                         Err(msg) => {
                             let d = b
@@ -1505,6 +1557,108 @@ fn build_motion(b: &mut Builder, m: &MotionSpec, position: Option<Vec3>, key: &s
                 None => Motion::Fixed { position: centre },
             }
         }
+        MotionKind::VesselMotion => {
+            let offset = match &m.time_offset {
+                Some(v) if v.get_ref().is_finite() => *v.get_ref(),
+                Some(v) => {
+                    let d = b
+                        .diag(
+                            Some(v.span()),
+                            &k("time_offset"),
+                            "`time_offset` is not finite",
+                        )
+                        .expected("s");
+                    b.push(d);
+                    0.0
+                }
+                None => 0.0,
+            };
+            let Some(f) = &m.file else {
+                required(
+                    b,
+                    "file",
+                    "a file with columns t, x, y, z, roll, pitch, yaw",
+                );
+                return Motion::Fixed { position: centre };
+            };
+            let path = b.file.parent().unwrap_or(Path::new(".")).join(f.get_ref());
+            let rows = match read_table::<7>(&path, "t, x, y, z, roll, pitch, yaw") {
+                Ok(rows) => rows,
+                Err(msg) => {
+                    let d = b
+                        .diag(Some(f.span()), &k("file"), msg)
+                        .expected("columns t [s], x, y, z [m], roll, pitch, yaw [deg]")
+                        .hint("the path is relative to the scenario file");
+                    b.push(d);
+                    return Motion::Fixed { position: centre };
+                }
+            };
+            if rows.is_empty() || !rows.windows(2).all(|w| w[1][0] > w[0][0]) {
+                let d = b
+                    .diag(
+                        Some(f.span()),
+                        &k("file"),
+                        "the vessel motion needs at least one row and strictly increasing times",
+                    )
+                    .expected("rows t, x, y, z, roll, pitch, yaw in s, m and deg");
+                b.push(d);
+                return Motion::Fixed { position: centre };
+            }
+            vessel_point_motion(&rows, centre, offset)
+        }
+    }
+}
+
+/// The trajectory of a point fixed on a vessel at `on_vessel` (its position when the vessel
+/// is at rest) from the vessel's motion rows [t, x, y, z, roll, pitch, yaw] (s, m, deg):
+/// r(t) = X(t) + R(t)·r0 with R = R_z(yaw)·R_y(pitch)·R_x(roll) about the vessel origin (the
+/// global origin at rest), sampled at the rows' times shifted by `time_offset` and
+/// interpolated linearly between them.
+pub fn vessel_point_motion(rows: &[[f64; 7]], on_vessel: Vec3, time_offset: f64) -> Motion {
+    use hawser::math::Mat3;
+    let rot = |r: &[f64; 7]| {
+        let (roll, pitch, yaw) = (r[4].to_radians(), r[5].to_radians(), r[6].to_radians());
+        let rx = Mat3::new(
+            1.0,
+            0.0,
+            0.0,
+            0.0,
+            roll.cos(),
+            -roll.sin(),
+            0.0,
+            roll.sin(),
+            roll.cos(),
+        );
+        let ry = Mat3::new(
+            pitch.cos(),
+            0.0,
+            pitch.sin(),
+            0.0,
+            1.0,
+            0.0,
+            -pitch.sin(),
+            0.0,
+            pitch.cos(),
+        );
+        let rz = Mat3::new(
+            yaw.cos(),
+            -yaw.sin(),
+            0.0,
+            yaw.sin(),
+            yaw.cos(),
+            0.0,
+            0.0,
+            0.0,
+            1.0,
+        );
+        rz * ry * rx
+    };
+    Motion::TimeSeries {
+        times: rows.iter().map(|r| r[0] + time_offset).collect(),
+        positions: rows
+            .iter()
+            .map(|r| Vec3::new(r[1], r[2], r[3]) + rot(r) * on_vessel)
+            .collect(),
     }
 }
 
@@ -1530,6 +1684,7 @@ fn motion_name(kind: MotionKind) -> &'static str {
         MotionKind::Sinusoid => "sinusoid",
         MotionKind::CircularOrbit => "circular-orbit",
         MotionKind::TimeSeries => "time-series",
+        MotionKind::VesselMotion => "vessel-motion",
     }
 }
 
@@ -1584,8 +1739,10 @@ fn frequency_of(b: &mut Builder, m: &MotionSpec, key: &str) -> [f64; 3] {
     }
 }
 
-/// Reads a motion time series CSV: rows t, x, y, z; a header line and `#` comments allowed.
-pub fn read_motion_csv(path: &Path) -> Result<Vec<[f64; 4]>, String> {
+/// Reads a table of N numbers per row from a text file: columns separated by commas,
+/// semicolons, tabs or spaces; blank lines, `#` comments and one header line are skipped.
+/// `columns` names the columns for error messages.
+pub fn read_table<const N: usize>(path: &Path, columns: &str) -> Result<Vec<[f64; N]>, String> {
     let text = std::fs::read_to_string(path)
         .map_err(|e| format!("cannot read {}: {e}", path.display()))?;
     let mut rows = Vec::new();
@@ -1600,10 +1757,21 @@ pub fn read_motion_csv(path: &Path) -> Result<Vec<[f64; 4]>, String> {
             .collect();
         let nums: Result<Vec<f64>, _> = fields.iter().map(|s| s.parse::<f64>()).collect();
         match nums {
-            Ok(v) if v.len() == 4 => rows.push([v[0], v[1], v[2], v[3]]),
+            Ok(v) if v.len() == N => {
+                let mut row = [0.0; N];
+                row.copy_from_slice(&v);
+                if row.iter().any(|x| !x.is_finite()) {
+                    return Err(format!(
+                        "{}:{}: non-finite number in `{line}`",
+                        path.display(),
+                        n + 1
+                    ));
+                }
+                rows.push(row);
+            }
             Ok(v) => {
                 return Err(format!(
-                    "{}:{}: expected 4 columns (t, x, y, z), found {}",
+                    "{}:{}: expected {N} columns ({columns}), found {}",
                     path.display(),
                     n + 1,
                     v.len()
@@ -1948,35 +2116,58 @@ fn build_settings(
     (s, span)
 }
 
-fn build_channels(b: &mut Builder, spec: Option<&SimulationSpec>, model: &Model) -> Vec<Channel> {
+fn build_channels(
+    b: &mut Builder,
+    spec: Option<&SimulationSpec>,
+    model: &Model,
+) -> Vec<OutputChannel> {
     let mut out = Vec::new();
     for (li, _) in model.lines.iter().enumerate() {
-        out.push(Channel::EndTension {
-            line: li,
-            end_b: false,
-        });
-        out.push(Channel::EndTension {
-            line: li,
-            end_b: true,
-        });
+        for end_b in [false, true] {
+            out.push(OutputChannel::new(Channel::EndTension { line: li, end_b }));
+        }
     }
     for (pi, p) in model.points.iter().enumerate() {
         if matches!(p.kind, PointKind::Free { .. }) {
             for axis in 0..3 {
-                out.push(Channel::PointPosition { point: pi, axis });
+                out.push(OutputChannel::new(Channel::PointPosition {
+                    point: pi,
+                    axis,
+                }));
             }
         }
     }
     let Some(sim) = spec else { return out };
     for (ci, c) in sim.channels.iter().enumerate() {
-        match parse_channel(c.get_ref(), model) {
+        let (label, spec) = match c.get_ref().split_once('=') {
+            Some((l, s)) => (Some(l.trim().to_string()), s.trim()),
+            None => (None, c.get_ref().trim()),
+        };
+        if label
+            .as_ref()
+            .is_some_and(|l| l.is_empty() || l.contains(','))
+        {
+            let d = b
+                .diag(
+                    Some(c.span()),
+                    &format!("simulation.channels[{ci}]"),
+                    "a column name must be non-empty and free of commas",
+                )
+                .expected("\"NAME = CHANNEL\", e.g. \"FairTen1 = L1.end_b.node_force\"");
+            b.push(d);
+            continue;
+        }
+        match parse_channel(spec, model) {
             Ok(ch) => {
-                if !out.contains(&ch) {
-                    out.push(ch);
+                let o = OutputChannel { channel: ch, label };
+                if o.label.is_some() {
+                    out.push(o);
+                } else if !out.iter().any(|x| x.channel == ch) {
+                    out.push(o);
                 }
             }
             Err(msg) => {
-                let first = c.get_ref().split('.').next().unwrap_or("");
+                let first = spec.split('.').next().unwrap_or("");
                 let hint = if let Some(li) = model.line_index(first) {
                     let prefix = format!("lines[{li}].");
                     if b.errors.iter().any(|d| d.key.starts_with(&prefix)) {
@@ -2000,7 +2191,7 @@ fn build_channels(b: &mut Builder, spec: Option<&SimulationSpec>, model: &Model)
                 };
                 let d = b
                     .diag(Some(c.span()), &format!("simulation.channels[{ci}]"), msg)
-                    .expected("LINE.end_a|end_b.tension|fx|fy|fz, LINE.nodeK.tension|x|y|z|vx|vy|vz, LINE.elementK.strain, POINT.x|y|z|vx|vy|vz")
+                    .expected("LINE.end_a|end_b.tension|node_force|fx|fy|fz, LINE.nodeK.tension|x|y|z|vx|vy|vz, LINE.elementK.strain, POINT.x|y|z|vx|vy|vz")
                     .hint(hint);
                 b.push(d);
             }
@@ -2025,6 +2216,7 @@ pub fn parse_channel(name: &str, model: &Model) -> Result<Channel, String> {
                 let end_b = *end == "end_b";
                 match *q {
                     "tension" => return Ok(Channel::EndTension { line: li, end_b }),
+                    "node_force" => return Ok(Channel::EndNodeForce { line: li, end_b }),
                     f if f.len() == 2 && f.starts_with('f') => {
                         if let Some(a) = axis(&f[1..]) {
                             return Ok(Channel::EndForce {

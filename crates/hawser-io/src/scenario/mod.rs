@@ -4,10 +4,42 @@ pub mod build;
 pub mod diagnostics;
 pub mod schema;
 
-pub use build::{LoadedScenario, parse_channel};
+pub use build::{InputFormat, LoadedScenario, parse_channel};
 pub use diagnostics::{Diagnostic, ScenarioError};
 
 use std::path::Path;
+
+/// Reads and validates an input file: a hawser scenario (TOML) or a MoorDyn v2 deck,
+/// recognised by its content (dashed MoorDyn section headers), not by its extension. `deck`
+/// holds the choices a deck leaves to its host (duration, vessel motion); the notes say what
+/// was converted or has no effect (empty for TOML).
+pub fn load_input(
+    path: &Path,
+    deck: &crate::moordyn::ConvertOptions,
+) -> Result<(LoadedScenario, Vec<crate::moordyn::Note>), ScenarioError> {
+    let source = read(path)?;
+    if crate::moordyn::looks_like_deck(&source) {
+        let d = crate::moordyn::parse(path, &source, deck)?;
+        Ok((d.loaded, d.notes))
+    } else {
+        Ok((build::build(path, &source)?, Vec::new()))
+    }
+}
+
+fn read(path: &Path) -> Result<String, ScenarioError> {
+    std::fs::read_to_string(path).map_err(|e| {
+        ScenarioError::from(
+            Diagnostic::new(
+                path,
+                "",
+                None,
+                "",
+                format!("cannot read the input file: {e}"),
+            )
+            .hint("check the path"),
+        )
+    })
+}
 
 /// Reads and validates a scenario file.
 pub fn load(path: &Path) -> Result<LoadedScenario, ScenarioError> {

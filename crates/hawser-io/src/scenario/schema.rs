@@ -4,11 +4,11 @@
 //! JSON Schema generated from these types.
 
 use schemars::JsonSchema;
-use serde::Deserialize;
+use serde::{Deserialize, Serialize};
 use toml::Spanned;
 
 /// A number (the same for every axis) or one number per axis.
-#[derive(Clone, Debug, Deserialize, JsonSchema, PartialEq)]
+#[derive(Clone, Debug, Deserialize, Serialize, JsonSchema, PartialEq)]
 #[serde(untagged)]
 pub enum ScalarOrVec3 {
     /// One value for x, y and z.
@@ -28,7 +28,7 @@ impl ScalarOrVec3 {
 }
 
 /// `time_step`: `"auto"` or a step in seconds.
-#[derive(Clone, Debug, Deserialize, JsonSchema, PartialEq)]
+#[derive(Clone, Debug, Deserialize, Serialize, JsonSchema, PartialEq)]
 #[serde(untagged)]
 pub enum TimeStepSpec {
     /// A fixed step [s].
@@ -38,28 +38,28 @@ pub enum TimeStepSpec {
 }
 
 /// A whole scenario file.
-#[derive(Debug, Deserialize, JsonSchema)]
+#[derive(Debug, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct Scenario {
     /// Duration, time step, outputs.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub simulation: Option<SimulationSpec>,
     /// Gravity, water, air, seabed and current.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub environment: Option<EnvironmentSpec>,
     /// Cable properties, referenced by name from line sections.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub line_types: Vec<LineTypeSpec>,
     /// Anchors, fairleads, free point masses.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub points: Vec<PointSpec>,
     /// Lines between points.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub lines: Vec<LineSpec>,
 }
 
 /// Integration scheme.
-#[derive(Clone, Copy, Debug, Deserialize, JsonSchema, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Deserialize, Serialize, JsonSchema, PartialEq, Eq)]
 #[serde(rename_all = "kebab-case")]
 pub enum SchemeSpec {
     /// Classical 4th-order Runge–Kutta.
@@ -69,7 +69,7 @@ pub enum SchemeSpec {
 }
 
 /// Initial condition of a dynamic run.
-#[derive(Clone, Copy, Debug, Deserialize, JsonSchema, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Deserialize, Serialize, JsonSchema, PartialEq, Eq)]
 #[serde(rename_all = "kebab-case")]
 pub enum InitialConditionSpec {
     /// Start from static equilibrium.
@@ -79,92 +79,98 @@ pub enum InitialConditionSpec {
 }
 
 /// `[simulation]`.
-#[derive(Debug, Deserialize, JsonSchema)]
+#[derive(Debug, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct SimulationSpec {
     /// Simulated duration [s].
     #[schemars(with = "f64")]
     pub duration: Spanned<f64>,
     /// `"auto"` (default) or a fixed step [s].
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<TimeStepSpec>")]
     pub time_step: Option<Spanned<TimeStepSpec>>,
     /// Fraction of the stability limit used by `time_step = "auto"` [-], default 0.8.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<f64>")]
     pub safety_factor: Option<Spanned<f64>>,
     /// `"rk4"` (default) or `"ssp-rk3"`.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub scheme: Option<SchemeSpec>,
     /// Interval between time-series samples [s], default 0.1.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<f64>")]
     pub output_interval: Option<Spanned<f64>>,
     /// Interval between line shape snapshots [s]; none by default.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<f64>")]
     pub snapshot_interval: Option<Spanned<f64>>,
     /// `"statics"` (default) or `"as-defined"`.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub initial_condition: Option<InitialConditionSpec>,
-    /// Extra channels, e.g. `"L1.node10.tension"`, `"buoy.z"`.
-    #[serde(default)]
+    /// Extra channels, e.g. `"L1.node10.tension"`, `"buoy.z"`; `"NAME = CHANNEL"` names the
+    /// column (`"FairTen1 = L1.end_b.node_force"`).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     #[schemars(with = "Vec<String>")]
     pub channels: Vec<Spanned<String>>,
 }
 
 /// `[environment]`.
-#[derive(Debug, Deserialize, JsonSchema, Default)]
+#[derive(Debug, Deserialize, Serialize, JsonSchema, Default)]
 #[serde(deny_unknown_fields)]
 pub struct EnvironmentSpec {
     /// Gravitational acceleration [m/s²], default 9.80665.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<f64>")]
     pub gravity: Option<Spanned<f64>>,
     /// Water density [kg/m³], default 1025.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<f64>")]
     pub water_density: Option<Spanned<f64>>,
     /// Air density [kg/m³], default 1.225.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<f64>")]
     pub air_density: Option<Spanned<f64>>,
     /// Water depth [m]: flat seabed at z = −depth. Omit for deep water without a seabed.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<f64>")]
     pub depth: Option<Spanned<f64>>,
     /// Seabed contact.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub seabed: Option<SeabedSpec>,
     /// Current.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub current: Option<CurrentSpec>,
 }
 
 /// `[environment.seabed]`.
-#[derive(Debug, Deserialize, JsonSchema)]
+#[derive(Debug, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct SeabedSpec {
     /// Contact stiffness per unit area [Pa/m], default 3e6.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<f64>")]
     pub stiffness: Option<Spanned<f64>>,
     /// Damping ratio of the vertical contact [-], default 1 (critical).
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<f64>")]
     pub damping_ratio: Option<Spanned<f64>>,
+    /// Vertical contact damping per unit contact area [Pa·s/m], instead of `damping_ratio`
+    /// (MoorDyn's `cBot`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub damping: Option<Spanned<f64>>,
     /// Dynamic friction coefficient [-], default 0.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<f64>")]
     pub friction_coefficient: Option<Spanned<f64>>,
     /// Sliding speed over which friction builds up [m/s], default 0.01.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<f64>")]
     pub friction_velocity: Option<Spanned<f64>>,
 }
 
 /// Kind of current.
-#[derive(Clone, Copy, Debug, Deserialize, JsonSchema, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Deserialize, Serialize, JsonSchema, PartialEq, Eq)]
 #[serde(rename_all = "kebab-case")]
 pub enum CurrentKind {
     /// The same velocity at every depth.
@@ -174,7 +180,7 @@ pub enum CurrentKind {
 }
 
 /// `[environment.current]`.
-#[derive(Debug, Deserialize, JsonSchema)]
+#[derive(Debug, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct CurrentSpec {
     /// `"uniform"` or `"profile"`.
@@ -182,29 +188,29 @@ pub struct CurrentSpec {
     #[schemars(with = "CurrentKind")]
     pub kind: Spanned<CurrentKind>,
     /// Uniform current velocity [m/s].
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<[f64; 3]>")]
     pub velocity: Option<Spanned<[f64; 3]>>,
     /// Profile rows `[z, ux, uy, uz]` [m, m/s], z increasing (negative below the surface).
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<Vec<[f64; 4]>>")]
     pub profile: Option<Spanned<Vec<[f64; 4]>>>,
 }
 
 /// Fourier coefficients of a drag loading function.
-#[derive(Debug, Deserialize, JsonSchema, Default, Clone)]
+#[derive(Debug, Deserialize, Serialize, JsonSchema, Default, Clone)]
 #[serde(deny_unknown_fields)]
 pub struct FourierSpec {
     /// Cosine coefficients a_0, a_1, ... [-].
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub cos: Vec<f64>,
     /// Sine coefficients b_0, b_1, ... [-].
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub sin: Vec<f64>,
 }
 
 /// `[line_types.loading_functions]`.
-#[derive(Debug, Deserialize, JsonSchema)]
+#[derive(Debug, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct LoadingFunctionsSpec {
     /// Normal loading function C_n(φ).
@@ -214,7 +220,7 @@ pub struct LoadingFunctionsSpec {
 }
 
 /// `[[line_types]]`.
-#[derive(Debug, Deserialize, JsonSchema)]
+#[derive(Debug, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct LineTypeSpec {
     /// Name, referenced by line sections.
@@ -227,55 +233,55 @@ pub struct LineTypeSpec {
     #[schemars(with = "f64")]
     pub mass_per_length: Spanned<f64>,
     /// Axial stiffness EA [N] (or give `tension_strain`).
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<f64>")]
     pub axial_stiffness: Option<Spanned<f64>>,
     /// Tension–strain table rows `[strain, tension]` [-, N], from `[0, 0]`.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<Vec<[f64; 2]>>")]
     pub tension_strain: Option<Spanned<Vec<[f64; 2]>>>,
     /// Axial damping coefficient [N·s], default 0.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<f64>")]
     pub axial_damping: Option<Spanned<f64>>,
     /// Axial damping as a fraction of critical damping of one element's axial mode [-].
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<f64>")]
     pub axial_damping_ratio: Option<Spanned<f64>>,
     /// Normal drag coefficient C_dn [-] on the area d per length.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<f64>")]
     pub normal_drag: Option<Spanned<f64>>,
     /// Tangential drag coefficient C_dt [-] on the area d per length.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<f64>")]
     pub tangential_drag: Option<Spanned<f64>>,
     /// Drag loading functions instead of `normal_drag`/`tangential_drag`.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub loading_functions: Option<LoadingFunctionsSpec>,
     /// Normal added-mass coefficient C_an [-], default 1.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<f64>")]
     pub normal_added_mass: Option<Spanned<f64>>,
     /// Tangential added-mass coefficient C_at [-], default 0.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<f64>")]
     pub tangential_added_mass: Option<Spanned<f64>>,
     /// Whether the line carries compression, default false.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub compression: Option<bool>,
     /// Bending stiffness EI [N·m²], default 0 (used by formulations with bending).
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<f64>")]
     pub bending_stiffness: Option<Spanned<f64>>,
     /// Bending damping [N·m²·s], default 0.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<f64>")]
     pub bending_damping: Option<Spanned<f64>>,
 }
 
 /// Kind of point.
-#[derive(Clone, Copy, Debug, Deserialize, JsonSchema, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Deserialize, Serialize, JsonSchema, PartialEq, Eq)]
 #[serde(rename_all = "kebab-case")]
 pub enum PointKindSpec {
     /// Fixed in space (anchor).
@@ -287,7 +293,7 @@ pub enum PointKindSpec {
 }
 
 /// `[[points]]`.
-#[derive(Debug, Deserialize, JsonSchema)]
+#[derive(Debug, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct PointSpec {
     /// Name, referenced by lines and channels.
@@ -298,36 +304,36 @@ pub struct PointSpec {
     #[schemars(with = "PointKindSpec")]
     pub kind: Spanned<PointKindSpec>,
     /// Position [m] (fixed; initial for free points; start of a prescribed motion)
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<[f64; 3]>")]
     pub position: Option<Spanned<[f64; 3]>>,
     /// Mass [kg] (free points), default 0.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<f64>")]
     pub mass: Option<Spanned<f64>>,
     /// Displaced volume [m³] (free points), default 0.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<f64>")]
     pub volume: Option<Spanned<f64>>,
     /// Drag coefficient times area C_d·A [m²] (free points), default 0.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<f64>")]
     pub drag_area: Option<Spanned<f64>>,
     /// Added-mass coefficient on the displaced volume [-] (free points), default 0.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<f64>")]
     pub added_mass_coefficient: Option<Spanned<f64>>,
     /// Constant external force [N] (free points), default 0.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<[f64; 3]>")]
     pub force: Option<Spanned<[f64; 3]>>,
     /// Prescribed motion (prescribed points).
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub motion: Option<MotionSpec>,
 }
 
 /// Kind of prescribed motion.
-#[derive(Clone, Copy, Debug, Deserialize, JsonSchema, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Deserialize, Serialize, JsonSchema, PartialEq, Eq)]
 #[serde(rename_all = "kebab-case")]
 pub enum MotionKind {
     /// Stays at `position`.
@@ -340,10 +346,13 @@ pub enum MotionKind {
     CircularOrbit,
     /// Piecewise-linear positions from a table or a CSV file.
     TimeSeries,
+    /// The point rides on a vessel whose motion (t, x, y, z, roll, pitch, yaw) is read from a
+    /// file: the point's `position` is its place on the vessel at rest.
+    VesselMotion,
 }
 
 /// Coordinate plane of a circular orbit.
-#[derive(Clone, Copy, Debug, Deserialize, JsonSchema, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Deserialize, Serialize, JsonSchema, PartialEq, Eq)]
 #[serde(rename_all = "lowercase")]
 pub enum PlaneSpec {
     /// x–y (horizontal).
@@ -355,7 +364,7 @@ pub enum PlaneSpec {
 }
 
 /// `[points.motion]`.
-#[derive(Debug, Deserialize, JsonSchema)]
+#[derive(Debug, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct MotionSpec {
     /// Kind of motion.
@@ -363,48 +372,54 @@ pub struct MotionSpec {
     #[schemars(with = "MotionKind")]
     pub kind: Spanned<MotionKind>,
     /// Velocity [m/s] (`constant-velocity`).
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<[f64; 3]>")]
     pub velocity: Option<Spanned<[f64; 3]>>,
     /// Amplitude per axis [m] (`sinusoid`).
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<ScalarOrVec3>")]
     pub amplitude: Option<Spanned<ScalarOrVec3>>,
     /// Period [s], one or per axis (`sinusoid`; or give `frequency`).
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<ScalarOrVec3>")]
     pub period: Option<Spanned<ScalarOrVec3>>,
     /// Frequency [Hz], one or per axis (`sinusoid`, `circular-orbit`).
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<ScalarOrVec3>")]
     pub frequency: Option<Spanned<ScalarOrVec3>>,
     /// Phase [deg], one or per axis (`sinusoid`, `circular-orbit`), default 0.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<ScalarOrVec3>")]
     pub phase: Option<Spanned<ScalarOrVec3>>,
     /// Build-up time [s] over which the amplitude ramps smoothly from zero (`sinusoid`, `circular-orbit`), default 0 (none).
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<f64>")]
     pub ramp_time: Option<Spanned<f64>>,
     /// Orbit radius [m] (`circular-orbit`).
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<f64>")]
     pub radius: Option<Spanned<f64>>,
     /// Orbit plane, default `"xz"` (`circular-orbit`).
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub plane: Option<PlaneSpec>,
     /// Rows `[t, x, y, z]` [s, m] (`time-series`), or give `file`.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<Vec<[f64; 4]>>")]
     pub table: Option<Spanned<Vec<[f64; 4]>>>,
-    /// CSV file with columns t, x, y, z [s, m], relative to the scenario file (`time-series`).
-    #[serde(default)]
+    /// File relative to the scenario file: columns t, x, y, z [s, m] (`time-series`), or
+    /// t, x, y, z, roll, pitch, yaw [s, m, deg] (`vessel-motion`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<String>")]
     pub file: Option<Spanned<String>>,
+    /// Added to the file's times [s] (`vessel-motion`), default 0: a file that starts at
+    /// t = −10 s with `time_offset = 10` starts at the beginning of the run.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub time_offset: Option<Spanned<f64>>,
 }
 
 /// Line formulation.
-#[derive(Clone, Copy, Debug, Deserialize, JsonSchema, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Deserialize, Serialize, JsonSchema, PartialEq, Eq)]
 #[serde(rename_all = "lowercase")]
 pub enum FormulationSpec {
     /// Position-vector finite elements.
@@ -416,7 +431,7 @@ pub enum FormulationSpec {
 }
 
 /// Mass matrix of `fe` lines.
-#[derive(Clone, Copy, Debug, Deserialize, JsonSchema, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Deserialize, Serialize, JsonSchema, PartialEq, Eq)]
 #[serde(rename_all = "lowercase")]
 pub enum MassMatrixSpec {
     /// Consistent (default).
@@ -426,7 +441,7 @@ pub enum MassMatrixSpec {
 }
 
 /// `[[lines.sections]]`.
-#[derive(Debug, Deserialize, JsonSchema)]
+#[derive(Debug, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct SectionSpec {
     /// Line type name.
@@ -442,7 +457,7 @@ pub struct SectionSpec {
 }
 
 /// `[[lines]]`.
-#[derive(Debug, Deserialize, JsonSchema)]
+#[derive(Debug, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct LineSpec {
     /// Name, used for channels and results.
@@ -455,25 +470,25 @@ pub struct LineSpec {
     #[schemars(with = "String")]
     pub end_b: Spanned<String>,
     /// `"fe"` (default), `"dg"` or `"hermite"`.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<FormulationSpec>")]
     pub formulation: Option<Spanned<FormulationSpec>>,
     /// `"consistent"` (default) or `"lumped"` (`fe`).
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub mass_matrix: Option<MassMatrixSpec>,
     /// Line type of a single-section line (or give `sections`).
-    #[serde(default, rename = "type")]
+    #[serde(default, rename = "type", skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<String>")]
     pub line_type: Option<Spanned<String>>,
     /// Unstretched length [m] of a single-section line.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<f64>")]
     pub length: Option<Spanned<f64>>,
     /// Elements of a single-section line.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<i64>")]
     pub elements: Option<Spanned<i64>>,
     /// Sections from end A to end B.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub sections: Vec<SectionSpec>,
 }

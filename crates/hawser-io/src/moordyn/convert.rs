@@ -1,0 +1,1197 @@
+//! Conversion of a lexed MoorDyn v2 deck into a hawser [`Scenario`], with MoorDyn's
+//! conventions turned into hawser's (docs/moordyn.md lists each):
+//!
+//! - `CdAx` acts on the surface π·d per length in MoorDyn, hawser's tangential drag on d:
+//!   C_dt = π·CdAx.
+//! - `BA/-zeta` < 0 is a fraction ζ of the critical damping of one segment's axial mode:
+//!   hawser's `axial_damping_ratio` with the same definition, c = ζ·l·√(EA·γ0).
+//! - `kBot` [Pa/m] and `cBot` [Pa·s/m] act on the contact area d·l in both codes.
+//! - MoorDyn's lines are lumped-mass: converted lines use `fe` with the lumped mass matrix.
+//! - Coupled and vessel points become prescribed points: fixed, or riding on a vessel whose
+//!   motion is read from a file (`--vessel-motion`).
+//! - OUTPUTS channels keep their MoorDyn names as column names; `FairTen`/`AnchTen` are the
+//!   net force on the end node, as in MoorDyn.
+//!
+//! Every value keeps the span of the deck word it came from, and the converter remembers
+//! which MoorDyn section and column each scenario key came from, so validation errors are
+//! reported in the deck's words.
+
+use super::deck::{Deck, Row, Section, SectionKind, Token};
+use crate::scenario::diagnostics::closest;
+use crate::scenario::schema::*;
+use crate::scenario::{Diagnostic, ScenarioError};
+use std::ops::Range;
+use std::path::{Path, PathBuf};
+use toml::Spanned;
+
+/// Choices a deck does not make (a deck is driven by a host program that owns them).
+#[derive(Clone, Debug, Default)]
+pub struct ConvertOptions {
+    /// Simulated duration [s]; default: to the end of the vessel motion, else 60 s.
+    pub duration: Option<f64>,
+    /// Vessel motion applied to every coupled point: a file with columns t, x, y, z, roll,
+    /// pitch, yaw [s, m, deg] (e.g. MoorDyn's `ZZP1_A1.txt`), its first row at t = 0 (the
+    /// convention of MoorDyn's drivers). A relative path is relative to the working directory.
+    pub vessel_motion: Option<PathBuf>,
+}
+
+/// Something the user should know about a conversion: a convention converted, or a deck
+/// entry with no effect in hawser.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Note {
+    /// 1-based deck line (0 when not tied to a line).
+    pub line: usize,
+    /// The note.
+    pub message: String,
+}
+
+/// The result of converting a deck.
+#[derive(Debug)]
+pub struct Conversion {
+    /// The equivalent scenario; its spans point into the deck.
+    pub scenario: Scenario,
+    /// Conversions and ignored entries.
+    pub notes: Vec<Note>,
+    /// Scenario key prefix → the deck's words for it (`LINE TYPES › main › Diam`).
+    key_names: Vec<(String, String)>,
+}
+
+impl Conversion {
+    /// Rewrites validation errors so they name the deck's sections and columns instead of
+    /// scenario keys.
+    pub fn in_deck_words(&self, mut e: ScenarioError) -> ScenarioError {
+        for d in &mut e.diagnostics {
+            // the longest matching prefix names the most specific column
+            let best = self
+                .key_names
+                .iter()
+                .filter(|(k, _)| {
+                    d.key == *k
+                        || d.key.starts_with(&format!("{k}."))
+                        || d.key.starts_with(&format!("{k}["))
+                })
+                .max_by_key(|(k, _)| k.len());
+            if let Some((k, words)) = best {
+                let old = d.key.clone();
+                d.message = d
+                    .message
+                    .replace(&format!("`{old}`"), &format!("`{words}`"))
+                    .replace(&format!("`{k}`"), &format!("`{words}`"));
+                d.key = words.clone();
+            }
+        }
+        e
+    }
+}
+
+/// The column layouts of MoorDyn-C 2.7 tables (required columns, then optional ones).
+const LINE_TYPE_COLUMNS: &[&str] = &[
+    "TypeName", "Diam", "Mass/m", "EA", "BA/-zeta", "EI", "Cd", "Ca", "CdAx", "CaAx",
+];
+const POINT_COLUMNS: &[&str] = &["ID", "Type", "X", "Y", "Z", "Mass", "Volume", "CdA", "Ca"];
+const LINE_COLUMNS: &[&str] = &[
+    "ID",
+    "LineType",
+    "AttachA",
+    "AttachB",
+    "UnstrLen",
+    "NumSegs",
+    "LineOutputs",
+];
+
+struct Converter<'a> {
+    file: &'a Path,
+    source: &'a str,
+    errors: Vec<Diagnostic>,
+    notes: Vec<Note>,
+    key_names: Vec<(String, String)>,
+}
+
+fn spanned<T>(t: &Token, v: T) -> Spanned<T> {
+    Spanned::new(t.span.clone(), v)
+}
+
+/// Parses a number as MoorDyn does (C `atof`), accepting Fortran `D` exponents too.
+fn parse_number(text: &str) -> Option<f64> {
+    let t = text.replace(['d', 'D'], "e");
+    t.parse::<f64>().ok().filter(|x| x.is_finite())
+}
+
+impl<'a> Converter<'a> {
+    fn diag(
+        &self,
+        span: Option<Range<usize>>,
+        key: &str,
+        message: impl Into<String>,
+    ) -> Diagnostic {
+        Diagnostic::new(self.file, self.source, span, key, message)
+    }
+
+    fn note(&mut self, line: usize, message: impl Into<String>) {
+        self.notes.push(Note {
+            line,
+            message: message.into(),
+        });
+    }
+
+    fn name_key(&mut self, key: String, words: String) {
+        self.key_names.push((key, words));
+    }
+
+    fn line_of(&self, span: &Range<usize>) -> usize {
+        self.source.as_bytes()[..span.start.min(self.source.len())]
+            .iter()
+            .filter(|&&c| c == b'\n')
+            .count()
+            + 1
+    }
+
+    /// A number from a table cell, or an error naming the section and column.
+    fn number(&mut self, t: &Token, section: &str, column: &str, unit: &str) -> Option<f64> {
+        match parse_number(&t.text) {
+            Some(x) => Some(x),
+            None => {
+                let d = self
+                    .diag(
+                        Some(t.span.clone()),
+                        &format!("{section} › {column}"),
+                        format!("`{column}` in {section} is not a number"),
+                    )
+                    .expected(format!("a number in {unit}"))
+                    .hint("MoorDyn table cells are numbers such as 0.09, 384.243E6 or -0.8");
+                self.errors.push(d);
+                None
+            }
+        }
+    }
+
+    /// A whole number from a table cell.
+    fn count(&mut self, t: &Token, section: &str, column: &str) -> Option<i64> {
+        match t.text.parse::<i64>() {
+            Ok(n) => Some(n),
+            Err(_) => {
+                let d = self
+                    .diag(
+                        Some(t.span.clone()),
+                        &format!("{section} › {column}"),
+                        format!("`{column}` in {section} is not a whole number"),
+                    )
+                    .expected("a whole number such as 20")
+                    .hint("segment counts and IDs are integers");
+                self.errors.push(d);
+                None
+            }
+        }
+    }
+
+    /// Checks a row's column count: at least `required`, at most `columns.len()`.
+    fn check_columns(
+        &mut self,
+        section: &str,
+        row: &Row,
+        columns: &[&str],
+        required: usize,
+    ) -> bool {
+        let n = row.tokens.len();
+        let form = columns.join(" ");
+        if n < required {
+            let end = row.span.end;
+            let d = self
+                .diag(
+                    Some(end..end),
+                    &format!("{section} › {}", columns[n]),
+                    format!(
+                        "this {section} row has {n} column{}; column `{}` is missing",
+                        if n == 1 { "" } else { "s" },
+                        columns[n]
+                    ),
+                )
+                .value(self.source[row.span.clone()].trim().to_string())
+                .expected(format!(
+                    "{} columns: {form}",
+                    if required == columns.len() {
+                        required.to_string()
+                    } else {
+                        format!("{required} to {}", columns.len())
+                    }
+                ))
+                .hint(
+                    "MoorDyn tables are positional: give every column, separated by spaces or tabs",
+                );
+            self.errors.push(d);
+            return false;
+        }
+        if n > columns.len() {
+            let extra = &row.tokens[columns.len()];
+            let d = self
+                .diag(
+                    Some(extra.span.clone()),
+                    &format!("{section} › column {}", columns.len() + 1),
+                    format!(
+                        "this {section} row has {n} columns; hawser reads {} ({form})",
+                        columns.len()
+                    ),
+                )
+                .expected(format!("columns: {form}"))
+                .hint(
+                    "remove the extra column; if it is a MoorDyn option hawser does not know \
+                     (such as VIV coefficients), the deck needs a feature hawser does not have",
+                );
+            self.errors.push(d);
+            return false;
+        }
+        true
+    }
+
+    fn refuse_section(&mut self, s: &Section, what: &str) {
+        if s.rows.is_empty() {
+            let line = self.line_of(&s.title.span);
+            self.note(line, format!("section `{}` is empty", s.title.text));
+            return;
+        }
+        let d = self
+            .diag(
+                Some(s.title.span.clone()),
+                &s.title.text,
+                format!("section `{}` is not supported: {what}", s.title.text),
+            )
+            .value(s.title.text.clone())
+            .hint(format!(
+                "hawser cannot run this deck with its {} row{} yet; remove the section to run the \
+                 rest, or model it in a hawser scenario",
+                s.rows.len(),
+                if s.rows.len() == 1 { "" } else { "s" }
+            ));
+        self.errors.push(d);
+    }
+}
+
+/// Converts a lexed deck into a scenario. `file` is the deck's path (for files it names).
+pub fn convert(
+    file: &Path,
+    source: &str,
+    deck: &Deck,
+    options: &ConvertOptions,
+) -> Result<Conversion, ScenarioError> {
+    let mut c = Converter {
+        file,
+        source,
+        errors: Vec::new(),
+        notes: Vec::new(),
+        key_names: Vec::new(),
+    };
+    let dir = file.parent().unwrap_or(Path::new("."));
+    let mut seen: Vec<SectionKind> = Vec::new();
+    for s in &deck.sections {
+        if s.kind != SectionKind::Unsupported && seen.contains(&s.kind) {
+            let d = c
+                .diag(
+                    Some(s.title.span.clone()),
+                    &s.title.text,
+                    format!("section `{}` appears twice", s.title.text),
+                )
+                .hint("merge the two tables into one");
+            c.errors.push(d);
+        }
+        seen.push(s.kind);
+        match s.kind {
+            SectionKind::RodTypes => c.refuse_section(s, "rods need rigid-body support (planned)"),
+            SectionKind::Rods => c.refuse_section(s, "rods need rigid-body support (planned)"),
+            SectionKind::Bodies => c.refuse_section(s, "rigid bodies are not available yet"),
+            SectionKind::Unsupported => c.refuse_section(s, "hawser does not read this section"),
+            _ => {}
+        }
+    }
+    let line_types = match deck.section(SectionKind::LineTypes) {
+        Some(s) => convert_line_types(&mut c, s, dir),
+        None => Vec::new(),
+    };
+    let option_rows = deck
+        .section(SectionKind::Options)
+        .map(|s| s.rows.as_slice())
+        .unwrap_or(&[]);
+    let opts = read_options(&mut c, option_rows);
+    let (points, coupled) = match deck.section(SectionKind::Points) {
+        Some(s) => convert_points(&mut c, s, options),
+        None => (Vec::new(), 0),
+    };
+    let (lines, line_outputs) = match deck.section(SectionKind::Lines) {
+        Some(s) => convert_lines(&mut c, s),
+        None => (Vec::new(), false),
+    };
+    if deck.section(SectionKind::Lines).is_none() {
+        let d = c
+            .diag(Some(0..0), "LINES", "the deck has no LINES section")
+            .expected("a `---- LINES ----` section with rows ID LineType AttachA AttachB UnstrLen NumSegs LineOutputs")
+            .hint("hawser runs decks with at least one line");
+        c.errors.push(d);
+    }
+    let channels = match deck.section(SectionKind::Outputs) {
+        Some(s) => convert_outputs(&mut c, s),
+        None => Vec::new(),
+    };
+    let environment = environment_of(&mut c, &opts, dir);
+    let simulation = simulation_of(&mut c, &opts, options, channels, line_outputs, coupled);
+    if !c.errors.is_empty() {
+        c.errors.sort_by_key(|d| (d.line, d.column));
+        return Err(ScenarioError {
+            diagnostics: c.errors,
+        });
+    }
+    Ok(Conversion {
+        scenario: Scenario {
+            simulation: Some(simulation),
+            environment: Some(environment),
+            line_types,
+            points,
+            lines,
+        },
+        notes: c.notes,
+        key_names: c.key_names,
+    })
+}
+
+fn convert_line_types(c: &mut Converter, s: &Section, dir: &Path) -> Vec<LineTypeSpec> {
+    const S: &str = "LINE TYPES";
+    let mut out = Vec::new();
+    for row in &s.rows {
+        if !c.check_columns(S, row, LINE_TYPE_COLUMNS, LINE_TYPE_COLUMNS.len()) {
+            continue;
+        }
+        let t = &row.tokens;
+        let i = out.len();
+        let name = t[0].text.clone();
+        let key = |f: &str| format!("line_types[{i}].{f}");
+        for (field, col) in [
+            ("name", "TypeName"),
+            ("diameter", "Diam"),
+            ("mass_per_length", "Mass/m"),
+            ("axial_stiffness", "EA"),
+            ("tension_strain", "EA"),
+            ("axial_damping", "BA/-zeta"),
+            ("axial_damping_ratio", "BA/-zeta"),
+            ("bending_stiffness", "EI"),
+            ("normal_drag", "Cd"),
+            ("normal_added_mass", "Ca"),
+            ("tangential_drag", "CdAx"),
+            ("tangential_added_mass", "CaAx"),
+        ] {
+            c.name_key(key(field), format!("{S} › {name} › {col}"));
+        }
+        let diameter = c.number(&t[1], S, "Diam", "m");
+        let mass = c.number(&t[2], S, "Mass/m", "kg/m");
+        let (axial_stiffness, tension_strain) = match parse_number(&t[3].text) {
+            Some(ea) => (Some(spanned(&t[3], ea)), None),
+            None if t[3].text.contains('|') => {
+                let d = c
+                    .diag(
+                        Some(t[3].span.clone()),
+                        &format!("{S} › {name} › EA"),
+                        "visco-elastic `EA|EAd` stiffness is not supported",
+                    )
+                    .expected("EA as a number in N, or the name of a tension–strain table file")
+                    .hint(
+                        "give the static stiffness EA; hawser's axial damping is in the BA column",
+                    );
+                c.errors.push(d);
+                (None, None)
+            }
+            None => match read_tension_strain(&dir.join(&t[3].text)) {
+                Ok(rows) => {
+                    let line = row.line;
+                    c.note(
+                        line,
+                        format!(
+                            "line type `{name}`: tension–strain table read from {} ({} points)",
+                            t[3].text,
+                            rows.len()
+                        ),
+                    );
+                    (None, Some(spanned(&t[3], rows)))
+                }
+                Err(msg) => {
+                    let d = c
+                        .diag(
+                            Some(t[3].span.clone()),
+                            &format!("{S} › {name} › EA"),
+                            format!("`EA` is neither a number nor a readable table file: {msg}"),
+                        )
+                        .expected(
+                            "EA in N, or a file of rows `strain tension` relative to the deck",
+                        )
+                        .hint("the file path is relative to the deck's folder");
+                    c.errors.push(d);
+                    (None, None)
+                }
+            },
+        };
+        let ba = c.number(&t[4], S, "BA/-zeta", "N·s (or −ζ, a fraction of critical)");
+        let (axial_damping, axial_damping_ratio) = match ba {
+            Some(x) if x < 0.0 => (None, Some(spanned(&t[4], -x))),
+            Some(x) => (Some(spanned(&t[4], x)), None),
+            None => (None, None),
+        };
+        let ei = c.number(&t[5], S, "EI", "N·m²");
+        if ei.is_some_and(|x| x > 0.0) {
+            c.note(
+                row.line,
+                format!(
+                    "line type `{name}`: EI = {} N·m² is kept as `bending_stiffness`; MoorDyn \
+                     applies it as nodal bending moments, hawser's `fe` lines carry no bending, \
+                     so this line is modelled without it",
+                    t[5].text
+                ),
+            );
+        }
+        let cd = c.number(&t[6], S, "Cd", "-");
+        let ca = c.number(&t[7], S, "Ca", "-");
+        let cdax = c.number(&t[8], S, "CdAx", "-");
+        let caax = c.number(&t[9], S, "CaAx", "-");
+        if let Some(x) = cdax
+            && x != 0.0
+        {
+            c.note(
+                row.line,
+                format!(
+                    "line type `{name}`: CdAx {} on π·d becomes tangential_drag {} on d (× π)",
+                    t[8].text,
+                    x * std::f64::consts::PI
+                ),
+            );
+        }
+        let f = |v: Option<f64>, tok: &Token| v.map(|x| spanned(tok, x));
+        out.push(LineTypeSpec {
+            name: spanned(&t[0], name.clone()),
+            diameter: spanned(&t[1], diameter.unwrap_or(1.0)),
+            mass_per_length: spanned(&t[2], mass.unwrap_or(1.0)),
+            axial_stiffness,
+            tension_strain,
+            axial_damping,
+            axial_damping_ratio,
+            normal_drag: f(cd, &t[6]),
+            tangential_drag: f(cdax.map(|x| x * std::f64::consts::PI), &t[8]),
+            loading_functions: None,
+            normal_added_mass: f(ca, &t[7]),
+            tangential_added_mass: f(caax, &t[9]),
+            compression: None,
+            bending_stiffness: f(ei.filter(|&x| x != 0.0), &t[5]),
+            bending_damping: None,
+        });
+    }
+    out
+}
+
+/// Reads a MoorDyn tension–strain table: rows `strain tension` [-, N], whitespace or comma
+/// separated, header lines skipped; a `(0, 0)` row is added when missing.
+fn read_tension_strain(path: &Path) -> Result<Vec<[f64; 2]>, String> {
+    let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    let mut rows = Vec::new();
+    for line in text.lines() {
+        let nums: Vec<f64> = line
+            .split([',', ' ', '\t', ';'])
+            .filter(|s| !s.is_empty())
+            .map_while(parse_number)
+            .collect();
+        if nums.len() >= 2 {
+            rows.push([nums[0], nums[1]]);
+        }
+    }
+    if rows.is_empty() {
+        return Err(format!("{}: no rows `strain tension`", path.display()));
+    }
+    if rows[0] != [0.0, 0.0] {
+        rows.insert(0, [0.0, 0.0]);
+    }
+    Ok(rows)
+}
+
+/// A point's name in the scenario: `P` and its MoorDyn ID.
+fn point_name(id: &str) -> String {
+    format!("P{id}")
+}
+
+/// A line's name in the scenario: `L` and its MoorDyn ID.
+fn line_name(id: &str) -> String {
+    format!("L{id}")
+}
+
+fn convert_points(
+    c: &mut Converter,
+    s: &Section,
+    options: &ConvertOptions,
+) -> (Vec<PointSpec>, usize) {
+    const S: &str = "POINTS";
+    let mut out = Vec::new();
+    let mut coupled = 0;
+    let vessel_file = options.vessel_motion.as_ref().map(|p| {
+        if p.is_absolute() {
+            p.clone()
+        } else {
+            std::env::current_dir().unwrap_or_default().join(p)
+        }
+    });
+    for row in &s.rows {
+        if !c.check_columns(S, row, POINT_COLUMNS, POINT_COLUMNS.len()) {
+            continue;
+        }
+        let t = &row.tokens;
+        let i = out.len();
+        let name = point_name(&t[0].text);
+        let key = |f: &str| format!("points[{i}].{f}");
+        for (field, col) in [
+            ("name", "ID"),
+            ("type", "Type"),
+            ("position", "X Y Z"),
+            ("mass", "Mass"),
+            ("volume", "Volume"),
+            ("drag_area", "CdA"),
+            ("added_mass_coefficient", "Ca"),
+            ("motion", "Type"),
+        ] {
+            c.name_key(key(field), format!("{S} › {} › {col}", t[0].text));
+        }
+        let kind_word = t[1].text.to_lowercase();
+        let base = kind_word.trim_end_matches(|ch: char| ch.is_ascii_digit());
+        let kind = match base {
+            "fixed" | "fix" | "anchor" => Some(PointKindSpec::Fixed),
+            "free" | "connect" | "con" => Some(PointKindSpec::Free),
+            "coupled" | "vessel" | "ves" | "cpld" => Some(PointKindSpec::Prescribed),
+            "body" | "turbine" => {
+                let d = c
+                    .diag(
+                        Some(t[1].span.clone()),
+                        &format!("{S} › {} › Type", t[0].text),
+                        format!("point {} is attached to a body (`{}`)", t[0].text, t[1].text),
+                    )
+                    .hint("rigid bodies are not available yet; make the point `Coupled` to drive it with a vessel motion, or `Fixed`");
+                c.errors.push(d);
+                None
+            }
+            _ => {
+                let d = c
+                    .diag(
+                        Some(t[1].span.clone()),
+                        &format!("{S} › {} › Type", t[0].text),
+                        format!("unknown point type `{}`", t[1].text),
+                    )
+                    .expected("Fixed, Free, Coupled or Vessel")
+                    .hint("MoorDyn point types: Fixed (anchor), Free (point mass), Coupled/Vessel (moved by the host)");
+                c.errors.push(d);
+                None
+            }
+        };
+        let x = c.number(&t[2], S, "X", "m");
+        let y = c.number(&t[3], S, "Y", "m");
+        let z = c.number(&t[4], S, "Z", "m");
+        let mass = c.number(&t[5], S, "Mass", "kg");
+        let volume = c.number(&t[6], S, "Volume", "m³");
+        let cda = c.number(&t[7], S, "CdA", "m²");
+        let ca = c.number(&t[8], S, "Ca", "-");
+        let position = spanned(
+            &Token {
+                text: String::new(),
+                span: t[2].span.start..t[4].span.end,
+            },
+            [x.unwrap_or(0.0), y.unwrap_or(0.0), z.unwrap_or(0.0)],
+        );
+        let Some(kind) = kind else { continue };
+        let free = kind == PointKindSpec::Free;
+        let f = |v: Option<f64>, tok: &Token| v.filter(|_| free).map(|x| spanned(tok, x));
+        if !free
+            && [mass, volume, cda, ca]
+                .iter()
+                .any(|v| v.is_some_and(|x| x != 0.0))
+        {
+            c.note(
+                row.line,
+                format!(
+                    "point {}: Mass, Volume, CdA and Ca have no effect on a `{}` point",
+                    t[0].text, t[1].text
+                ),
+            );
+        }
+        let motion = (kind == PointKindSpec::Prescribed).then(|| {
+            coupled += 1;
+            let word = Token {
+                text: String::new(),
+                span: t[1].span.clone(),
+            };
+            MotionSpec {
+                kind: spanned(
+                    &word,
+                    if vessel_file.is_some() {
+                        MotionKind::VesselMotion
+                    } else {
+                        MotionKind::Fixed
+                    },
+                ),
+                velocity: None,
+                amplitude: None,
+                period: None,
+                frequency: None,
+                phase: None,
+                ramp_time: None,
+                radius: None,
+                plane: None,
+                table: None,
+                file: vessel_file
+                    .as_ref()
+                    .map(|p| spanned(&word, p.display().to_string())),
+                time_offset: vessel_file
+                    .as_ref()
+                    .map(|p| spanned(&word, vessel_time_offset(p))),
+            }
+        });
+        out.push(PointSpec {
+            name: spanned(&t[0], name),
+            kind: spanned(&t[1], kind),
+            position: Some(position),
+            mass: f(mass, &t[5]),
+            volume: f(volume, &t[6]),
+            drag_area: f(cda, &t[7]),
+            added_mass_coefficient: f(ca, &t[8]),
+            force: None,
+            motion,
+        });
+    }
+    (out, coupled)
+}
+
+/// The offset that puts the first row of a vessel motion file at t = 0 (0 if unreadable;
+/// validation then reports the file).
+fn vessel_time_offset(path: &Path) -> f64 {
+    crate::scenario::build::read_table::<7>(path, "")
+        .ok()
+        .and_then(|rows| rows.first().map(|r| -r[0]))
+        .unwrap_or(0.0)
+}
+
+/// The end time of a vessel motion file after its shift to t = 0.
+fn vessel_duration(path: &Path) -> Option<f64> {
+    let rows = crate::scenario::build::read_table::<7>(path, "").ok()?;
+    Some(rows.last()?[0] - rows.first()?[0])
+}
+
+fn convert_lines(c: &mut Converter, s: &Section) -> (Vec<LineSpec>, bool) {
+    const S: &str = "LINES";
+    let mut out = Vec::new();
+    let mut any_outputs = false;
+    for row in &s.rows {
+        if !c.check_columns(S, row, LINE_COLUMNS, LINE_COLUMNS.len() - 1) {
+            continue;
+        }
+        let t = &row.tokens;
+        let i = out.len();
+        let id = &t[0].text;
+        let key = |f: &str| format!("lines[{i}].{f}");
+        for (field, col) in [
+            ("name", "ID"),
+            ("type", "LineType"),
+            ("end_a", "AttachA"),
+            ("end_b", "AttachB"),
+            ("length", "UnstrLen"),
+            ("elements", "NumSegs"),
+        ] {
+            c.name_key(key(field), format!("{S} › {id} › {col}"));
+        }
+        let attach = |c: &mut Converter, tok: &Token, col: &str| -> Spanned<String> {
+            let w = tok.text.to_lowercase();
+            if w.starts_with('r') || w.starts_with('b') || w.starts_with("turbine") {
+                let d = c
+                    .diag(
+                        Some(tok.span.clone()),
+                        &format!("{S} › {id} › {col}"),
+                        format!("line {id} is attached to a rod or body (`{}`)", tok.text),
+                    )
+                    .expected("the ID of a point in the POINTS table")
+                    .hint("rods and rigid bodies are not available yet; attach the line to a Coupled or Fixed point");
+                c.errors.push(d);
+            }
+            let w = tok.text.trim_start_matches(['P', 'p', 'C', 'c']);
+            spanned(tok, point_name(w))
+        };
+        let end_a = attach(c, &t[2], "AttachA");
+        let end_b = attach(c, &t[3], "AttachB");
+        let length = c.number(&t[4], S, "UnstrLen", "m");
+        let segments = c.count(&t[5], S, "NumSegs");
+        if let Some(flags) = t.get(6)
+            && flags.text != "-"
+            && !flags.text.is_empty()
+        {
+            any_outputs = true;
+            c.note(
+                row.line,
+                format!(
+                    "line {id}: output flags `{}` are written as shape snapshots \
+                     (snapshots/{}.csv: positions and tension of every node), not as MoorDyn's \
+                     per-line files",
+                    flags.text,
+                    line_name(id)
+                ),
+            );
+        }
+        out.push(LineSpec {
+            name: spanned(&t[0], line_name(id)),
+            end_a,
+            end_b,
+            formulation: None,
+            mass_matrix: Some(MassMatrixSpec::Lumped),
+            line_type: Some(spanned(&t[1], t[1].text.clone())),
+            length: Some(spanned(&t[4], length.unwrap_or(1.0))),
+            elements: Some(spanned(&t[5], segments.unwrap_or(1))),
+            sections: Vec::new(),
+        });
+    }
+    (out, any_outputs)
+}
+
+/// The OPTIONS rows by lower-case name: (value token, row).
+struct Options<'r> {
+    rows: Vec<(String, &'r Token, &'r Row)>,
+}
+
+impl<'r> Options<'r> {
+    fn get(&self, names: &[&str]) -> Option<(&'r Token, &'r Row)> {
+        self.rows
+            .iter()
+            .rev()
+            .find(|(n, _, _)| names.contains(&n.as_str()))
+            .map(|(_, t, r)| (*t, *r))
+    }
+}
+
+/// Options hawser reads, with their MoorDyn spellings (lower case).
+const KNOWN_OPTIONS: &[&str] = &[
+    "dtm",
+    "cfl",
+    "tscheme",
+    "g",
+    "gravity",
+    "rho",
+    "wtrdnsty",
+    "wtrdpth",
+    "depth",
+    "kbot",
+    "cbot",
+    "frictioncoefficient",
+    "fricdamp",
+    "statdynfricscale",
+    "dtout",
+    "dtic",
+    "tmaxic",
+    "cdscaleic",
+    "threshic",
+    "fileic",
+    "inputic",
+    "icgendynamic",
+    "writelog",
+    "writeunits",
+    "disableouttime",
+    "echo",
+    "wavekin",
+    "currents",
+    "seafloorfile",
+];
+
+fn read_options<'r>(c: &mut Converter, rows: &'r [Row]) -> Options<'r> {
+    let mut out = Options { rows: Vec::new() };
+    for row in rows {
+        let Some(value) = row.tokens.first() else {
+            continue;
+        };
+        let Some(name) = row.tokens.get(1) else {
+            let d = c
+                .diag(
+                    Some(value.span.clone()),
+                    "OPTIONS",
+                    "an option row needs a value and a name",
+                )
+                .expected("`value name [description]`, e.g. `0.002 dtM`");
+            c.errors.push(d);
+            continue;
+        };
+        let lower = name.text.to_lowercase();
+        if !KNOWN_OPTIONS.contains(&lower.as_str()) {
+            let hint = match closest(&lower, KNOWN_OPTIONS.iter().copied()) {
+                Some(k) => format!("did you mean `{k}`? (option names are case-insensitive here)"),
+                None => "MoorDyn would ignore it too; remove it, or check the spelling".to_string(),
+            };
+            c.note(
+                row.line,
+                format!("unknown option `{}` is ignored ({hint})", name.text),
+            );
+            continue;
+        }
+        out.rows.push((lower, value, row));
+    }
+    out
+}
+
+fn environment_of(c: &mut Converter, o: &Options, dir: &Path) -> EnvironmentSpec {
+    let num = |c: &mut Converter, names: &[&str], unit: &str| -> Option<Spanned<f64>> {
+        let (t, row) = o.get(names)?;
+        let name = row.tokens[1].text.clone();
+        c.number(t, "OPTIONS", &name, unit).map(|x| spanned(t, x))
+    };
+    let gravity = num(c, &["g", "gravity"], "m/s²");
+    let water_density = num(c, &["rho", "wtrdnsty"], "kg/m³");
+    let depth = num(c, &["wtrdpth", "depth"], "m");
+    let kbot = num(c, &["kbot"], "Pa/m");
+    let cbot = num(c, &["cbot"], "Pa·s/m");
+    let mu = num(c, &["frictioncoefficient"], "-");
+    for (k, v) in [
+        ("environment.gravity", "g"),
+        ("environment.water_density", "WtrDnsty"),
+        ("environment.depth", "WtrDpth"),
+        ("environment.seabed.stiffness", "kBot"),
+        ("environment.seabed.damping", "cBot"),
+        (
+            "environment.seabed.friction_coefficient",
+            "FrictionCoefficient",
+        ),
+    ] {
+        c.name_key(k.to_string(), format!("OPTIONS › {v}"));
+    }
+    for (names, what) in [
+        (&["fricdamp"][..], "FricDamp"),
+        (&["statdynfricscale"][..], "StatDynFricScale"),
+    ] {
+        if let Some((_, row)) = o.get(names) {
+            c.note(
+                row.line,
+                format!(
+                    "{what}: hawser's friction is μ·tanh(π|v|/v_μ) (DG paper eq. 16) with v_μ = \
+                     0.01 m/s; MoorDyn's friction damping and static/dynamic scale are not used"
+                ),
+            );
+        }
+    }
+    if let Some((t, row)) = o.get(&["wavekin"])
+        && parse_number(&t.text) != Some(0.0)
+    {
+        let d = c
+            .diag(Some(t.span.clone()), "OPTIONS › WaveKin", "wave kinematics are not available yet")
+            .expected("WaveKin 0 (still water)")
+            .hint("waves come with hawser's sea-state support; set WaveKin to 0 to run in still water");
+        c.errors.push(d);
+        let _ = row;
+    }
+    if let Some((t, _)) = o.get(&["seafloorfile"]) {
+        let d = c
+            .diag(
+                Some(t.span.clone()),
+                "OPTIONS › SeafloorFile",
+                "bathymetry files are not supported",
+            )
+            .expected("a flat seabed at WtrDpth")
+            .hint("remove SeafloorFile to run on a flat bed at WtrDpth");
+        c.errors.push(d);
+    }
+    let current = match o.get(&["currents"]) {
+        Some((t, row)) => match parse_number(&t.text) {
+            Some(x) if x == 0.0 => None,
+            Some(x) if x == 1.0 => current_profile(c, t, row, dir),
+            _ => {
+                let d = c
+                    .diag(
+                        Some(t.span.clone()),
+                        "OPTIONS › Currents",
+                        format!("Currents mode `{}` is not supported", t.text),
+                    )
+                    .expected("0 (none) or 1 (steady profile from current_profile.txt)")
+                    .hint("time-varying and gridded currents are not available yet");
+                c.errors.push(d);
+                None
+            }
+        },
+        None => None,
+    };
+    let seabed = depth.as_ref().map(|_| SeabedSpec {
+        stiffness: kbot,
+        damping_ratio: None,
+        damping: cbot,
+        friction_coefficient: mu,
+        friction_velocity: None,
+    });
+    EnvironmentSpec {
+        gravity,
+        water_density,
+        air_density: None,
+        depth,
+        seabed,
+        current,
+    }
+}
+
+/// `Currents 1`: a steady profile from `current_profile.txt` beside the deck (MoorDyn reads
+/// it from the deck's folder): rows `z ux uy uz` after three header lines.
+fn current_profile(c: &mut Converter, t: &Token, row: &Row, dir: &Path) -> Option<CurrentSpec> {
+    let path = dir.join("current_profile.txt");
+    let text = match std::fs::read_to_string(&path) {
+        Ok(s) => s,
+        Err(e) => {
+            let d = c
+                .diag(
+                    Some(t.span.clone()),
+                    "OPTIONS › Currents",
+                    format!("Currents 1 needs {}: {e}", path.display()),
+                )
+                .expected("current_profile.txt beside the deck: rows `z ux uy uz` [m, m/s]")
+                .hint("put the profile file next to the deck, or set Currents to 0");
+            c.errors.push(d);
+            return None;
+        }
+    };
+    let mut rows: Vec<[f64; 4]> = Vec::new();
+    for line in text.lines() {
+        let nums: Vec<f64> = line
+            .split([',', ' ', '\t'])
+            .filter(|s| !s.is_empty())
+            .map_while(parse_number)
+            .collect();
+        if nums.len() >= 2 && line.split_whitespace().count() == nums.len() {
+            rows.push([
+                nums[0],
+                nums[1],
+                nums.get(2).copied().unwrap_or(0.0),
+                nums.get(3).copied().unwrap_or(0.0),
+            ]);
+        }
+    }
+    rows.sort_by(|a, b| a[0].total_cmp(&b[0]));
+    c.note(
+        row.line,
+        format!(
+            "Currents 1: {} depths read from {}",
+            rows.len(),
+            path.display()
+        ),
+    );
+    Some(CurrentSpec {
+        kind: spanned(t, CurrentKind::Profile),
+        velocity: None,
+        profile: Some(spanned(t, rows)),
+    })
+}
+
+fn simulation_of(
+    c: &mut Converter,
+    o: &Options,
+    options: &ConvertOptions,
+    channels: Vec<Spanned<String>>,
+    line_outputs: bool,
+    coupled: usize,
+) -> SimulationSpec {
+    let mut time_step = None;
+    if let Some((t, row)) = o.get(&["dtm"])
+        && let Some(x) = c.number(t, "OPTIONS", &row.tokens[1].text, "s")
+    {
+        time_step = Some(spanned(t, TimeStepSpec::Value(x)));
+        c.name_key("simulation.time_step".into(), "OPTIONS › dtM".into());
+    }
+    if let Some((t, row)) = o.get(&["cfl"]) {
+        c.note(
+            row.line,
+            format!(
+                "CFL {}: hawser takes its time step from its own stability bound{}",
+                t.text,
+                if time_step.is_some() {
+                    " only where dtM exceeds it"
+                } else {
+                    " (time_step = \"auto\")"
+                }
+            ),
+        );
+    }
+    if let Some((t, row)) = o.get(&["tscheme"]) {
+        if t.text.eq_ignore_ascii_case("rk4") {
+        } else {
+            c.note(
+                row.line,
+                format!(
+                    "tScheme {}: hawser integrates with RK4 (fourth order; it needs no smaller \
+                     step than MoorDyn's schemes)",
+                    t.text
+                ),
+            );
+        }
+    }
+    let mut output_interval = None;
+    if let Some((t, row)) = o.get(&["dtout"])
+        && let Some(x) = c.number(t, "OPTIONS", &row.tokens[1].text, "s")
+    {
+        if x > 0.0 {
+            output_interval = Some(spanned(t, x));
+            c.name_key(
+                "simulation.output_interval".into(),
+                "OPTIONS › dtOut".into(),
+            );
+        } else if let Some(TimeStepSpec::Value(dt)) = time_step.as_ref().map(|s| s.get_ref()) {
+            output_interval = Some(spanned(t, *dt));
+            c.note(row.line, "dtOut 0: a sample every time step");
+        }
+    }
+    for (names, what) in [
+        (
+            &["dtic", "tmaxic", "cdscaleic", "threshic", "icgendynamic"][..],
+            "initial-condition controls",
+        ),
+        (&["fileic", "inputic"][..], "an initial-condition file"),
+    ] {
+        if let Some((t, row)) = o.get(names) {
+            c.note(
+                row.line,
+                format!(
+                    "{} ({what}): hawser starts from its Newton static equilibrium, which these \
+                     MoorDyn dynamic-relaxation settings approximate; they are not needed",
+                    row.tokens[1].text
+                ),
+            );
+            let _ = t;
+        }
+    }
+    for names in [
+        &["writelog"][..],
+        &["writeunits"],
+        &["disableouttime"],
+        &["echo"],
+    ] {
+        if let Some((_, row)) = o.get(names) {
+            c.note(
+                row.line,
+                format!(
+                    "{} has no effect in hawser (its results are always written with units)",
+                    row.tokens[1].text
+                ),
+            );
+        }
+    }
+    let vessel_end = options.vessel_motion.as_deref().and_then(vessel_duration);
+    let duration = match (options.duration, vessel_end) {
+        (Some(d), _) => d,
+        (None, Some(d)) if coupled > 0 => d,
+        _ => {
+            c.note(
+                0,
+                "a MoorDyn deck has no duration: running 60 s (give --duration to change it)",
+            );
+            60.0
+        }
+    };
+    let anchor = Token {
+        text: String::new(),
+        span: 0..0,
+    };
+    SimulationSpec {
+        duration: spanned(&anchor, duration),
+        time_step,
+        safety_factor: None,
+        scheme: Some(SchemeSpec::Rk4),
+        output_interval: output_interval.clone(),
+        snapshot_interval: if line_outputs {
+            Some(output_interval.unwrap_or_else(|| spanned(&anchor, 0.1)))
+        } else {
+            None
+        },
+        initial_condition: Some(InitialConditionSpec::Statics),
+        channels,
+    }
+}
+
+/// OUTPUTS: MoorDyn channel names become labelled hawser channels.
+fn convert_outputs(c: &mut Converter, s: &Section) -> Vec<Spanned<String>> {
+    let mut out = Vec::new();
+    for row in &s.rows {
+        for t in &row.tokens {
+            match output_channel(&t.text) {
+                Ok(spec) => out.push(spanned(t, format!("{} = {spec}", t.text))),
+                Err(msg) => {
+                    let d = c
+                        .diag(Some(t.span.clone()), "OUTPUTS", msg)
+                        .expected(
+                            "FairTen#, AnchTen#, L#N#PX|PY|PZ|VX|VY|VZ|T, P#PX|PY|PZ|VX|VY|VZ",
+                        )
+                        .hint("# is the line, node or point number, e.g. FairTen1, L1N20T, P4PZ");
+                    c.errors.push(d);
+                }
+            }
+        }
+    }
+    out
+}
+
+/// The hawser channel of a MoorDyn output name (case-insensitive).
+pub fn output_channel(name: &str) -> Result<String, String> {
+    let u = name.to_uppercase();
+    let split_num = |s: &str| -> Option<(String, String)> {
+        let digits: String = s.chars().take_while(|ch| ch.is_ascii_digit()).collect();
+        (!digits.is_empty()).then(|| (digits.clone(), s[digits.len()..].to_string()))
+    };
+    for (prefix, end) in [("FAIRTEN", "end_b"), ("ANCHTEN", "end_a")] {
+        if let Some(rest) = u.strip_prefix(prefix) {
+            return match split_num(rest) {
+                Some((n, tail)) if tail.is_empty() => {
+                    Ok(format!("{}.{end}.node_force", line_name(&n)))
+                }
+                _ => Err(format!("`{name}` is not {prefix}<line number>")),
+            };
+        }
+    }
+    let quantity = |q: &str| -> Option<String> {
+        Some(
+            match q {
+                "PX" => "x",
+                "PY" => "y",
+                "PZ" => "z",
+                "VX" => "vx",
+                "VY" => "vy",
+                "VZ" => "vz",
+                "T" | "TEN" => "tension",
+                _ => return None,
+            }
+            .to_string(),
+        )
+    };
+    if let Some(rest) = u
+        .strip_prefix('L')
+        .map(|r| r.strip_prefix("INE").unwrap_or(r))
+        && let Some((l, tail)) = split_num(rest)
+    {
+        let Some(tail) = tail
+            .strip_prefix('N')
+            .map(|r| r.strip_prefix("ODE").unwrap_or(r))
+        else {
+            return Err(format!(
+                "`{name}`: a line channel is L<line>N<node><quantity>"
+            ));
+        };
+        let Some((n, q)) = split_num(tail) else {
+            return Err(format!(
+                "`{name}`: a line channel is L<line>N<node><quantity>"
+            ));
+        };
+        return match quantity(&q) {
+            Some(q) => Ok(format!(
+                "{}.node{}.{q}",
+                line_name(&l),
+                n.parse::<usize>().unwrap_or(0)
+            )),
+            None => Err(format!(
+                "`{name}`: line node quantity `{q}` is not available (PX, PY, PZ, VX, VY, VZ, T)"
+            )),
+        };
+    }
+    for prefix in ["POINT", "CON", "P", "C"] {
+        if let Some(rest) = u.strip_prefix(prefix)
+            && let Some((p, q)) = split_num(rest)
+        {
+            return match quantity(&q).filter(|q| q != "tension") {
+                Some(q) => Ok(format!("{}.{q}", point_name(&p))),
+                None => Err(format!(
+                    "`{name}`: point quantity `{q}` is not available (PX, PY, PZ, VX, VY, VZ)"
+                )),
+            };
+        }
+    }
+    Err(format!("unknown MoorDyn output channel `{name}`"))
+}
