@@ -22,6 +22,16 @@ pub enum Channel {
         /// 0, 1, 2 for x, y, z.
         axis: usize,
     },
+    /// Magnitude of the net force of the line on its end node, without the node's inertia
+    /// [N]: the end segment's tension plus the end node's share of weight, buoyancy, drag and
+    /// seabed contact. This is MoorDyn's `FairTen`/`AnchTen`; it differs from
+    /// [`Channel::EndTension`] by the inertia of the end node's share of the line.
+    EndNodeForce {
+        /// Line index.
+        line: usize,
+        /// End B (true) or A.
+        end_b: bool,
+    },
     /// Tension at a node [N].
     NodeTension {
         /// Line index.
@@ -84,6 +94,9 @@ impl Channel {
                 end_b,
                 axis,
             } => format!("{}.{}.f{}", line(l), end(end_b), AXES[axis]),
+            Channel::EndNodeForce { line: l, end_b } => {
+                format!("{}.{}.node_force", line(l), end(end_b))
+            }
             Channel::NodeTension { line: l, node } => format!("{}.node{}.tension", line(l), node),
             Channel::NodePosition {
                 line: l,
@@ -110,9 +123,10 @@ impl Channel {
     /// Unit of the channel.
     pub fn unit(&self) -> &'static str {
         match self {
-            Channel::EndTension { .. } | Channel::EndForce { .. } | Channel::NodeTension { .. } => {
-                "N"
-            }
+            Channel::EndTension { .. }
+            | Channel::EndForce { .. }
+            | Channel::EndNodeForce { .. }
+            | Channel::NodeTension { .. } => "N",
             Channel::NodePosition { .. } | Channel::PointPosition { .. } => "m",
             Channel::NodeVelocity { .. } | Channel::PointVelocity { .. } => "m/s",
             Channel::ElementStrain { .. } => "-",
@@ -124,6 +138,11 @@ impl Channel {
         match *self {
             Channel::EndTension { line, end_b } => system.end_force(ws, line, end_b).norm(),
             Channel::EndForce { line, end_b, axis } => system.end_force(ws, line, end_b)[axis],
+            Channel::EndNodeForce { line, end_b } => {
+                let lw = &ws.lines[line];
+                let node = if end_b { lw.force.len() - 1 } else { 0 };
+                lw.force[node].norm()
+            }
             Channel::NodeTension { line, node } => system.node_tension(ws, line, node),
             Channel::NodePosition { line, node, axis } => ws.lines[line].position[node][axis],
             Channel::NodeVelocity { line, node, axis } => ws.lines[line].velocity[node][axis],
@@ -143,9 +162,9 @@ impl Channel {
                 .unwrap_or(0)
         };
         match *self {
-            Channel::EndTension { line, .. } | Channel::EndForce { line, .. } => {
-                line < system.lines.len()
-            }
+            Channel::EndTension { line, .. }
+            | Channel::EndForce { line, .. }
+            | Channel::EndNodeForce { line, .. } => line < system.lines.len(),
             Channel::NodeTension { line, node }
             | Channel::NodePosition { line, node, .. }
             | Channel::NodeVelocity { line, node, .. } => node < nodes(line),
