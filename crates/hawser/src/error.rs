@@ -95,3 +95,41 @@ pub enum StaticsError {
         hint: String,
     },
 }
+
+/// A modal analysis that failed.
+#[derive(Debug, thiserror::Error, Clone, PartialEq)]
+pub enum ModalError {
+    /// Nothing can move: every line end is fixed or prescribed and no line has interior nodes.
+    #[error(
+        "the system has no degrees of freedom (no interior line nodes and no free points); \
+         hint: give the lines more than one element"
+    )]
+    NoDegreesOfFreedom,
+    /// The mass matrix is not positive definite (a massless free point outside the water
+    /// with no line mass, or a non-physical added mass).
+    #[error(
+        "the mass matrix is not positive definite; hint: give massless free points a mass or \
+         use the shift-invert method"
+    )]
+    MassNotDefinite,
+    /// The stiffness is singular at every shift tried.
+    #[error(
+        "{location} is singular: some degrees of freedom have no stiffness (a slack line or an \
+         unloaded joint); hint: check the static state, or give a shift below zero"
+    )]
+    Singular {
+        /// Where.
+        location: String,
+    },
+    /// The eigen solver did not converge.
+    #[error(
+        "the eigen solver did not converge after {iterations} iterations (relative residual \
+         {residual:.2e}); hint: ask for fewer modes or use the dense method"
+    )]
+    NotConverged {
+        /// Iterations done.
+        iterations: usize,
+        /// Largest relative residual of the wanted modes.
+        residual: Real,
+    },
+}

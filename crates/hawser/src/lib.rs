@@ -15,6 +15,7 @@ pub mod error;
 pub mod formulation;
 pub mod integrate;
 pub mod linalg;
+pub mod linearise;
 pub mod math;
 pub mod model;
 pub mod physics;
@@ -22,6 +23,6 @@ pub mod simulation;
 pub mod statics;
 pub mod system;
 
-pub use error::{ModelError, SimulationError, StaticsError};
+pub use error::{ModalError, ModelError, SimulationError, StaticsError};
 pub use model::Model;
 pub use system::System;

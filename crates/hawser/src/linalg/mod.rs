@@ -1,8 +1,10 @@
-//! Structured linear solves: block-tridiagonal lines coupled through shared points.
+//! Structured linear solves: block-tridiagonal lines coupled through shared points; symmetric
+//! generalized eigenproblems (dense, and shift-invert subspace iteration on the block solver).
 
 mod block_tridiagonal;
 mod coupled;
 mod dense;
+pub mod eigen;
 
 pub use block_tridiagonal::BlockTridiagonal;
 pub use coupled::{CoupledSystem, EndKind, LineBlocks, Singular};

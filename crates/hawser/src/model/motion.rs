@@ -145,6 +145,30 @@ impl Motion {
     pub fn initial_position(&self) -> Vec3 {
         self.kinematics(0.0).0
     }
+
+    /// The periodic excitations this motion contains: (description, frequency [Hz]), e.g.
+    /// ("sinusoid x", 0.1). A sinusoid gives one per axis with a non-zero amplitude, a circular
+    /// orbit its orbit frequency; fixed, constant-velocity and time-series motions none (a time
+    /// series would need a spectral estimate, not made here). The build-up ramp is ignored: it
+    /// only shapes the start.
+    pub fn excitation_frequencies(&self) -> Vec<(String, Real)> {
+        match self {
+            Motion::Sinusoid {
+                amplitude,
+                frequency,
+                ..
+            } => (0..3)
+                .filter(|&i| amplitude[i] != 0.0 && frequency[i] > 0.0)
+                .map(|i| (format!("sinusoid {}", ["x", "y", "z"][i]), frequency[i]))
+                .collect(),
+            Motion::CircularOrbit {
+                radius, frequency, ..
+            } if *radius != 0.0 && *frequency > 0.0 => {
+                vec![("circular orbit".to_string(), *frequency)]
+            }
+            _ => Vec::new(),
+        }
+    }
 }
 
 /// Build-up ramp R(t) = 10τ³ − 15τ⁴ + 6τ⁵ with τ = t/T for t < T, 1 after (the quintic

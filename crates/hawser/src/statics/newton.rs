@@ -4,14 +4,15 @@
 //! velocities are zero. The residual is the net static force on every unknown node [N], from
 //! the same force code as the dynamics. The Jacobian is formed by finite differences of that
 //! code with three colours per line (a node only influences its two neighbours), so it costs
-//! nine line evaluations per iteration, and it is solved with the dynamics' coupled
+//! nine line evaluations per iteration ([`crate::linearise::force_jacobian`], shared with the
+//! linearisation of modal analysis), and it is solved with the dynamics' coupled
 //! block-tridiagonal solver.
 
 use super::catenary;
 use super::dynamic_relaxation;
 use crate::error::StaticsError;
 use crate::formulation::fe::{LoadOptions, line_forces};
-use crate::linalg::EndKind;
+use crate::linearise::{Difference, Variable, force_jacobian};
 use crate::math::{Mat3, Real, Vec3, get3, set3};
 use crate::system::{System, Workspace};
 
@@ -204,108 +205,6 @@ pub fn catenary_seed(system: &System, y: &mut [Real], ws: &mut Workspace) {
     }
 }
 
-/// Finite-difference Jacobian ∂F/∂x of the static residual into the workspace's line blocks
-/// and point blocks.
-fn jacobian(system: &System, y: &[Real], current_factor: Real, ws: &mut Workspace) {
-    let options = LoadOptions { current_factor };
-    system.point_kinematics(0.0, y, ws);
-    system.gather_lines(y, ws);
-    let env = &system.environment;
-    for (li, l) in system.lines.iter().enumerate() {
-        let n = l.fe.elements();
-        let min_l0 =
-            l.fe.sections
-                .iter()
-                .map(|s| s.element_length)
-                .fold(Real::INFINITY, Real::min);
-        let h = 1e-6 * min_l0;
-        let blocks = &mut ws.blocks[li];
-        blocks.clear();
-        let lw = &mut ws.lines[li];
-        lw.velocity.iter_mut().for_each(|v| *v = Vec3::zeros());
-        let base: Vec<Vec3> = {
-            line_forces(
-                &l.fe,
-                env,
-                0.0,
-                &lw.position,
-                &lw.velocity,
-                &mut lw.force,
-                &mut lw.elements,
-                None,
-                options,
-            );
-            lw.force.clone()
-        };
-        let free = |node: usize| -> bool {
-            if node == 0 {
-                blocks.end_a != EndKind::Known
-            } else if node == n {
-                blocks.end_b != EndKind::Known
-            } else {
-                true
-            }
-        };
-        let free_nodes: Vec<bool> = (0..=n).map(free).collect();
-        for colour in 0..3 {
-            for k in 0..3 {
-                let mut any = false;
-                for j in (colour..=n).step_by(3) {
-                    if free_nodes[j] {
-                        lw.position[j][k] += h;
-                        any = true;
-                    }
-                }
-                if !any {
-                    continue;
-                }
-                line_forces(
-                    &l.fe,
-                    env,
-                    0.0,
-                    &lw.position,
-                    &lw.velocity,
-                    &mut lw.force,
-                    &mut lw.elements,
-                    None,
-                    options,
-                );
-                for j in (colour..=n).step_by(3) {
-                    if !free_nodes[j] {
-                        continue;
-                    }
-                    lw.position[j][k] -= h;
-                    for r in 0..3 {
-                        blocks.diag[j][(r, k)] = (lw.force[j][r] - base[j][r]) / h;
-                        if j > 0 {
-                            blocks.upper[j - 1][(r, k)] = (lw.force[j - 1][r] - base[j - 1][r]) / h;
-                        }
-                        if j < n {
-                            blocks.lower[j][(r, k)] = (lw.force[j + 1][r] - base[j + 1][r]) / h;
-                        }
-                    }
-                }
-            }
-        }
-        blocks.coupled = true;
-    }
-    for (f, &p) in system.free_points.iter().enumerate() {
-        let k0 = ws.points[p];
-        let (f0, _) = system.point_own_load(p, &k0, 0.0, current_factor);
-        let mut m = Mat3::zeros();
-        let h = 1e-6;
-        for k in 0..3 {
-            let mut kk = k0;
-            kk.position[k] += h;
-            let (f1, _) = system.point_own_load(p, &kk, 0.0, current_factor);
-            for r in 0..3 {
-                m[(r, k)] = (f1[r] - f0[r]) / h;
-            }
-        }
-        ws.coupled.point_diag[f] = m;
-    }
-}
-
 /// Solves J Δ = −R in place of the workspace blocks; `shift` adds −shift·I to every diagonal
 /// block (a positive stiffness that regularises slack cables). Writes Δ into `delta`.
 fn newton_step(
@@ -392,7 +291,14 @@ fn newton(
         if norm <= tol {
             return (true, it, norm);
         }
-        jacobian(system, y, current_factor, ws);
+        force_jacobian(
+            system,
+            y,
+            Variable::Position,
+            Difference::Forward,
+            current_factor,
+            ws,
+        );
         let scale = ws
             .blocks
             .iter()

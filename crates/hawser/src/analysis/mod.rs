@@ -1,4 +1,8 @@
-//! Results analysis: output channels, running statistics, slack intervals and snap events.
+//! Results analysis: output channels, running statistics, slack intervals and snap events;
+//! natural modes about the static state ([`modes`]) and the resonance report ([`resonance`]).
+
+pub mod modes;
+pub mod resonance;
 
 use crate::math::Real;
 use crate::system::{System, Workspace};
@@ -78,6 +82,15 @@ pub enum Channel {
         /// Axis.
         axis: usize,
     },
+    /// Component of the net force the attached lines exert on a point [N]: the sum of their
+    /// end-node forces without inertia (MoorDyn's `P#FX` of a coupled point, the mooring force
+    /// on the vessel).
+    PointForce {
+        /// Point index.
+        point: usize,
+        /// Axis.
+        axis: usize,
+    },
 }
 
 const AXES: [&str; 3] = ["x", "y", "z"];
@@ -117,6 +130,9 @@ impl Channel {
             Channel::PointVelocity { point, axis } => {
                 format!("{}.v{}", system.points[point].name, AXES[axis])
             }
+            Channel::PointForce { point, axis } => {
+                format!("{}.f{}", system.points[point].name, AXES[axis])
+            }
         }
     }
 
@@ -126,7 +142,8 @@ impl Channel {
             Channel::EndTension { .. }
             | Channel::EndForce { .. }
             | Channel::EndNodeForce { .. }
-            | Channel::NodeTension { .. } => "N",
+            | Channel::NodeTension { .. }
+            | Channel::PointForce { .. } => "N",
             Channel::NodePosition { .. } | Channel::PointPosition { .. } => "m",
             Channel::NodeVelocity { .. } | Channel::PointVelocity { .. } => "m/s",
             Channel::ElementStrain { .. } => "-",
@@ -149,6 +166,21 @@ impl Channel {
             Channel::ElementStrain { line, element } => ws.lines[line].elements.strain[element],
             Channel::PointPosition { point, axis } => ws.points[point].position[axis],
             Channel::PointVelocity { point, axis } => ws.points[point].velocity[axis],
+            Channel::PointForce { point, axis } => system
+                .lines
+                .iter()
+                .zip(&ws.lines)
+                .map(|(l, lw)| {
+                    let mut f = 0.0;
+                    if l.end_a == point {
+                        f += lw.force[0][axis];
+                    }
+                    if l.end_b == point {
+                        f += lw.force[lw.force.len() - 1][axis];
+                    }
+                    f
+                })
+                .sum(),
         }
     }
 
@@ -169,9 +201,9 @@ impl Channel {
             | Channel::NodePosition { line, node, .. }
             | Channel::NodeVelocity { line, node, .. } => node < nodes(line),
             Channel::ElementStrain { line, element } => element + 1 < nodes(line),
-            Channel::PointPosition { point, .. } | Channel::PointVelocity { point, .. } => {
-                point < system.points.len()
-            }
+            Channel::PointPosition { point, .. }
+            | Channel::PointVelocity { point, .. }
+            | Channel::PointForce { point, .. } => point < system.points.len(),
         }
     }
 }

@@ -1,0 +1,529 @@
+//! Natural frequencies and mode shapes about the static state, labelled in the field's words.
+//!
+//! The undamped modes solve K φ = λ M φ, λ = ω² [rad²/s²], with K the symmetric part of the
+//! tangent stiffness and M the mass with added mass from [`crate::linearise`]. Current drag
+//! (a follower load) and the √(1+ε) factor of seabed contact make K slightly non-symmetric;
+//! its skew part is dropped, as every undamped modal analysis does, and its relative size is
+//! reported ([`Modes::stiffness_asymmetry`]). Damping is not in the modes.
+//!
+//! The lowest modes come from shift-invert subspace iteration on (K − σM)⁻¹ M, each
+//! application an O(nodes) solve with the dynamics' block solver; the shift σ sits at zero or
+//! just below it, so slack and soft systems (small or zero stiffness) are found first. A dense
+//! solve (Cholesky of M and a symmetric eigen decomposition, O(n³)) serves small systems and
+//! is the fallback.
+//!
+//! Each mode is labelled by where its kinetic energy ½ φᵀ M φ sits: the share of each line
+//! (its interior nodes' rows) and of each free point, and within them the share along the
+//! static tangent (axial), in the plane of the line's static shape (in-plane: the vertical
+//! plane of a catenary), normal to it (out-of-plane), or, for a straight vertical line with
+//! no plane, transverse; for a point, vertical or horizontal. The owners with at least half
+//! the largest share take part in the label, and the ordinal counts the modes with the same
+//! direction and owners: "first in-plane mode of line L1", "second axial mode of lines L2
+//! and L3", "first vertical mode of point buoy".
+
+use crate::error::ModalError;
+use crate::linalg::eigen::{EigenFailure, EigenPairs, SubspaceOptions, dense_generalized};
+use crate::linearise::{BlockSolver, DofMap, DofOwner, Linearisation};
+use crate::math::{Real, Vec3, get3};
+use crate::system::System;
+use std::f64::consts::TAU;
+
+/// How to solve the eigenproblem.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum EigenMethod {
+    /// Dense for small systems (≤ 150 degrees of freedom or a third of them wanted),
+    /// shift-invert otherwise, dense as fallback up to 2000 degrees of freedom.
+    #[default]
+    Auto,
+    /// Shift-invert subspace iteration with the block solver (O(nodes) per iteration).
+    ShiftInvert,
+    /// Dense generalized eigen decomposition (O(n³)).
+    Dense,
+}
+
+/// Settings of a modal analysis.
+#[derive(Clone, Copy, Debug)]
+pub struct ModalOptions {
+    /// Number of modes wanted (the lowest).
+    pub count: usize,
+    /// Solver.
+    pub method: EigenMethod,
+    /// Shift σ [rad²/s²]; `None` for 0, moved below zero if K is singular there.
+    pub shift: Option<Real>,
+    /// Convergence settings of the subspace iteration.
+    pub subspace: SubspaceOptions,
+}
+
+impl Default for ModalOptions {
+    /// Ten modes, automatic method, shift at zero.
+    fn default() -> Self {
+        Self {
+            count: 10,
+            method: EigenMethod::Auto,
+            shift: None,
+            subspace: SubspaceOptions::default(),
+        }
+    }
+}
+
+/// Dominant direction of a mode's motion.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ModeDirection {
+    /// Along the static tangent of the line (stretching).
+    Axial,
+    /// Normal to the tangent, in the plane of the line's static shape.
+    InPlane,
+    /// Normal to the plane of the line's static shape.
+    OutOfPlane,
+    /// Normal to the tangent of a straight vertical line (no plane defined).
+    Transverse,
+    /// A point moving vertically.
+    Vertical,
+    /// A point moving horizontally.
+    Horizontal,
+}
+
+impl ModeDirection {
+    /// The word used in labels.
+    pub fn name(&self) -> &'static str {
+        match self {
+            ModeDirection::Axial => "axial",
+            ModeDirection::InPlane => "in-plane",
+            ModeDirection::OutOfPlane => "out-of-plane",
+            ModeDirection::Transverse => "transverse",
+            ModeDirection::Vertical => "vertical",
+            ModeDirection::Horizontal => "horizontal",
+        }
+    }
+}
+
+/// What carries a mode's kinetic energy.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ModeOwner {
+    /// A line (its interior nodes).
+    Line(usize),
+    /// A free point.
+    Point(usize),
+}
+
+/// A mode's label.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ModeLabel {
+    /// Dominant direction.
+    pub direction: ModeDirection,
+    /// Owners with at least half the largest kinetic-energy share, largest first.
+    pub owners: Vec<ModeOwner>,
+    /// 1 for the lowest mode with this direction and these owners, 2 for the next, ...
+    pub ordinal: usize,
+    /// The label in words, e.g. "first axial mode of line L1".
+    pub text: String,
+}
+
+/// One natural mode.
+#[derive(Clone, Debug)]
+pub struct Mode {
+    /// Eigenvalue λ = ω² [rad²/s²] (negative: statically unstable direction).
+    pub eigenvalue: Real,
+    /// Natural frequency f = √λ / 2π [Hz] (0 when λ ≤ 0).
+    pub frequency: Real,
+    /// Period 1/f [s] (infinite when f = 0).
+    pub period: Real,
+    /// Shape over the degrees of freedom, mass-normalised (φᵀ M φ = 1 [kg·m²] for a shape in
+    /// metres per unit modal coordinate), its largest component positive.
+    pub shape: Vec<Real>,
+    /// Kinetic-energy share of each line [-] (sums with the points' to 1).
+    pub line_shares: Vec<Real>,
+    /// Kinetic-energy share of each free point, by point index [-] (0 for other points).
+    pub point_shares: Vec<Real>,
+    /// Kinetic-energy shares by direction over the label's owners [-].
+    pub direction_shares: Vec<(ModeDirection, Real)>,
+    /// Label.
+    pub label: ModeLabel,
+}
+
+impl Mode {
+    /// Displacement of node `node` of line `line` in this mode's shape [m per unit modal
+    /// coordinate] (zero at ends on fixed or prescribed points).
+    pub fn node_displacement(&self, dofs: &DofMap, line: usize, node: usize) -> Vec3 {
+        dofs.node_group(line, node)
+            .map(|g| get3(&self.shape, g))
+            .unwrap_or_else(Vec3::zeros)
+    }
+
+    /// Displacement of a point (zero for fixed and prescribed points).
+    pub fn point_displacement(&self, dofs: &DofMap, point: usize) -> Vec3 {
+        dofs.point_group(point)
+            .map(|g| get3(&self.shape, g))
+            .unwrap_or_else(Vec3::zeros)
+    }
+
+    /// Largest nodal displacement magnitude of the shape (to scale it for display).
+    pub fn largest_displacement(&self) -> Real {
+        (0..self.shape.len() / 3)
+            .map(|g| get3(&self.shape, g).norm())
+            .fold(0.0, Real::max)
+    }
+}
+
+/// The result of a modal analysis.
+#[derive(Clone, Debug)]
+pub struct Modes {
+    /// Modes by increasing frequency.
+    pub modes: Vec<Mode>,
+    /// Solver used.
+    pub method: EigenMethod,
+    /// Shift used by shift-invert [rad²/s²] (0 for dense).
+    pub shift: Real,
+    /// Subspace iterations (0 for dense).
+    pub iterations: usize,
+    /// max|K − Kᵀ| / max|K| of the tangent stiffness before symmetrisation [-].
+    pub stiffness_asymmetry: Real,
+    /// Number of degrees of freedom.
+    pub degrees_of_freedom: usize,
+}
+
+/// The lowest `options.count` natural modes of the linearised system, labelled.
+pub fn natural_modes(
+    system: &System,
+    lin: &Linearisation,
+    options: &ModalOptions,
+) -> Result<Modes, ModalError> {
+    let n = lin.dofs.len();
+    if n == 0 {
+        return Err(ModalError::NoDegreesOfFreedom);
+    }
+    let count = options.count.clamp(1, n);
+    let k = lin.stiffness.symmetric_part();
+    let m = &lin.mass;
+    let dense = |k: &crate::linearise::BlockMatrix| {
+        dense_generalized(&k.to_dense(&lin.dofs), &m.to_dense(&lin.dofs)).map(|mut p| {
+            p.values.truncate(count);
+            p.vectors = p.vectors.columns(0, count).into_owned();
+            p
+        })
+    };
+    let method = match options.method {
+        EigenMethod::Auto if n <= 150 || 3 * count >= n => EigenMethod::Dense,
+        other => other,
+    };
+    let (pairs, method, shift) = match method {
+        EigenMethod::Dense => (dense(&k).map_err(failure)?, EigenMethod::Dense, 0.0),
+        _ => match shift_invert(lin, &k, count, options) {
+            Ok((p, s)) => (p, EigenMethod::ShiftInvert, s),
+            Err(e) if options.method == EigenMethod::Auto && n <= 2000 => {
+                let p = dense(&k).map_err(|_| e)?;
+                (p, EigenMethod::Dense, 0.0)
+            }
+            Err(e) => return Err(e),
+        },
+    };
+    let mut modes = build_modes(system, lin, &pairs);
+    modes.sort_by(|a, b| a.eigenvalue.total_cmp(&b.eigenvalue));
+    label_ordinals(system, &mut modes);
+    Ok(Modes {
+        modes,
+        method,
+        shift,
+        iterations: pairs.iterations,
+        stiffness_asymmetry: lin.stiffness.asymmetry(),
+        degrees_of_freedom: n,
+    })
+}
+
+fn failure(e: EigenFailure) -> ModalError {
+    match e {
+        EigenFailure::MassNotDefinite => ModalError::MassNotDefinite,
+        EigenFailure::SingularShift => ModalError::Singular {
+            location: "the stiffness matrix".into(),
+        },
+        EigenFailure::NotConverged {
+            iterations,
+            residual,
+        } => ModalError::NotConverged {
+            iterations,
+            residual,
+        },
+    }
+}
+
+/// Shift-invert subspace iteration; tries σ = 0 (or the user's shift), then shifts below zero
+/// of 10⁻⁸, 10⁻⁶ and 10⁻⁴ of the mean diagonal ratio K_ii/M_ii when K − σM is singular.
+fn shift_invert(
+    lin: &Linearisation,
+    k: &crate::linearise::BlockMatrix,
+    count: usize,
+    options: &ModalOptions,
+) -> Result<(EigenPairs, Real), ModalError> {
+    let map = &lin.dofs;
+    let n = map.len();
+    let m = &lin.mass;
+    let kd = k.to_diagonal(map);
+    let md = m.to_diagonal(map);
+    let mean_ratio =
+        kd.iter().sum::<Real>().abs() / md.iter().sum::<Real>().max(Real::MIN_POSITIVE);
+    let mut shifts = vec![options.shift.unwrap_or(0.0)];
+    if options.shift.is_none() {
+        shifts.extend([1e-8, 1e-6, 1e-4].map(|f| -f * mean_ratio));
+    }
+    let mut last = ModalError::Singular {
+        location: "the stiffness matrix".into(),
+    };
+    for sigma in shifts {
+        let mut solver = BlockSolver::new(&k.shifted(sigma, m));
+        let result = crate::linalg::eigen::subspace_iteration(
+            n,
+            count,
+            sigma,
+            |b, x| solver.solve(map, b, x).is_ok() && x.iter().all(|v| v.is_finite()),
+            |x, y| k.apply(map, x, y),
+            |x, y| m.apply(map, x, y),
+            options.subspace,
+        );
+        match result {
+            Ok(p) => return Ok((p, sigma)),
+            Err(EigenFailure::SingularShift) => {
+                last = ModalError::Singular {
+                    location: format!("the shifted stiffness K − σM at σ = {sigma:.3e} rad²/s²"),
+                };
+            }
+            Err(e) => return Err(failure(e)),
+        }
+    }
+    Err(last)
+}
+
+/// Frame of a line's static shape for labelling: node positions and the plane normal.
+struct LineFrame {
+    position: Vec<Vec3>,
+    normal: Option<Vec3>,
+}
+
+fn line_frames(system: &System, state: &[Real]) -> Vec<LineFrame> {
+    let mut ws = system.workspace();
+    system.point_kinematics(0.0, state, &mut ws);
+    system.gather_lines(state, &mut ws);
+    ws.lines
+        .iter()
+        .map(|lw| {
+            let r = &lw.position;
+            let n = r.len() - 1;
+            let chord = r[n] - r[0];
+            let length: Real = r.windows(2).map(|w| (w[1] - w[0]).norm()).sum();
+            let c = chord.try_normalize(1e-12 * length.max(1e-300));
+            // The node farthest from the chord line spans the plane with it.
+            let (far, dev) = r
+                .iter()
+                .map(|p| match c {
+                    Some(c) => (p - r[0]).cross(&c).norm(),
+                    None => (p - r[0]).norm(),
+                })
+                .enumerate()
+                .fold((0, 0.0), |a, (i, d)| if d > a.1 { (i, d) } else { a });
+            let normal = match c {
+                Some(c) if dev > 1e-4 * length => c.cross(&(r[far] - r[0])).try_normalize(0.0),
+                Some(c) => c.cross(&Vec3::z()).try_normalize(1e-6),
+                None => None,
+            };
+            LineFrame {
+                position: r.clone(),
+                normal,
+            }
+        })
+        .collect()
+}
+
+fn build_modes(system: &System, lin: &Linearisation, pairs: &EigenPairs) -> Vec<Mode> {
+    let map = &lin.dofs;
+    let n = map.len();
+    let frames = line_frames(system, &lin.state);
+    let mut mphi = vec![0.0; n];
+    let mut out = Vec::new();
+    for (c, &lambda) in pairs.values.iter().enumerate() {
+        let mut shape: Vec<Real> = pairs.vectors.column(c).iter().copied().collect();
+        let biggest = shape
+            .iter()
+            .copied()
+            .fold(0.0, |a: Real, x| if x.abs() > a.abs() { x } else { a });
+        if biggest < 0.0 {
+            shape.iter_mut().for_each(|x| *x = -*x);
+        }
+        lin.mass.apply(map, &shape, &mut mphi);
+        let total: Real = shape.iter().zip(&mphi).map(|(a, b)| a * b).sum();
+        let total = if total > 0.0 { total } else { 1.0 };
+        // Energies by owner and by direction (per owner).
+        let mut line_shares = vec![0.0; system.lines.len()];
+        let mut point_shares = vec![0.0; system.points.len()];
+        // [axial, in-plane, out-of-plane, transverse, vertical, horizontal] per owner.
+        let mut line_dirs = vec![[0.0; 6]; system.lines.len()];
+        let mut point_dirs = vec![[0.0; 6]; system.points.len()];
+        for (g, owner) in map.owners.iter().enumerate() {
+            let u = get3(&shape, g);
+            let p = get3(&mphi, g);
+            let e = u.dot(&p) / total;
+            match *owner {
+                DofOwner::LineNode { line, node } => {
+                    line_shares[line] += e;
+                    let f = &frames[line];
+                    let t = (f.position[node + 1] - f.position[node - 1])
+                        .try_normalize(0.0)
+                        .unwrap_or_else(Vec3::z);
+                    let axial = t.dot(&u) * t.dot(&p) / total;
+                    let d = &mut line_dirs[line];
+                    d[0] += axial;
+                    match f
+                        .normal
+                        .and_then(|nv| (nv - t * nv.dot(&t)).try_normalize(1e-9))
+                    {
+                        Some(nv) => {
+                            let out_of_plane = nv.dot(&u) * nv.dot(&p) / total;
+                            d[2] += out_of_plane;
+                            d[1] += e - axial - out_of_plane;
+                        }
+                        None => d[3] += e - axial,
+                    }
+                }
+                DofOwner::Point { point } => {
+                    point_shares[point] += e;
+                    let vertical = u.z * p.z / total;
+                    point_dirs[point][4] += vertical;
+                    point_dirs[point][5] += e - vertical;
+                }
+            }
+        }
+        let mut owners: Vec<(ModeOwner, Real)> = line_shares
+            .iter()
+            .enumerate()
+            .map(|(i, &s)| (ModeOwner::Line(i), s))
+            .chain(
+                system
+                    .free_points
+                    .iter()
+                    .map(|&p| (ModeOwner::Point(p), point_shares[p])),
+            )
+            .collect();
+        owners.sort_by(|a, b| b.1.total_cmp(&a.1));
+        let top = owners.first().map(|o| o.1).unwrap_or(0.0);
+        let owners: Vec<ModeOwner> = owners
+            .into_iter()
+            .filter(|o| o.1 >= 0.5 * top)
+            .map(|o| o.0)
+            .collect();
+        let mut dirs = [0.0; 6];
+        for o in &owners {
+            let d = match *o {
+                ModeOwner::Line(l) => line_dirs[l],
+                ModeOwner::Point(p) => point_dirs[p],
+            };
+            for k in 0..6 {
+                dirs[k] += d[k];
+            }
+        }
+        const ALL: [ModeDirection; 6] = [
+            ModeDirection::Axial,
+            ModeDirection::InPlane,
+            ModeDirection::OutOfPlane,
+            ModeDirection::Transverse,
+            ModeDirection::Vertical,
+            ModeDirection::Horizontal,
+        ];
+        let mut direction_shares: Vec<(ModeDirection, Real)> = ALL
+            .iter()
+            .zip(dirs)
+            .filter(|(_, s)| *s != 0.0)
+            .map(|(d, s)| (*d, s))
+            .collect();
+        direction_shares.sort_by(|a, b| b.1.total_cmp(&a.1));
+        let direction = direction_shares
+            .first()
+            .map(|d| d.0)
+            .unwrap_or(ModeDirection::Transverse);
+        let frequency = lambda.max(0.0).sqrt() / TAU;
+        out.push(Mode {
+            eigenvalue: lambda,
+            frequency,
+            period: 1.0 / frequency,
+            shape,
+            line_shares,
+            point_shares,
+            direction_shares,
+            label: ModeLabel {
+                direction,
+                owners,
+                ordinal: 0,
+                text: String::new(),
+            },
+        });
+    }
+    out
+}
+
+/// "first", "second", ... "tenth", then "11th", "12th", "21st", ...
+pub fn ordinal_word(k: usize) -> String {
+    const WORDS: [&str; 10] = [
+        "first", "second", "third", "fourth", "fifth", "sixth", "seventh", "eighth", "ninth",
+        "tenth",
+    ];
+    if (1..=10).contains(&k) {
+        return WORDS[k - 1].to_string();
+    }
+    let suffix = match (k % 10, k % 100) {
+        (_, 11..=13) => "th",
+        (1, _) => "st",
+        (2, _) => "nd",
+        (3, _) => "rd",
+        _ => "th",
+    };
+    format!("{k}{suffix}")
+}
+
+fn label_ordinals(system: &System, modes: &mut [Mode]) {
+    let mut seen: Vec<(ModeDirection, Vec<ModeOwner>)> = Vec::new();
+    for mode in modes.iter_mut() {
+        let key = (mode.label.direction, mode.label.owners.clone());
+        let ordinal = seen.iter().filter(|k| **k == key).count() + 1;
+        seen.push(key);
+        let names = |kind: &str, plural: &str, list: Vec<&str>| -> Option<String> {
+            match list.len() {
+                0 => None,
+                1 => Some(format!("{kind} {}", list[0])),
+                k => Some(format!(
+                    "{plural} {} and {}",
+                    list[..k - 1].join(", "),
+                    list[k - 1]
+                )),
+            }
+        };
+        let lines: Vec<&str> = mode
+            .label
+            .owners
+            .iter()
+            .filter_map(|o| match o {
+                ModeOwner::Line(l) => Some(system.lines[*l].name.as_str()),
+                _ => None,
+            })
+            .collect();
+        let points: Vec<&str> = mode
+            .label
+            .owners
+            .iter()
+            .filter_map(|o| match o {
+                ModeOwner::Point(p) => Some(system.points[*p].name.as_str()),
+                _ => None,
+            })
+            .collect();
+        let whom: Vec<String> = [
+            names("line", "lines", lines),
+            names("point", "points", points),
+        ]
+        .into_iter()
+        .flatten()
+        .collect();
+        mode.label.ordinal = ordinal;
+        mode.label.text = format!(
+            "{} {} mode of {}",
+            ordinal_word(ordinal),
+            mode.label.direction.name(),
+            whom.join(" and ")
+        );
+    }
+}
