@@ -16,6 +16,8 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::Instant;
 
+mod modes;
+
 /// `println!` that ends the program quietly when stdout is a closed pipe (`hawser ... | head`)
 /// instead of panicking.
 macro_rules! out {
@@ -124,6 +126,8 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// Natural frequencies, mode shapes, connection stiffness and resonance check.
+    Modes(modes::ModesArgs),
 }
 
 /// Exit codes: 0 success, 1 simulation or statics failure, 2 bad input.
@@ -153,6 +157,7 @@ fn main() -> ExitCode {
             mass,
             json,
         } => bench(&file, duration, dt, &mass, json),
+        Command::Modes(args) => modes::run(&args),
     };
     match result {
         Ok(code) => code,

@@ -1,0 +1,437 @@
+//! `hawser modes`: natural frequencies and mode shapes about the static state, the stiffness
+//! the lines offer their fixed and prescribed points, and the resonance report.
+//!
+//! Files written into `--out DIR`: `modes.csv` (mode, frequency, period, label),
+//! `shapes_<line>.csv` per line (every mode's nodal displacements, scaled so that the largest
+//! nodal displacement of the mode over the whole system is 1), `shapes_points.csv` for free
+//! points, and `modes.json` (what `--json` prints).
+
+use anyhow::{Context, Result};
+use hawser::analysis::modes::{ModalOptions, ModeOwner, Modes, natural_modes};
+use hawser::analysis::resonance::{ResonanceCheck, excitations, resonance_report};
+use hawser::linearise::{ConnectionStiffness, Linearisation, LinearisationOptions};
+use hawser::math::Real;
+use hawser::model::PointKind;
+use hawser::statics::{StaticOptions, StaticSolution};
+use hawser::system::System;
+use serde_json::{Value, json};
+use std::io::Write;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use std::time::Instant;
+
+/// Arguments of `hawser modes`.
+#[derive(clap::Args)]
+pub struct ModesArgs {
+    /// Scenario file (TOML).
+    file: PathBuf,
+    /// Number of modes (the lowest).
+    #[arg(long, default_value_t = 10)]
+    count: usize,
+    /// Directory for mode shapes (CSV per line) and modes.json.
+    #[arg(long, short)]
+    out: Option<PathBuf>,
+    /// Print everything as JSON.
+    #[arg(long)]
+    json: bool,
+    /// Resonance warning margin [%]: warn when an excitation frequency lies within this
+    /// fraction of a natural frequency.
+    #[arg(long, default_value_t = 10.0)]
+    margin: Real,
+}
+
+/// Wall times [s] of the stages.
+struct Timing {
+    statics: f64,
+    linearisation: f64,
+    modes: f64,
+    stiffness: f64,
+}
+
+/// Runs `hawser modes`.
+pub fn run(args: &ModesArgs) -> Result<ExitCode> {
+    if !(args.margin >= 0.0 && args.margin < 100.0) || args.count == 0 {
+        eprintln!(
+            "error: --margin must be in [0, 100) % and --count at least 1 (got {} %, {})",
+            args.margin, args.count
+        );
+        return Ok(ExitCode::from(2));
+    }
+    let Some(loaded) = super::load(&args.file) else {
+        return Ok(ExitCode::from(2));
+    };
+    let system = super::system_of(&loaded.model)?;
+    let t = Instant::now();
+    let sol = match hawser::statics::solve(&system, None, &StaticOptions::default()) {
+        Ok(s) => s,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return Ok(ExitCode::from(1));
+        }
+    };
+    let statics_time = t.elapsed().as_secs_f64();
+    let t = Instant::now();
+    let lin = hawser::linearise::linearise(&system, &sol.state, LinearisationOptions::default());
+    let linearisation_time = t.elapsed().as_secs_f64();
+    let t = Instant::now();
+    let options = ModalOptions {
+        count: args.count,
+        ..Default::default()
+    };
+    let modes = match natural_modes(&system, &lin, &options) {
+        Ok(m) => m,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return Ok(ExitCode::from(1));
+        }
+    };
+    let modes_time = t.elapsed().as_secs_f64();
+    let t = Instant::now();
+    let stiffness = hawser::linearise::connection_stiffness(&system, &lin).map_err(|s| {
+        anyhow::anyhow!(
+            "the stiffness is singular at {:?}",
+            system.singular_location(s)
+        )
+    })?;
+    let timing = Timing {
+        statics: statics_time,
+        linearisation: linearisation_time,
+        modes: modes_time,
+        stiffness: t.elapsed().as_secs_f64(),
+    };
+    let margin = args.margin / 100.0;
+    let report = resonance_report(&excitations(&system), &modes, margin);
+    let document = to_json(
+        &system, &sol, &lin, &modes, &stiffness, &report, margin, &timing,
+    );
+    if let Some(dir) = &args.out {
+        write_files(dir, &system, &lin, &modes, &document)
+            .with_context(|| format!("writing mode shapes into {}", dir.display()))?;
+    }
+    if args.json {
+        print(&serde_json::to_string_pretty(&document)?);
+    } else {
+        print(&table(&system, &sol, &modes, &stiffness, &report, margin));
+    }
+    eprintln!(
+        "timing: statics {:.3} s, linearisation {:.3} s, modes {:.3} s ({}), stiffness {:.3} s",
+        timing.statics,
+        timing.linearisation,
+        timing.modes,
+        method_name(&modes),
+        timing.stiffness
+    );
+    for r in report.iter().filter(|r| r.warning()) {
+        eprintln!(
+            "warning: {} at {:.4} Hz is within {} % of mode {} ({:.4} Hz, {})",
+            r.excitation.source,
+            r.excitation.frequency,
+            args.margin,
+            r.nearest_mode + 1,
+            r.natural_frequency,
+            modes.modes[r.nearest_mode].label.text
+        );
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+/// Writes to stdout; a closed pipe ends the program quietly.
+fn print(text: &str) {
+    let mut out = std::io::stdout().lock();
+    if let Err(e) = writeln!(out, "{text}")
+        && e.kind() == std::io::ErrorKind::BrokenPipe
+    {
+        std::process::exit(0);
+    }
+}
+
+fn method_name(modes: &Modes) -> String {
+    match modes.method {
+        hawser::analysis::modes::EigenMethod::Dense => "dense".to_string(),
+        _ => format!(
+            "shift-invert subspace iteration, {} iterations, shift {:.3e} rad²/s²",
+            modes.iterations, modes.shift
+        ),
+    }
+}
+
+fn point_kind(system: &System, p: usize) -> &'static str {
+    match system.points[p].kind {
+        PointKind::Fixed => "fixed",
+        PointKind::Prescribed(_) => "prescribed",
+        PointKind::Free { .. } => "free",
+    }
+}
+
+fn table(
+    system: &System,
+    sol: &StaticSolution,
+    modes: &Modes,
+    stiffness: &ConnectionStiffness,
+    report: &[ResonanceCheck],
+    margin: Real,
+) -> String {
+    let mut s = String::new();
+    let mut line = |t: String| {
+        s.push_str(&t);
+        s.push('\n');
+    };
+    line(format!(
+        "static equilibrium: {} ({} iterations, residual {:.2e} N)",
+        sol.method, sol.iterations, sol.residual
+    ));
+    line(format!(
+        "{} degrees of freedom; {}; stiffness asymmetry {:.1e} (symmetric part used)",
+        modes.degrees_of_freedom,
+        method_name(modes),
+        modes.stiffness_asymmetry
+    ));
+    line(String::new());
+    line(format!(
+        "{:>4} {:>14} {:>12}  label",
+        "mode", "frequency [Hz]", "period [s]"
+    ));
+    for (i, m) in modes.modes.iter().enumerate() {
+        line(format!(
+            "{:>4} {:>14.6} {:>12.4}  {}",
+            i + 1,
+            m.frequency,
+            m.period,
+            m.label.text
+        ));
+    }
+    line(String::new());
+    line(
+        "stiffness at connections [N/m] (−∂F/∂x of the lines' force on the point, free points and nodes relaxed):"
+            .into(),
+    );
+    for (i, &p) in stiffness.points.iter().enumerate() {
+        let k = stiffness.block(i, i);
+        line(format!(
+            "  {} ({})",
+            system.points[p].name,
+            point_kind(system, p)
+        ));
+        for r in 0..3 {
+            line(format!(
+                "    [{:>13.5e} {:>13.5e} {:>13.5e} ]",
+                k[(r, 0)],
+                k[(r, 1)],
+                k[(r, 2)]
+            ));
+        }
+    }
+    line(String::new());
+    if report.is_empty() {
+        line("resonance: no periodic excitation in the scenario (prescribed sinusoids and orbits are checked)".into());
+    } else {
+        line(format!("resonance (margin {:.3} %):", margin * 100.0));
+        for r in report {
+            let verdict = if r.warning() {
+                "WARNING: within the margin".to_string()
+            } else if !r.covered {
+                "not covered: above the computed modes, ask for more with --count".to_string()
+            } else {
+                "clear".to_string()
+            };
+            line(format!(
+                "  {} at {:.4} Hz: nearest mode {} at {:.4} Hz ({:+.1} %, {}) — {}",
+                r.excitation.source,
+                r.excitation.frequency,
+                r.nearest_mode + 1,
+                r.natural_frequency,
+                100.0 * r.relative_distance,
+                modes.modes[r.nearest_mode].label.text,
+                verdict
+            ));
+        }
+    }
+    s.trim_end().to_string()
+}
+
+#[allow(clippy::too_many_arguments)]
+fn to_json(
+    system: &System,
+    sol: &StaticSolution,
+    lin: &Linearisation,
+    modes: &Modes,
+    stiffness: &ConnectionStiffness,
+    report: &[ResonanceCheck],
+    margin: Real,
+    timing: &Timing,
+) -> Value {
+    let owner_name = |o: &ModeOwner| match *o {
+        ModeOwner::Line(l) => system.lines[l].name.clone(),
+        ModeOwner::Point(p) => system.points[p].name.clone(),
+    };
+    let mode_list: Vec<Value> = modes
+        .modes
+        .iter()
+        .enumerate()
+        .map(|(i, m)| {
+            let lines: serde_json::Map<String, Value> = system
+                .lines
+                .iter()
+                .zip(&m.line_shares)
+                .map(|(l, s)| (l.name.clone(), json!(s)))
+                .collect();
+            let points: serde_json::Map<String, Value> = system
+                .free_points
+                .iter()
+                .map(|&p| (system.points[p].name.clone(), json!(m.point_shares[p])))
+                .collect();
+            let directions: serde_json::Map<String, Value> = m
+                .direction_shares
+                .iter()
+                .map(|(d, s)| (d.name().to_string(), json!(s)))
+                .collect();
+            json!({
+                "mode": i + 1,
+                "frequency_hz": m.frequency,
+                "period_s": m.period,
+                "eigenvalue_rad2_per_s2": m.eigenvalue,
+                "label": m.label.text,
+                "direction": m.label.direction.name(),
+                "owners": m.label.owners.iter().map(owner_name).collect::<Vec<_>>(),
+                "kinetic_energy_share": {"lines": lines, "points": points, "directions": directions},
+            })
+        })
+        .collect();
+    let stiff: serde_json::Map<String, Value> = stiffness
+        .points
+        .iter()
+        .enumerate()
+        .map(|(i, &p)| {
+            let k = stiffness.block(i, i);
+            let rows: Vec<Vec<Real>> = (0..3)
+                .map(|r| (0..3).map(|c| k[(r, c)]).collect())
+                .collect();
+            (
+                system.points[p].name.clone(),
+                json!({"kind": point_kind(system, p), "matrix_n_per_m": rows}),
+            )
+        })
+        .collect();
+    let checks: Vec<Value> = report
+        .iter()
+        .map(|r| {
+            json!({
+                "source": r.excitation.source,
+                "frequency_hz": r.excitation.frequency,
+                "nearest_mode": r.nearest_mode + 1,
+                "natural_frequency_hz": r.natural_frequency,
+                "relative_distance": r.relative_distance,
+                "modes_within_margin": r.within_margin.iter().map(|i| i + 1).collect::<Vec<_>>(),
+                "warning": r.warning(),
+                "covered": r.covered,
+            })
+        })
+        .collect();
+    json!({
+        "statics": {"method": sol.method, "iterations": sol.iterations, "residual_n": sol.residual},
+        "degrees_of_freedom": lin.dofs.len(),
+        "method": method_name(modes),
+        "stiffness_asymmetry": modes.stiffness_asymmetry,
+        "modes": mode_list,
+        "stiffness": stiff,
+        "resonance": {"margin": margin, "checks": checks},
+        "timing_s": {
+            "statics": timing.statics,
+            "linearisation": timing.linearisation,
+            "modes": timing.modes,
+            "stiffness": timing.stiffness,
+        },
+    })
+}
+
+fn write_files(
+    dir: &Path,
+    system: &System,
+    lin: &Linearisation,
+    modes: &Modes,
+    document: &Value,
+) -> Result<()> {
+    std::fs::create_dir_all(dir)?;
+    let create = |name: &str| -> Result<std::io::BufWriter<std::fs::File>> {
+        let path = dir.join(name);
+        Ok(std::io::BufWriter::new(
+            std::fs::File::create(&path).with_context(|| format!("creating {}", path.display()))?,
+        ))
+    };
+    let mut summary = create("modes.csv")?;
+    writeln!(summary, "mode,frequency [Hz],period [s],label")?;
+    for (i, m) in modes.modes.iter().enumerate() {
+        writeln!(
+            summary,
+            "{},{},{},\"{}\"",
+            i + 1,
+            m.frequency,
+            m.period,
+            m.label.text
+        )?;
+    }
+    summary.flush()?;
+    // Static positions of every node.
+    let mut ws = system.workspace();
+    system.point_kinematics(0.0, &lin.state, &mut ws);
+    system.gather_lines(&lin.state, &mut ws);
+    let scale: Vec<Real> = modes
+        .modes
+        .iter()
+        .map(|m| 1.0 / m.largest_displacement().max(Real::MIN_POSITIVE))
+        .collect();
+    for (li, l) in system.lines.iter().enumerate() {
+        let mut w = create(&format!("shapes_{}.csv", l.name))?;
+        writeln!(
+            w,
+            "mode,node,arc_length [m],x [m],y [m],z [m],ux [-],uy [-],uz [-]"
+        )?;
+        for (k, m) in modes.modes.iter().enumerate() {
+            for node in 0..=l.fe.elements() {
+                let r = ws.lines[li].position[node];
+                let u = m.node_displacement(&lin.dofs, li, node) * scale[k];
+                writeln!(
+                    w,
+                    "{},{node},{},{},{},{},{},{},{}",
+                    k + 1,
+                    l.fe.arc_length(node),
+                    r.x,
+                    r.y,
+                    r.z,
+                    u.x,
+                    u.y,
+                    u.z
+                )?;
+            }
+        }
+        w.flush()?;
+    }
+    if !system.free_points.is_empty() {
+        let mut w = create("shapes_points.csv")?;
+        writeln!(w, "mode,point,x [m],y [m],z [m],ux [-],uy [-],uz [-]")?;
+        for (k, m) in modes.modes.iter().enumerate() {
+            for &p in &system.free_points {
+                let r = ws.points[p].position;
+                let u = m.point_displacement(&lin.dofs, p) * scale[k];
+                writeln!(
+                    w,
+                    "{},{},{},{},{},{},{},{}",
+                    k + 1,
+                    system.points[p].name,
+                    r.x,
+                    r.y,
+                    r.z,
+                    u.x,
+                    u.y,
+                    u.z
+                )?;
+            }
+        }
+        w.flush()?;
+    }
+    std::fs::write(
+        dir.join("modes.json"),
+        serde_json::to_string_pretty(document)? + "\n",
+    )?;
+    Ok(())
+}
