@@ -147,7 +147,10 @@ fn print(text: &str) {
 
 fn method_name(modes: &Modes) -> String {
     match modes.method {
-        hawser::analysis::modes::EigenMethod::Dense => "dense".to_string(),
+        hawser::analysis::modes::EigenMethod::Dense => match &modes.fallback {
+            Some(why) => format!("dense ({why})"),
+            None => "dense".to_string(),
+        },
         _ => format!(
             "shift-invert subspace iteration, {} iterations, shift {:.3e} rad²/s²",
             modes.iterations, modes.shift

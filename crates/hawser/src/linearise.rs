@@ -377,6 +377,15 @@ impl BlockMatrix {
         d
     }
 
+    /// The largest absolute row sum ‖A‖_∞ over the degrees of freedom.
+    pub fn row_sum_norm(&self, map: &DofMap) -> Real {
+        let mut rows = vec![0.0; map.len()];
+        for (r, _, v) in self.triplets(map) {
+            rows[r] += v.abs();
+        }
+        rows.into_iter().fold(0.0, Real::max)
+    }
+
     /// The dense matrix over the degrees of freedom (tests and small systems).
     pub fn to_dense(&self, map: &DofMap) -> DMatrix<Real> {
         let n = map.len();

@@ -180,6 +180,8 @@ pub struct Modes {
     pub stiffness_asymmetry: Real,
     /// Number of degrees of freedom.
     pub degrees_of_freedom: usize,
+    /// Why the automatic method fell back to the dense solver, if it did.
+    pub fallback: Option<String>,
 }
 
 /// The lowest `options.count` natural modes of the linearised system, labelled.
@@ -206,12 +208,14 @@ pub fn natural_modes(
         EigenMethod::Auto if n <= 150 || 3 * count >= n => EigenMethod::Dense,
         other => other,
     };
+    let mut fallback = None;
     let (pairs, method, shift) = match method {
         EigenMethod::Dense => (dense(&k).map_err(failure)?, EigenMethod::Dense, 0.0),
         _ => match shift_invert(lin, &k, count, options) {
             Ok((p, s)) => (p, EigenMethod::ShiftInvert, s),
             Err(e) if options.method == EigenMethod::Auto && n <= 2000 => {
-                let p = dense(&k).map_err(|_| e)?;
+                let p = dense(&k).map_err(|_| e.clone())?;
+                fallback = Some(format!("shift-invert failed ({e}); solved dense"));
                 (p, EigenMethod::Dense, 0.0)
             }
             Err(e) => return Err(e),
@@ -227,6 +231,7 @@ pub fn natural_modes(
         iterations: pairs.iterations,
         stiffness_asymmetry: lin.stiffness.asymmetry(),
         degrees_of_freedom: n,
+        fallback,
     })
 }
 
@@ -274,6 +279,7 @@ fn shift_invert(
             n,
             count,
             sigma,
+            (k.row_sum_norm(map), m.row_sum_norm(map)),
             |b, x| solver.solve(map, b, x).is_ok() && x.iter().all(|v| v.is_finite()),
             |x, y| k.apply(map, x, y),
             |x, y| m.apply(map, x, y),
