@@ -539,11 +539,8 @@ impl System {
                         seabed.damping_per_length(lt.diameter, lt.mass_per_length) * 0.5 * l0;
                     let wet = (lt.mass_per_length - rho * s.area) * env.gravity;
                     if seabed.friction_coefficient > 0.0 && wet > 0.0 {
-                        add.friction_damping =
-                            seabed.friction_coefficient * wet * std::f64::consts::PI
-                                / seabed.friction_velocity
-                                * 0.5
-                                * l0;
+                        // per node: the node carries at least half this element
+                        add.friction_damping = seabed.friction_slope(wet, 0.5 * l0) * 0.5 * l0;
                     }
                 }
                 rows[e].add(&add);
@@ -630,9 +627,11 @@ impl SphereContact {
         Some(Self {
             radius,
             stiffness,
-            damping: env
-                .seabed
-                .damping_of_area(std::f64::consts::PI * radius * radius, stiffness, m),
+            damping: env.seabed.damping_of_area(
+                std::f64::consts::PI * radius * radius,
+                stiffness,
+                m,
+            ),
         })
     }
 
@@ -652,10 +651,7 @@ impl SphereContact {
         let vxy = Vec3::new(velocity.x, velocity.y, 0.0);
         let speed = vxy.norm();
         if seabed.friction_coefficient > 0.0 && speed > 0.0 && normal > 0.0 {
-            let mag = seabed.friction_coefficient
-                * normal
-                * (std::f64::consts::PI * speed / seabed.friction_velocity).tanh();
-            f -= vxy * (mag / speed);
+            f -= vxy * (seabed.friction(speed, normal, 1.0) / speed);
         }
         f
     }

@@ -86,9 +86,14 @@ impl Conversion {
 
 /// The column layouts of MoorDyn-C 2.7 tables (required columns, then optional ones).
 const LINE_TYPE_COLUMNS: &[&str] = &[
-    "TypeName", "Diam", "Mass/m", "EA", "BA/-zeta", "EI", "Cd", "Ca", "CdAx", "CaAx",
+    "TypeName", "Diam", "Mass/m", "EA", "BA/-zeta", "EI", "Cd", "Ca", "CdAx", "CaAx", "Cl", "dF",
+    "cF",
 ];
 const POINT_COLUMNS: &[&str] = &["ID", "Type", "X", "Y", "Z", "Mass", "Volume", "CdA", "Ca"];
+/// The older 12-column points table with a constant force.
+const POINT_COLUMNS_WITH_FORCE: &[&str] = &[
+    "ID", "Type", "X", "Y", "Z", "Mass", "Volume", "FX", "FY", "FZ", "CdA", "Ca",
+];
 const LINE_COLUMNS: &[&str] = &[
     "ID",
     "LineType",
@@ -316,7 +321,7 @@ pub fn convert(
         None => (Vec::new(), 0),
     };
     let (lines, line_outputs) = match deck.section(SectionKind::Lines) {
-        Some(s) => convert_lines(&mut c, s),
+        Some(s) => convert_lines(&mut c, s, &points),
         None => (Vec::new(), false),
     };
     if deck.section(SectionKind::Lines).is_none() {
@@ -327,10 +332,10 @@ pub fn convert(
         c.errors.push(d);
     }
     let channels = match deck.section(SectionKind::Outputs) {
-        Some(s) => convert_outputs(&mut c, s),
-        None => Vec::new(),
+        Some(s) if !lines.is_empty() => convert_outputs(&mut c, s, &lines),
+        _ => Vec::new(),
     };
-    let environment = environment_of(&mut c, &opts, dir);
+    let environment = environment_of(&mut c, &opts, dir, &points);
     let simulation = simulation_of(&mut c, &opts, options, channels, line_outputs, coupled);
     if !c.errors.is_empty() {
         c.errors.sort_by_key(|d| (d.line, d.column));
@@ -355,10 +360,41 @@ fn convert_line_types(c: &mut Converter, s: &Section, dir: &Path) -> Vec<LineTyp
     const S: &str = "LINE TYPES";
     let mut out = Vec::new();
     for row in &s.rows {
-        if !c.check_columns(S, row, LINE_TYPE_COLUMNS, LINE_TYPE_COLUMNS.len()) {
+        if !c.check_columns(S, row, LINE_TYPE_COLUMNS, 10) {
             continue;
         }
         let t = &row.tokens;
+        if t.len() == 12 {
+            let d = c
+                .diag(
+                    Some(t[11].span.clone()),
+                    &format!("{S} › {} › dF", t[0].text),
+                    "`dF` without `cF`",
+                )
+                .expected("10 columns, 11 with the VIV lift coefficient Cl, or 13 with Cl dF cF")
+                .hint("give both dF and cF, or neither");
+            c.errors.push(d);
+            continue;
+        }
+        if let Some(cl) = t.get(10) {
+            match c.number(cl, &format!("{S} › {}", t[0].text), "Cl", "-") {
+                Some(x) if x != 0.0 => {
+                    let d = c
+                        .diag(Some(cl.span.clone()), &format!("{S} › {} › Cl", t[0].text), "vortex-induced vibration (Cl > 0) is not supported")
+                        .expected("Cl = 0")
+                        .hint("hawser has no VIV model; set Cl to 0 (or drop the VIV columns) to run without it");
+                    c.errors.push(d);
+                }
+                Some(_) => c.note(
+                    row.line,
+                    format!(
+                        "line type `{}`: VIV columns with Cl = 0 have no effect",
+                        t[0].text
+                    ),
+                ),
+                None => {}
+            }
+        }
         let i = out.len();
         let name = t[0].text.clone();
         let key = |f: &str| format!("line_types[{i}].{f}");
@@ -378,8 +414,8 @@ fn convert_line_types(c: &mut Converter, s: &Section, dir: &Path) -> Vec<LineTyp
         ] {
             c.name_key(key(field), format!("{S} › {name} › {col}"));
         }
-        let diameter = c.number(&t[1], S, "Diam", "m");
-        let mass = c.number(&t[2], S, "Mass/m", "kg/m");
+        let diameter = c.number(&t[1], &format!("{S} › {}", t[0].text), "Diam", "m");
+        let mass = c.number(&t[2], &format!("{S} › {}", t[0].text), "Mass/m", "kg/m");
         let (axial_stiffness, tension_strain) = match parse_number(&t[3].text) {
             Some(ea) => (Some(spanned(&t[3], ea)), None),
             None if t[3].text.contains('|') => {
@@ -425,13 +461,47 @@ fn convert_line_types(c: &mut Converter, s: &Section, dir: &Path) -> Vec<LineTyp
                 }
             },
         };
-        let ba = c.number(&t[4], S, "BA/-zeta", "N·s (or −ζ, a fraction of critical)");
+        let ba = if parse_number(&t[4].text).is_none()
+            && (t[4].text.contains('|')
+                || !t[4]
+                    .text
+                    .starts_with(|ch: char| ch == '-' || ch == '.' || ch.is_ascii_digit()))
+        {
+            let d = c
+                .diag(Some(t[4].span.clone()), &format!("{S} › {name} › BA/-zeta"), "nonlinear or dynamic-spring axial damping (`BA` table file or `BA|BAd`) is not supported")
+                .expected("a damping coefficient in N·s, or −ζ (a fraction of critical damping)")
+                .hint("give a constant BA");
+            c.errors.push(d);
+            None
+        } else {
+            c.number(
+                &t[4],
+                &format!("{S} › {}", t[0].text),
+                "BA/-zeta",
+                "N·s (or −ζ, a fraction of critical)",
+            )
+        };
+        if parse_number(&t[5].text).is_none()
+            && !t[5]
+                .text
+                .starts_with(|ch: char| ch == '-' || ch == '.' || ch.is_ascii_digit())
+        {
+            let d = c
+                .diag(
+                    Some(t[5].span.clone()),
+                    &format!("{S} › {name} › EI"),
+                    "a bending moment–curvature table is not supported",
+                )
+                .expected("EI in N·m²")
+                .hint("give a constant EI");
+            c.errors.push(d);
+        }
         let (axial_damping, axial_damping_ratio) = match ba {
             Some(x) if x < 0.0 => (None, Some(spanned(&t[4], -x))),
             Some(x) => (Some(spanned(&t[4], x)), None),
             None => (None, None),
         };
-        let ei = c.number(&t[5], S, "EI", "N·m²");
+        let ei = parse_number(&t[5].text);
         if ei.is_some_and(|x| x > 0.0) {
             c.note(
                 row.line,
@@ -443,10 +513,10 @@ fn convert_line_types(c: &mut Converter, s: &Section, dir: &Path) -> Vec<LineTyp
                 ),
             );
         }
-        let cd = c.number(&t[6], S, "Cd", "-");
-        let ca = c.number(&t[7], S, "Ca", "-");
-        let cdax = c.number(&t[8], S, "CdAx", "-");
-        let caax = c.number(&t[9], S, "CaAx", "-");
+        let cd = c.number(&t[6], &format!("{S} › {}", t[0].text), "Cd", "-");
+        let ca = c.number(&t[7], &format!("{S} › {}", t[0].text), "Ca", "-");
+        let cdax = c.number(&t[8], &format!("{S} › {}", t[0].text), "CdAx", "-");
+        let caax = c.number(&t[9], &format!("{S} › {}", t[0].text), "CaAx", "-");
         if let Some(x) = cdax
             && x != 0.0
         {
@@ -531,10 +601,38 @@ fn convert_points(
         }
     });
     for row in &s.rows {
-        if !c.check_columns(S, row, POINT_COLUMNS, POINT_COLUMNS.len()) {
+        let with_force = row.tokens.len() >= POINT_COLUMNS_WITH_FORCE.len();
+        let columns = if with_force {
+            POINT_COLUMNS_WITH_FORCE
+        } else {
+            POINT_COLUMNS
+        };
+        if !c.check_columns(S, row, columns, columns.len()) {
             continue;
         }
         let t = &row.tokens;
+        let (force, t) = if with_force {
+            let f: Vec<Option<f64>> = ["FX", "FY", "FZ"]
+                .iter()
+                .zip(&t[7..10])
+                .map(|(col, tok)| c.number(tok, &format!("{S} › {}", t[0].text), col, "N"))
+                .collect();
+            let span = t[7].span.start..t[9].span.end;
+            let force = Spanned::new(
+                span,
+                [
+                    f[0].unwrap_or(0.0),
+                    f[1].unwrap_or(0.0),
+                    f[2].unwrap_or(0.0),
+                ],
+            );
+            let mut rest: Vec<Token> = t[..7].to_vec();
+            rest.extend_from_slice(&t[10..]);
+            (Some(force), rest)
+        } else {
+            (None, t.clone())
+        };
+        let t = &t;
         let i = out.len();
         let name = point_name(&t[0].text);
         let key = |f: &str| format!("points[{i}].{f}");
@@ -546,6 +644,7 @@ fn convert_points(
             ("volume", "Volume"),
             ("drag_area", "CdA"),
             ("added_mass_coefficient", "Ca"),
+            ("force", "FX FY FZ"),
             ("motion", "Type"),
         ] {
             c.name_key(key(field), format!("{S} › {} › {col}", t[0].text));
@@ -554,8 +653,8 @@ fn convert_points(
         let base = kind_word.trim_end_matches(|ch: char| ch.is_ascii_digit());
         let kind = match base {
             "fixed" | "fix" | "anchor" => Some(PointKindSpec::Fixed),
-            "free" | "connect" | "con" => Some(PointKindSpec::Free),
-            "coupled" | "vessel" | "ves" | "cpld" => Some(PointKindSpec::Prescribed),
+            "free" | "connect" | "con" | "point" => Some(PointKindSpec::Free),
+            "coupled" | "vessel" | "ves" | "cpld" | "fairlead" => Some(PointKindSpec::Prescribed),
             "body" | "turbine" => {
                 let d = c
                     .diag(
@@ -574,19 +673,19 @@ fn convert_points(
                         &format!("{S} › {} › Type", t[0].text),
                         format!("unknown point type `{}`", t[1].text),
                     )
-                    .expected("Fixed, Free, Coupled or Vessel")
+                    .expected("Fixed (Fix, Anchor), Free (Point, Connect), Coupled (Vessel, Fairlead)")
                     .hint("MoorDyn point types: Fixed (anchor), Free (point mass), Coupled/Vessel (moved by the host)");
                 c.errors.push(d);
                 None
             }
         };
-        let x = c.number(&t[2], S, "X", "m");
-        let y = c.number(&t[3], S, "Y", "m");
-        let z = c.number(&t[4], S, "Z", "m");
-        let mass = c.number(&t[5], S, "Mass", "kg");
-        let volume = c.number(&t[6], S, "Volume", "m³");
-        let cda = c.number(&t[7], S, "CdA", "m²");
-        let ca = c.number(&t[8], S, "Ca", "-");
+        let x = c.number(&t[2], &format!("{S} › {}", t[0].text), "X", "m");
+        let y = c.number(&t[3], &format!("{S} › {}", t[0].text), "Y", "m");
+        let z = c.number(&t[4], &format!("{S} › {}", t[0].text), "Z", "m");
+        let mass = c.number(&t[5], &format!("{S} › {}", t[0].text), "Mass", "kg");
+        let volume = c.number(&t[6], &format!("{S} › {}", t[0].text), "Volume", "m³");
+        let cda = c.number(&t[7], &format!("{S} › {}", t[0].text), "CdA", "m²");
+        let ca = c.number(&t[8], &format!("{S} › {}", t[0].text), "Ca", "-");
         let position = spanned(
             &Token {
                 text: String::new(),
@@ -650,7 +749,7 @@ fn convert_points(
             volume: f(volume, &t[6]),
             drag_area: f(cda, &t[7]),
             added_mass_coefficient: f(ca, &t[8]),
-            force: None,
+            force: force.filter(|_| free),
             motion,
         });
     }
@@ -672,7 +771,7 @@ fn vessel_duration(path: &Path) -> Option<f64> {
     Some(rows.last()?[0] - rows.first()?[0])
 }
 
-fn convert_lines(c: &mut Converter, s: &Section) -> (Vec<LineSpec>, bool) {
+fn convert_lines(c: &mut Converter, s: &Section, points: &[PointSpec]) -> (Vec<LineSpec>, bool) {
     const S: &str = "LINES";
     let mut out = Vec::new();
     let mut any_outputs = false;
@@ -696,24 +795,82 @@ fn convert_lines(c: &mut Converter, s: &Section) -> (Vec<LineSpec>, bool) {
         }
         let attach = |c: &mut Converter, tok: &Token, col: &str| -> Spanned<String> {
             let w = tok.text.to_lowercase();
-            if w.starts_with('r') || w.starts_with('b') || w.starts_with("turbine") {
+            let number = ["point", "con", "p", "c"]
+                .iter()
+                .find_map(|p| w.strip_prefix(p).filter(|r| r.parse::<u64>().is_ok()))
+                .or_else(|| w.parse::<u64>().is_ok().then_some(w.as_str()));
+            match number {
+                Some(n) => spanned(tok, point_name(n)),
+                None => {
+                    let rod = w.starts_with('r');
+                    let d = c
+                        .diag(
+                            Some(tok.span.clone()),
+                            &format!("{S} › {id} › {col}"),
+                            if rod {
+                                format!("line {id} is attached to a rod end (`{}`); rods are not available yet", tok.text)
+                            } else {
+                                format!("`{}` is not a point", tok.text)
+                            },
+                        )
+                        .expected("a point ID from the POINTS table: 3, P3, Point3, C3 or Con3")
+                        .hint(if rod {
+                            "attach the line to a Coupled or Fixed point instead of the rod"
+                        } else {
+                            "lines attach to points by their ID"
+                        });
+                    c.errors.push(d);
+                    spanned(tok, tok.text.clone())
+                }
+            }
+        };
+        let end_a = attach(c, &t[2], "AttachA");
+        let end_b = attach(c, &t[3], "AttachB");
+        for (end, tok, col) in [(&end_a, &t[2], "AttachA"), (&end_b, &t[3], "AttachB")] {
+            let known = points.iter().any(|p| p.name.get_ref() == end.get_ref());
+            if !known && end.get_ref().starts_with('P') {
+                let ids: Vec<&str> = points.iter().map(|p| &p.name.get_ref()[1..]).collect();
                 let d = c
                     .diag(
                         Some(tok.span.clone()),
                         &format!("{S} › {id} › {col}"),
-                        format!("line {id} is attached to a rod or body (`{}`)", tok.text),
+                        format!(
+                            "line {id} is attached to point {}, which is not in the POINTS table",
+                            &end.get_ref()[1..]
+                        ),
                     )
-                    .expected("the ID of a point in the POINTS table")
-                    .hint("rods and rigid bodies are not available yet; attach the line to a Coupled or Fixed point");
+                    .expected(format!("a point ID: {}", ids.join(", ")))
+                    .hint("add the point to the POINTS table, or correct the ID");
                 c.errors.push(d);
             }
-            let w = tok.text.trim_start_matches(['P', 'p', 'C', 'c']);
-            spanned(tok, point_name(w))
-        };
-        let end_a = attach(c, &t[2], "AttachA");
-        let end_b = attach(c, &t[3], "AttachB");
-        let length = c.number(&t[4], S, "UnstrLen", "m");
-        let segments = c.count(&t[5], S, "NumSegs");
+        }
+        let mut length = c.number(&t[4], &format!("{S} › {id}"), "UnstrLen", "m");
+        if let Some(l) = length
+            && l < 0.0
+        {
+            // MoorDyn: a negative length is a multiple of the distance between the ends.
+            let at = |name: &str| {
+                points
+                    .iter()
+                    .find(|p| p.name.get_ref() == name)
+                    .and_then(|p| p.position.as_ref().map(|x| *x.get_ref()))
+            };
+            if let (Some(a), Some(b)) = (at(end_a.get_ref()), at(end_b.get_ref())) {
+                let span =
+                    ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2) + (a[2] - b[2]).powi(2)).sqrt();
+                length = Some(-l * span);
+                c.note(
+                    row.line,
+                    format!(
+                        "line {id}: UnstrLen {} is {} × the {span:.6} m between its ends: {} m",
+                        t[4].text,
+                        -l,
+                        -l * span
+                    ),
+                );
+            }
+        }
+        let segments = c.count(&t[5], &format!("{S} › {id}"), "NumSegs");
         if let Some(flags) = t.get(6)
             && flags.text != "-"
             && !flags.text.is_empty()
@@ -763,6 +920,7 @@ impl<'r> Options<'r> {
 /// Options hawser reads, with their MoorDyn spellings (lower case).
 const KNOWN_OPTIONS: &[&str] = &[
     "dtm",
+    "dt",
     "cfl",
     "tscheme",
     "g",
@@ -772,24 +930,36 @@ const KNOWN_OPTIONS: &[&str] = &[
     "wtrdpth",
     "depth",
     "kbot",
+    "kb",
     "cbot",
+    "cb",
     "frictioncoefficient",
     "fricdamp",
     "statdynfricscale",
     "dtout",
     "dtic",
+    "icdt",
     "tmaxic",
+    "ictmax",
     "cdscaleic",
+    "icdfac",
     "threshic",
-    "fileic",
-    "inputic",
+    "icthresh",
     "icgendynamic",
+    "gendynamicic",
+    "fileic",
+    "icfile",
+    "inputic",
     "writelog",
     "writeunits",
+    "disableoutput",
     "disableouttime",
     "echo",
     "wavekin",
+    "dtwave",
+    "wavekin_rampt",
     "currents",
+    "unifycurrentgrid",
     "seafloorfile",
 ];
 
@@ -827,7 +997,12 @@ fn read_options<'r>(c: &mut Converter, rows: &'r [Row]) -> Options<'r> {
     out
 }
 
-fn environment_of(c: &mut Converter, o: &Options, dir: &Path) -> EnvironmentSpec {
+fn environment_of(
+    c: &mut Converter,
+    o: &Options,
+    dir: &Path,
+    points: &[PointSpec],
+) -> EnvironmentSpec {
     let num = |c: &mut Converter, names: &[&str], unit: &str| -> Option<Spanned<f64>> {
         let (t, row) = o.get(names)?;
         let name = row.tokens[1].text.clone();
@@ -835,9 +1010,37 @@ fn environment_of(c: &mut Converter, o: &Options, dir: &Path) -> EnvironmentSpec
     };
     let gravity = num(c, &["g", "gravity"], "m/s²");
     let water_density = num(c, &["rho", "wtrdnsty"], "kg/m³");
-    let depth = num(c, &["wtrdpth", "depth"], "m");
-    let kbot = num(c, &["kbot"], "Pa/m");
-    let cbot = num(c, &["cbot"], "Pa·s/m");
+    let mut depth = num(c, &["wtrdpth", "depth"], "m");
+    // MoorDyn: the depth is at least that of the deepest point (0 when not given).
+    let deepest = points
+        .iter()
+        .filter_map(|p| p.position.as_ref())
+        .map(|x| (-x.get_ref()[2], x.span()))
+        .fold(None, |m: Option<(f64, Range<usize>)>, (d, s)| match m {
+            Some((md, _)) if md >= d => m,
+            _ => Some((d, s)),
+        });
+    if let Some((d, span)) = deepest
+        && d > 0.0
+        && depth.as_ref().is_none_or(|x| *x.get_ref() < d)
+    {
+        let line = c.line_of(&span);
+        c.note(
+            line,
+            match &depth {
+                Some(x) => format!(
+                    "WtrDpth {} is above the deepest point: the seabed is lowered to z = −{d} m, as MoorDyn does",
+                    x.get_ref()
+                ),
+                None => format!(
+                    "no WtrDpth: the seabed is at the deepest point, z = −{d} m, as in MoorDyn"
+                ),
+            },
+        );
+        depth = Some(Spanned::new(span, d));
+    }
+    let kbot = num(c, &["kbot", "kb"], "Pa/m");
+    let cbot = num(c, &["cbot", "cb"], "Pa·s/m");
     let mu = num(c, &["frictioncoefficient"], "-");
     for (k, v) in [
         ("environment.gravity", "g"),
@@ -852,20 +1055,27 @@ fn environment_of(c: &mut Converter, o: &Options, dir: &Path) -> EnvironmentSpec
     ] {
         c.name_key(k.to_string(), format!("OPTIONS › {v}"));
     }
-    for (names, what) in [
-        (&["fricdamp"][..], "FricDamp"),
-        (&["statdynfricscale"][..], "StatDynFricScale"),
-    ] {
-        if let Some((_, row)) = o.get(names) {
-            c.note(
-                row.line,
-                format!(
-                    "{what}: hawser's friction is μ·tanh(π|v|/v_μ) (DG paper eq. 16) with v_μ = \
-                     0.01 m/s; MoorDyn's friction damping and static/dynamic scale are not used"
-                ),
-            );
-        }
-    }
+    let friction_damping = num(c, &["fricdamp"], "N·s/m");
+    let static_friction_scale = num(c, &["statdynfricscale"], "-");
+    c.name_key(
+        "environment.seabed.friction_damping".into(),
+        "OPTIONS › FricDamp".into(),
+    );
+    c.name_key(
+        "environment.seabed.static_friction_scale".into(),
+        "OPTIONS › StatDynFricScale".into(),
+    );
+    // MoorDyn's friction law is always its own: FricDamp defaults to 200 N·s/m.
+    let friction = mu.as_ref().filter(|m| *m.get_ref() > 0.0).map(|m| {
+        let anchor = Token {
+            text: String::new(),
+            span: m.span(),
+        };
+        (
+            friction_damping.unwrap_or_else(|| spanned(&anchor, 200.0)),
+            static_friction_scale,
+        )
+    });
     if let Some((t, row)) = o.get(&["wavekin"])
         && parse_number(&t.text) != Some(0.0)
     {
@@ -912,6 +1122,8 @@ fn environment_of(c: &mut Converter, o: &Options, dir: &Path) -> EnvironmentSpec
         damping: cbot,
         friction_coefficient: mu,
         friction_velocity: None,
+        friction_damping: friction.as_ref().map(|f| f.0.clone()),
+        static_friction_scale: friction.and_then(|f| f.1),
     });
     EnvironmentSpec {
         gravity,
@@ -983,7 +1195,7 @@ fn simulation_of(
     coupled: usize,
 ) -> SimulationSpec {
     let mut time_step = None;
-    if let Some((t, row)) = o.get(&["dtm"])
+    if let Some((t, row)) = o.get(&["dtm", "dt"])
         && let Some(x) = c.number(t, "OPTIONS", &row.tokens[1].text, "s")
     {
         time_step = Some(spanned(t, TimeStepSpec::Value(x)));
@@ -1033,36 +1245,65 @@ fn simulation_of(
     }
     for (names, what) in [
         (
-            &["dtic", "tmaxic", "cdscaleic", "threshic", "icgendynamic"][..],
-            "initial-condition controls",
+            &[
+                "dtic",
+                "icdt",
+                "tmaxic",
+                "ictmax",
+                "cdscaleic",
+                "icdfac",
+                "threshic",
+                "icthresh",
+                "icgendynamic",
+                "gendynamicic",
+            ][..],
+            "initial-condition control",
         ),
-        (&["fileic", "inputic"][..], "an initial-condition file"),
+        (
+            &["fileic", "icfile", "inputic"][..],
+            "initial-condition file",
+        ),
     ] {
-        if let Some((t, row)) = o.get(names) {
+        for (_, _, row) in o
+            .rows
+            .iter()
+            .filter(|(n, _, _)| names.contains(&n.as_str()))
+        {
             c.note(
                 row.line,
                 format!(
-                    "{} ({what}): hawser starts from its Newton static equilibrium, which these \
-                     MoorDyn dynamic-relaxation settings approximate; they are not needed",
+                    "{} ({what}) is not used: hawser starts from its Newton static equilibrium, \
+                     the state MoorDyn's initial-condition solver approximates",
                     row.tokens[1].text
                 ),
             );
-            let _ = t;
         }
     }
-    for names in [
-        &["writelog"][..],
-        &["writeunits"],
-        &["disableouttime"],
-        &["echo"],
+    for (names, why) in [
+        (&["writelog"][..], "hawser reports on the terminal"),
+        (
+            &["writeunits"],
+            "hawser's column headers always carry units",
+        ),
+        (
+            &["disableoutput", "disableouttime"],
+            "hawser always writes its results and reports progress",
+        ),
+        (&["echo"], "hawser prints conversion notes instead"),
+        (&["dtwave", "wavekin_rampt"], "waves are off (WaveKin 0)"),
+        (
+            &["unifycurrentgrid"],
+            "the current profile is used as given",
+        ),
     ] {
-        if let Some((_, row)) = o.get(names) {
+        for (_, _, row) in o
+            .rows
+            .iter()
+            .filter(|(n, _, _)| names.contains(&n.as_str()))
+        {
             c.note(
                 row.line,
-                format!(
-                    "{} has no effect in hawser (its results are always written with units)",
-                    row.tokens[1].text
-                ),
+                format!("{} has no effect: {why}", row.tokens[1].text),
             );
         }
     }
@@ -1099,11 +1340,17 @@ fn simulation_of(
 }
 
 /// OUTPUTS: MoorDyn channel names become labelled hawser channels.
-fn convert_outputs(c: &mut Converter, s: &Section) -> Vec<Spanned<String>> {
+fn convert_outputs(c: &mut Converter, s: &Section, lines: &[LineSpec]) -> Vec<Spanned<String>> {
+    let segments = |line: &str| {
+        lines
+            .iter()
+            .find(|l| l.name.get_ref() == line)
+            .and_then(|l| l.elements.as_ref().map(|n| *n.get_ref() as usize))
+    };
     let mut out = Vec::new();
     for row in &s.rows {
         for t in &row.tokens {
-            match output_channel(&t.text) {
+            match output_channel(&t.text, segments) {
                 Ok(spec) => out.push(spanned(t, format!("{} = {spec}", t.text))),
                 Err(msg) => {
                     let d = c
@@ -1120,8 +1367,13 @@ fn convert_outputs(c: &mut Converter, s: &Section) -> Vec<Spanned<String>> {
     out
 }
 
-/// The hawser channel of a MoorDyn output name (case-insensitive).
-pub fn output_channel(name: &str) -> Result<String, String> {
+/// The hawser channel of a MoorDyn output name (case-insensitive, as in MoorDyn-C 2.7's
+/// `decomposeString`); `segments` gives a line's segment count by its scenario name.
+/// The tension `T` of an end node is MoorDyn's |Fnet| of that node (`node_force`).
+pub fn output_channel(
+    name: &str,
+    segments: impl Fn(&str) -> Option<usize>,
+) -> Result<String, String> {
     let u = name.to_uppercase();
     let split_num = |s: &str| -> Option<(String, String)> {
         let digits: String = s.chars().take_while(|ch| ch.is_ascii_digit()).collect();
@@ -1131,67 +1383,95 @@ pub fn output_channel(name: &str) -> Result<String, String> {
         if let Some(rest) = u.strip_prefix(prefix) {
             return match split_num(rest) {
                 Some((n, tail)) if tail.is_empty() => {
-                    Ok(format!("{}.{end}.node_force", line_name(&n)))
+                    let line = line_name(&n);
+                    if segments(&line).is_none() {
+                        return Err(format!("`{name}`: there is no line {n}"));
+                    }
+                    Ok(format!("{line}.{end}.node_force"))
                 }
                 _ => Err(format!("`{name}` is not {prefix}<line number>")),
             };
         }
     }
-    let quantity = |q: &str| -> Option<String> {
-        Some(
-            match q {
-                "PX" => "x",
-                "PY" => "y",
-                "PZ" => "z",
-                "VX" => "vx",
-                "VY" => "vy",
-                "VZ" => "vz",
-                "T" | "TEN" => "tension",
-                _ => return None,
-            }
-            .to_string(),
-        )
+    let quantity = |q: &str| -> Option<&'static str> {
+        Some(match q {
+            "PX" => "x",
+            "PY" => "y",
+            "PZ" => "z",
+            "VX" => "vx",
+            "VY" => "vy",
+            "VZ" => "vz",
+            "T" | "TEN" => "tension",
+            "FX" => "fx",
+            "FY" => "fy",
+            "FZ" => "fz",
+            _ => return None,
+        })
     };
-    if let Some(rest) = u
-        .strip_prefix('L')
-        .map(|r| r.strip_prefix("INE").unwrap_or(r))
-        && let Some((l, tail)) = split_num(rest)
-    {
-        let Some(tail) = tail
-            .strip_prefix('N')
-            .map(|r| r.strip_prefix("ODE").unwrap_or(r))
-        else {
-            return Err(format!(
-                "`{name}`: a line channel is L<line>N<node><quantity>"
-            ));
+    let line_rest = u
+        .strip_prefix("LINE")
+        .or_else(|| u.strip_prefix('L'))
+        .and_then(split_num);
+    if let Some((l, tail)) = line_rest {
+        let line = line_name(&l);
+        let Some(n) = segments(&line) else {
+            return Err(format!("`{name}`: there is no line {l}"));
         };
-        let Some((n, q)) = split_num(tail) else {
-            return Err(format!(
-                "`{name}`: a line channel is L<line>N<node><quantity>"
-            ));
+        let form =
+            || format!("`{name}`: a line channel is L<line>N<node><quantity>, e.g. L{l}N{n}T");
+        let tail = tail
+            .strip_prefix("NODE")
+            .or_else(|| tail.strip_prefix('N'))
+            .ok_or_else(form)?;
+        let (node, q) = if let Some(q) = tail.strip_prefix('A') {
+            (0, q.to_string())
+        } else if let Some(q) = tail.strip_prefix('B') {
+            (n, q.to_string())
+        } else {
+            let (k, q) = split_num(tail).ok_or_else(form)?;
+            (k.parse::<usize>().map_err(|_| form())?, q)
         };
-        return match quantity(&q) {
-            Some(q) => Ok(format!(
-                "{}.node{}.{q}",
-                line_name(&l),
-                n.parse::<usize>().unwrap_or(0)
+        if node > n {
+            return Err(format!("`{name}`: line {l} has nodes 0 … {n}"));
+        }
+        let end = if node == 0 {
+            Some("end_a")
+        } else if node == n {
+            Some("end_b")
+        } else {
+            None
+        };
+        return match (quantity(&q), end) {
+            (Some("tension"), Some(e)) => Ok(format!("{line}.{e}.node_force")),
+            (Some(f @ ("fx" | "fy" | "fz")), Some(e)) => Ok(format!("{line}.{e}.{f}")),
+            (Some("fx" | "fy" | "fz"), None) => Err(format!(
+                "`{name}`: node forces are available at the line ends (N0 and N{n}) only"
             )),
-            None => Err(format!(
+            (Some(q), _) => Ok(format!("{line}.node{node}.{q}")),
+            (None, _) => Err(format!(
                 "`{name}`: line node quantity `{q}` is not available (PX, PY, PZ, VX, VY, VZ, T)"
             )),
         };
     }
-    for prefix in ["POINT", "CON", "P", "C"] {
-        if let Some(rest) = u.strip_prefix(prefix)
-            && let Some((p, q)) = split_num(rest)
-        {
-            return match quantity(&q).filter(|q| q != "tension") {
-                Some(q) => Ok(format!("{}.{q}", point_name(&p))),
-                None => Err(format!(
-                    "`{name}`: point quantity `{q}` is not available (PX, PY, PZ, VX, VY, VZ)"
-                )),
-            };
-        }
+    let point_rest = u
+        .strip_prefix("POINT")
+        .or_else(|| u.strip_prefix('P'))
+        .and_then(split_num);
+    if let Some((p, q)) = point_rest {
+        return match quantity(&q).filter(|q| *q != "tension") {
+            Some(q) => Ok(format!("{}.{q}", point_name(&p))),
+            None => Err(format!(
+                "`{name}`: point quantity `{q}` is not available (PX, PY, PZ, VX, VY, VZ, FX, FY, FZ)"
+            )),
+        };
+    }
+    if u.starts_with("CON") || u.starts_with('C') {
+        return Err(format!(
+            "`{name}`: MoorDyn v2 names point channels P<point><quantity> (Con/C are v1 names)"
+        ));
+    }
+    if u.starts_with('R') || u.starts_with('B') {
+        return Err(format!("`{name}`: rods and bodies are not available yet"));
     }
     Err(format!("unknown MoorDyn output channel `{name}`"))
 }

@@ -10,7 +10,7 @@ use hawser::model::*;
 use hawser::physics::environment::{Current, Environment};
 use hawser::physics::hydrodynamics::{DragModel, LoadingFunction};
 use hawser::physics::material::{AxialDamping, AxialStiffness};
-use hawser::physics::seabed::{ContactDamping, Seabed};
+use hawser::physics::seabed::{ContactDamping, FrictionLaw, Seabed};
 use std::collections::HashMap;
 use std::ops::Range;
 use std::path::Path;
@@ -784,6 +784,39 @@ fn build_environment(b: &mut Builder, spec: Option<&EnvironmentSpec>) -> Environ
                 },
                 "a small speed such as 0.01 m/s",
             ),
+            friction_law: match &s.friction_damping {
+                Some(c) => FrictionLaw::Viscous {
+                    damping: b.num(
+                        c,
+                        "environment.seabed.friction_damping",
+                        Check {
+                            ok: POSITIVE,
+                            expected: "N·s/m per node, > 0",
+                        },
+                        "MoorDyn's default FricDamp is 200 N·s/m",
+                    ),
+                    static_scale: b.opt(
+                        &s.static_friction_scale,
+                        "environment.seabed.static_friction_scale",
+                        1.0,
+                        Check {
+                            ok: POSITIVE,
+                            expected: "-, > 0",
+                        },
+                        "1 makes static and dynamic friction equal",
+                    ),
+                },
+                None => {
+                    b.not_for(
+                        s.static_friction_scale.is_some(),
+                        span_of(&s.static_friction_scale),
+                        "environment.seabed.static_friction_scale",
+                        "the tanh friction law",
+                        "MoorDyn's friction law, with `friction_damping`",
+                    );
+                    FrictionLaw::Tanh
+                }
+            },
         };
         if e.depth.is_none() {
             let span = key_span(b.source, &["environment", "seabed"]);
@@ -2180,7 +2213,7 @@ fn build_channels(
                         n.saturating_sub(1)
                     )
                 } else if model.point_index(first).is_some() {
-                    format!("point `{first}` has channels {first}.x|y|z|vx|vy|vz")
+                    format!("point `{first}` has channels {first}.x|y|z|vx|vy|vz|fx|fy|fz")
                 } else {
                     let names = model.lines.iter().map(|l| l.name.as_str());
                     let names = names.chain(model.points.iter().map(|p| p.name.as_str()));
@@ -2191,7 +2224,7 @@ fn build_channels(
                 };
                 let d = b
                     .diag(Some(c.span()), &format!("simulation.channels[{ci}]"), msg)
-                    .expected("LINE.end_a|end_b.tension|node_force|fx|fy|fz, LINE.nodeK.tension|x|y|z|vx|vy|vz, LINE.elementK.strain, POINT.x|y|z|vx|vy|vz")
+                    .expected("LINE.end_a|end_b.tension|node_force|fx|fy|fz, LINE.nodeK.tension|x|y|z|vx|vy|vz, LINE.elementK.strain, POINT.x|y|z|vx|vy|vz|fx|fy|fz")
                     .hint(hint);
                 b.push(d);
             }
@@ -2291,6 +2324,12 @@ pub fn parse_channel(name: &str, model: &Model) -> Result<Channel, String> {
                 && let Some(a) = axis(&q[1..])
             {
                 return Ok(Channel::PointVelocity { point: pi, axis: a });
+            }
+            if q.len() == 2
+                && q.starts_with('f')
+                && let Some(a) = axis(&q[1..])
+            {
+                return Ok(Channel::PointForce { point: pi, axis: a });
             }
         }
         return Err(format!("unknown channel `{name}`"));

@@ -167,6 +167,16 @@ pub struct SeabedSpec {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<f64>")]
     pub friction_velocity: Option<Spanned<f64>>,
+    /// Friction damping per node c [N·s/m]: MoorDyn's friction law, min(μ·c·|v|, μ·|F_z|)
+    /// per node, instead of μ·tanh(π|v|/v_μ) (MoorDyn's `FricDamp`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub friction_damping: Option<Spanned<f64>>,
+    /// Ratio of static to dynamic friction with `friction_damping` [-], default 1 (MoorDyn's
+    /// `StatDynFricScale`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub static_friction_scale: Option<Spanned<f64>>,
 }
 
 /// Kind of current.

@@ -84,6 +84,14 @@ impl FeLine {
         self.element_section.len()
     }
 
+    /// Unstretched length of cable node i carries [m]: half of each adjacent element.
+    #[inline]
+    pub fn node_length(&self, node: usize) -> Real {
+        let half = |e: usize| 0.5 * self.sections[self.element_section[e]].element_length;
+        let n = self.elements();
+        (if node > 0 { half(node - 1) } else { 0.0 }) + (if node < n { half(node) } else { 0.0 })
+    }
+
     /// Unstretched arc length of node i from end A [m].
     pub fn arc_length(&self, node: usize) -> Real {
         self.element_section[..node]
@@ -275,6 +283,7 @@ pub fn line_forces(
                     lt.mass_per_length,
                     stretch,
                     net_weight,
+                    line.node_length(node),
                 );
                 forces[node] += f * (0.5 * l0);
             }

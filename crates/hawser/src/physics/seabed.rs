@@ -13,6 +13,25 @@ pub struct Seabed {
     pub friction_coefficient: Real,
     /// Sliding speed v_μ [m/s] over which friction builds up (DG paper eq. 16).
     pub friction_velocity: Real,
+    /// How friction grows with the sliding speed.
+    pub friction_law: FrictionLaw,
+}
+
+/// How seabed friction grows with the sliding speed |v| up to its limit μ·N.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum FrictionLaw {
+    /// μ N tanh(π|v|/v_μ), with N the cable's net weight per length (DG paper eq. 16).
+    Tanh,
+    /// MoorDyn's law (`Line::getStateDeriv`, v2.7): a node's friction force is μ·c·|v|, or
+    /// μ·|F_z| with F_z the node's vertical contact force once μ·c·|v| exceeds
+    /// `static_scale`·μ·|F_z|. `damping` c [N·s/m] is per node (MoorDyn's `FricDamp`), so
+    /// the law depends on the mesh as MoorDyn's does.
+    Viscous {
+        /// c [N·s/m] per node (`FricDamp`).
+        damping: Real,
+        /// Ratio of static to dynamic friction (`StatDynFricScale`).
+        static_scale: Real,
+    },
 }
 
 impl Default for Seabed {
@@ -24,6 +43,7 @@ impl Default for Seabed {
             damping: ContactDamping::Ratio(1.0),
             friction_coefficient: 0.0,
             friction_velocity: 0.01,
+            friction_law: FrictionLaw::Tanh,
         }
     }
 }
@@ -61,13 +81,49 @@ impl Seabed {
         }
     }
 
+    /// Magnitude of the friction force [N, or N/m per length] at sliding `speed` [m/s] under
+    /// the normal load `normal` [N or N/m], for a node (or body) carrying `node_length` [m]
+    /// of cable (1 for a body: the result is then a force).
+    #[inline]
+    pub fn friction(&self, speed: Real, normal: Real, node_length: Real) -> Real {
+        let mu = self.friction_coefficient;
+        match self.friction_law {
+            FrictionLaw::Tanh => {
+                mu * normal * (std::f64::consts::PI * speed / self.friction_velocity).tanh()
+            }
+            FrictionLaw::Viscous {
+                damping,
+                static_scale,
+            } => {
+                let limit = mu * normal;
+                let viscous = mu * damping * speed / node_length;
+                if viscous > static_scale * limit {
+                    limit
+                } else {
+                    viscous
+                }
+            }
+        }
+    }
+
+    /// Largest slope d(friction)/d(speed) [N·s/m per m of cable] at rest, for the stable step.
+    pub fn friction_slope(&self, normal: Real, node_length: Real) -> Real {
+        let mu = self.friction_coefficient;
+        match self.friction_law {
+            FrictionLaw::Tanh => mu * normal * std::f64::consts::PI / self.friction_velocity,
+            FrictionLaw::Viscous { damping, .. } => mu * damping / node_length,
+        }
+    }
+
     /// Contact force per unit unstretched length [N/m] on a cable point at height `z` [m]
     /// moving with `velocity` [m/s], for a bed at `bed_z` [m].
     ///
     /// Vertical (eq. 15): √(1+ε) (K_g d δ − c v_z) with δ = bed_z − z > 0 and c from
     /// [`Seabed::damping_per_length`] (2ζ √(K_g d γ0), or c_A·d).
-    /// Horizontal (eq. 16): √(1+ε) μ tanh(π|v_xy|/v_μ) v̂_xy · min(w_z, 0), with w_z the
-    /// net weight per length (negative when the cable sinks), so friction opposes sliding.
+    /// Horizontal (eq. 16): −√(1+ε) μ tanh(π|v_xy|/v_μ) v̂_xy · max(−w_z, 0), with w_z the
+    /// net weight per length (negative when the cable sinks), so friction opposes sliding;
+    /// or MoorDyn's law on the vertical contact force ([`FrictionLaw`]). `node_length` [m] is
+    /// the length of cable the node carries (half of each adjacent element).
     #[inline]
     #[allow(clippy::too_many_arguments)]
     pub fn contact_force(
@@ -79,6 +135,7 @@ impl Seabed {
         mass_per_length: Real,
         stretch: Real,
         net_weight_z: Real,
+        node_length: Real,
     ) -> Vec3 {
         let penetration = bed_z - z;
         if penetration <= 0.0 {
@@ -89,12 +146,15 @@ impl Seabed {
         let fz = root
             * (kd * penetration - self.damping_per_length(diameter, mass_per_length) * velocity.z);
         let mut f = Vec3::new(0.0, 0.0, fz);
-        if self.friction_coefficient > 0.0 && net_weight_z < 0.0 {
+        let normal = match self.friction_law {
+            FrictionLaw::Tanh => -net_weight_z,
+            FrictionLaw::Viscous { .. } => fz.abs() / root.max(Real::MIN_POSITIVE),
+        };
+        if self.friction_coefficient > 0.0 && normal > 0.0 {
             let vxy = Vec3::new(velocity.x, velocity.y, 0.0);
             let speed = vxy.norm();
             if speed > 0.0 {
-                let mag = (std::f64::consts::PI * speed / self.friction_velocity).tanh();
-                f += vxy * (root * self.friction_coefficient * mag * net_weight_z / speed);
+                f -= vxy * (root * self.friction(speed, normal, node_length) / speed);
             }
         }
         f

@@ -1,0 +1,379 @@
+//! MoorDyn v2 deck import: conventions converted, conversion round trip through TOML, and the
+//! error for every kind of bad deck (file, line, column name, expected form).
+
+use hawser::analysis::Channel;
+use hawser::model::{MassMatrix, PointKind, TimeStep};
+use hawser::physics::material::AxialDamping;
+use hawser::physics::seabed::{ContactDamping, FrictionLaw};
+use hawser_io::moordyn::{self, ConvertOptions};
+use std::path::{Path, PathBuf};
+
+fn deck_dir() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../tests/data/moordyn")
+}
+
+fn deck_text(name: &str) -> String {
+    std::fs::read_to_string(deck_dir().join(name)).expect("deck present")
+}
+
+const DECKS: [&str; 4] = [
+    "oc3_lines.txt",
+    "WD0050_Chain.txt",
+    "WD0200_Chain.txt",
+    "WD0600_Chain.txt",
+];
+
+/// Parses deck text as if it were `deck.txt` beside the shared decks.
+fn parse(text: &str) -> Result<moordyn::LoadedDeck, String> {
+    moordyn::parse(
+        &deck_dir().join("deck.txt"),
+        text,
+        &ConvertOptions::default(),
+    )
+    .map_err(|e| {
+        e.to_string()
+            .replace(&deck_dir().display().to_string(), "<decks>")
+    })
+}
+
+fn error_of(text: &str) -> String {
+    match parse(text) {
+        Ok(_) => panic!("the deck should be refused"),
+        Err(e) => e,
+    }
+}
+
+/// Replaces one exact piece of a deck (which must be present).
+fn mutate(name: &str, from: &str, to: &str) -> String {
+    let t = deck_text(name);
+    assert!(t.contains(from), "`{from}` not in {name}");
+    t.replacen(from, to, 1)
+}
+
+#[test]
+fn every_deck_is_recognised_by_content_and_reads() {
+    for name in DECKS {
+        let text = deck_text(name);
+        assert!(moordyn::looks_like_deck(&text), "{name}");
+        let d = parse(&text).unwrap_or_else(|e| panic!("{name}: {e}"));
+        assert!(!d.loaded.model.lines.is_empty());
+    }
+    // A hawser scenario is not mistaken for a deck.
+    let toml = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/catenary_mooring.toml"),
+    )
+    .unwrap();
+    assert!(!moordyn::looks_like_deck(&toml));
+}
+
+#[test]
+fn oc3_conventions_are_converted() {
+    let d = parse(&deck_text("oc3_lines.txt")).unwrap();
+    let m = &d.loaded.model;
+    let t = &m.line_types[0];
+    assert_eq!(t.diameter, 0.09);
+    assert_eq!(t.mass_per_length, 77.7066);
+    // CdAx on π·d becomes C_dt on d.
+    match &t.drag {
+        hawser::physics::hydrodynamics::DragModel::Morison { normal, tangential } => {
+            assert_eq!(*normal, 1.6);
+            assert!((tangential - 0.1 * std::f64::consts::PI).abs() < 1e-15);
+        }
+        other => panic!("{other:?}"),
+    }
+    assert_eq!(t.axial_damping, AxialDamping::Ratio(0.8));
+    assert_eq!(t.normal_added_mass, 1.0);
+    assert_eq!(t.tangential_added_mass, 0.0);
+    assert_eq!(m.environment.depth, 320.0);
+    assert_eq!(m.environment.water_density, 1025.0);
+    assert_eq!(m.environment.gravity, 9.80665);
+    assert_eq!(m.environment.seabed.stiffness, 3.0e6);
+    assert_eq!(m.environment.seabed.damping, ContactDamping::PerArea(3.0e5));
+    assert_eq!(m.settings.time_step, TimeStep::Fixed(0.002));
+    // MoorDyn's lines are lumped-mass.
+    for l in &m.lines {
+        assert_eq!(l.mass_matrix, MassMatrix::Lumped);
+        assert_eq!(l.sections[0].elements, 20);
+        assert_eq!(l.sections[0].length, 902.2);
+    }
+    let fixed = m
+        .points
+        .iter()
+        .filter(|p| matches!(p.kind, PointKind::Fixed))
+        .count();
+    let prescribed = m
+        .points
+        .iter()
+        .filter(|p| matches!(p.kind, PointKind::Prescribed(_)))
+        .count();
+    assert_eq!((fixed, prescribed), (3, 3));
+    // OUTPUTS keep their names and mean MoorDyn's |Fnet| of the end node.
+    let outs: Vec<_> = d
+        .loaded
+        .channels
+        .iter()
+        .filter(|c| c.label.is_some())
+        .collect();
+    assert_eq!(outs.len(), 3);
+    for (i, o) in outs.iter().enumerate() {
+        assert_eq!(
+            o.label.as_deref(),
+            Some(format!("FairTen{}", i + 1).as_str())
+        );
+        assert_eq!(
+            o.channel,
+            Channel::EndNodeForce {
+                line: i,
+                end_b: true
+            }
+        );
+    }
+}
+
+#[test]
+fn chain_decks_get_moordyns_friction_and_cfl_step() {
+    let d = parse(&deck_text("WD0050_Chain.txt")).unwrap();
+    let m = &d.loaded.model;
+    let s = &m.environment.seabed;
+    assert_eq!(s.friction_coefficient, 0.5);
+    assert_eq!(
+        s.friction_law,
+        FrictionLaw::Viscous {
+            damping: 200.0,
+            static_scale: 1.0
+        }
+    );
+    assert_eq!(s.stiffness, 1.0e5);
+    assert_eq!(s.damping, ContactDamping::PerArea(1.0e4));
+    assert_eq!(m.settings.time_step, TimeStep::Auto);
+    // The options hawser does not use are reported, by name, with their line.
+    let said = |word: &str| d.notes.iter().any(|n| n.message.contains(word));
+    for word in [
+        "CFL",
+        "fileIC",
+        "dtIC",
+        "TmaxIC",
+        "threshIC",
+        "writeLog",
+        "disableOutTime",
+    ] {
+        assert!(said(word), "no note on {word}: {:#?}", d.notes);
+    }
+    assert!(
+        d.notes
+            .iter()
+            .all(|n| n.line > 0 || n.message.contains("duration"))
+    );
+}
+
+#[test]
+fn conversion_round_trips_through_toml() {
+    for name in DECKS {
+        let d = parse(&deck_text(name)).unwrap();
+        let text = moordyn::to_toml(&d, Path::new(name));
+        let back = hawser_io::scenario::parse(&deck_dir().join("converted.toml"), &text)
+            .unwrap_or_else(|e| panic!("{name}: converted TOML does not read back:\n{e}\n{text}"));
+        assert_eq!(
+            format!("{:?}", back.model),
+            format!("{:?}", d.loaded.model),
+            "{name}: the converted scenario is not the same model"
+        );
+        assert_eq!(back.channels, d.loaded.channels, "{name}");
+    }
+}
+
+#[test]
+fn tabs_blank_lines_and_missing_unit_rows_are_accepted() {
+    let original = parse(&deck_text("oc3_lines.txt")).unwrap();
+    let forgiving = deck_text("oc3_lines.txt")
+        .replace("     ", "\t")
+        .replace("1     main", "\n1\tmain")
+        .replace("(name)     (m)     (kg/m)     (N)        (N-s/-)     (N-m^2)    (-)    (-)    (-)     (-)\n", "");
+    let d = parse(&forgiving).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(
+        format!("{:?}", d.loaded.model),
+        format!("{:?}", original.loaded.model)
+    );
+}
+
+#[test]
+fn negative_length_is_a_multiple_of_the_span() {
+    let text = mutate("WD0050_Chain.txt", "410       41", "-1.05     41");
+    let d = parse(&text).unwrap();
+    let span = (400.0f64.powi(2) + 50.0f64.powi(2)).sqrt();
+    assert!((d.loaded.model.lines[0].sections[0].length - 1.05 * span).abs() < 1e-9);
+}
+
+#[test]
+fn unknown_option_is_reported_not_fatal() {
+    let text = mutate(
+        "oc3_lines.txt",
+        "320           WtrDpth",
+        "320           WtrDpth\n5             FooBar",
+    );
+    let d = parse(&text).unwrap();
+    assert!(d.notes.iter().any(|n| n.message.contains("FooBar")));
+}
+
+#[test]
+fn output_channel_names() {
+    use hawser_io::moordyn::convert::output_channel;
+    let seg = |l: &str| (l == "L1").then_some(20);
+    let ok = |n: &str| output_channel(n, seg).unwrap();
+    assert_eq!(ok("FairTen1"), "L1.end_b.node_force");
+    assert_eq!(ok("anchten1"), "L1.end_a.node_force");
+    assert_eq!(ok("L1N5PX"), "L1.node5.x");
+    assert_eq!(ok("Line1Node5VZ"), "L1.node5.vz");
+    assert_eq!(ok("L1N10T"), "L1.node10.tension");
+    assert_eq!(ok("L1N20T"), "L1.end_b.node_force");
+    assert_eq!(ok("L1NBT"), "L1.end_b.node_force");
+    assert_eq!(ok("L1NAPZ"), "L1.node0.z");
+    assert_eq!(ok("P4FX"), "P4.fx");
+    assert_eq!(ok("Point4PZ"), "P4.z");
+    for bad in [
+        "L2N1T", "L1N21T", "L1N5AX", "Con3FX", "R1PX", "FairTen", "Foo",
+    ] {
+        assert!(output_channel(bad, seg).is_err(), "{bad}");
+    }
+}
+
+#[test]
+fn coupled_points_follow_a_vessel_motion() {
+    let options = ConvertOptions {
+        duration: None,
+        vessel_motion: Some(deck_dir().join("ZZP1_A1.txt")),
+    };
+    let d = moordyn::parse(
+        &deck_dir().join("WD0200_Chain.txt"),
+        &deck_text("WD0200_Chain.txt"),
+        &options,
+    )
+    .unwrap();
+    let m = &d.loaded.model;
+    // 30 s of motion after the shift of its first row (t = −10 s) to t = 0.
+    assert_eq!(m.settings.duration, 30.0);
+    let PointKind::Prescribed(motion) = &m.points[1].kind else {
+        panic!("the vessel point is prescribed");
+    };
+    // ZZP1: z = 2 sin(2π t/10) on the file's clock; t = 2.5 s there is t = 12.5 s here.
+    let (r, _, _) = motion.kinematics(12.5);
+    assert!((r.z - 2.0).abs() < 1e-9, "{r}");
+    assert!(r.x.abs() < 1e-12 && r.y.abs() < 1e-12);
+}
+
+// ---- bad decks: every error names the file, line, column and the expected form ----------
+
+macro_rules! bad_deck {
+    ($name:ident, $deck:expr, $from:expr, $to:expr) => {
+        #[test]
+        fn $name() {
+            insta::assert_snapshot!(error_of(&mutate($deck, $from, $to)));
+        }
+    };
+}
+
+bad_deck!(
+    missing_column,
+    "oc3_lines.txt",
+    "main       0.09    77.7066    384.243E6  -0.8        0          1.6    1.0    0.1     0.0",
+    "main       0.09    77.7066    384.243E6  -0.8        0          1.6    1.0    0.1"
+);
+bad_deck!(
+    non_numeric_value,
+    "oc3_lines.txt",
+    "main       0.09",
+    "main       0.O9"
+);
+bad_deck!(
+    ea_neither_number_nor_file,
+    "oc3_lines.txt",
+    "384.243E6",
+    "384.243E6x"
+);
+bad_deck!(
+    unknown_line_type,
+    "oc3_lines.txt",
+    "2     main",
+    "2     mian"
+);
+bad_deck!(
+    unknown_point,
+    "oc3_lines.txt",
+    "3     main       3        6",
+    "3     main       3        9"
+);
+bad_deck!(
+    missing_closing_line,
+    "oc3_lines.txt",
+    "------------------------- need this line -------------------------------------- ",
+    ""
+);
+bad_deck!(
+    bodies_refused,
+    "oc3_lines.txt",
+    "---------------------- POINT PROPERTIES",
+    "---------------------- BODIES ----\nID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG* I* Volume CdA* Ca*\n(#) (-) (m) (m) (m) (deg) (deg) (deg) (kg) (m) (kg-m^2) (m^3) (m^2) (-)\n1 coupled 0 0 0 0 0 0 0 0 0 0 0 0\n---------------------- POINT PROPERTIES"
+);
+bad_deck!(
+    rod_attachment_refused,
+    "oc3_lines.txt",
+    "1     main       1        4",
+    "1     main       1        R1B"
+);
+bad_deck!(
+    body_point_refused,
+    "oc3_lines.txt",
+    "4     Coupled",
+    "4     Body1  "
+);
+bad_deck!(
+    unknown_point_type,
+    "oc3_lines.txt",
+    "5     Coupled",
+    "5     Floater"
+);
+bad_deck!(
+    viv_refused,
+    "oc3_lines.txt",
+    "0.1     0.0\n",
+    "0.1     0.0   0.8\n"
+);
+bad_deck!(
+    unknown_output,
+    "oc3_lines.txt",
+    "FairTen2",
+    "FairTen2 L1N5AX"
+);
+bad_deck!(
+    waves_refused,
+    "oc3_lines.txt",
+    "320           WtrDpth       water depth (m)",
+    "320           WtrDpth       water depth (m)\n1             WaveKin"
+);
+bad_deck!(
+    negative_diameter_in_deck_words,
+    "oc3_lines.txt",
+    "main       0.09",
+    "main       -0.09"
+);
+bad_deck!(
+    zero_segments,
+    "oc3_lines.txt",
+    "902.2     20      p\n2",
+    "902.2     0       p\n2"
+);
+bad_deck!(
+    fractional_segments,
+    "oc3_lines.txt",
+    "902.2     20      p\n2",
+    "902.2     20.5    p\n2"
+);
+
+#[test]
+fn no_lines_section() {
+    let t = deck_text("oc3_lines.txt");
+    let start = t.find("---------------------- LINES").unwrap();
+    let end = t.find("---------------------- OPTIONS").unwrap();
+    let text = format!("{}{}", &t[..start], &t[end..]);
+    insta::assert_snapshot!(error_of(&text));
+}
