@@ -122,6 +122,10 @@ enum Command {
         /// Mass matrix to measure: lumped, consistent or both.
         #[arg(long, default_value = "both")]
         mass: String,
+        /// MoorDyn decks: move every Coupled/Vessel point with this vessel motion (columns t,
+        /// x, y, z, roll, pitch, yaw in s, m, deg; its first row is t = 0).
+        #[arg(long, value_name = "FILE")]
+        vessel_motion: Option<PathBuf>,
         /// Print JSON.
         #[arg(long)]
         json: bool,
@@ -155,8 +159,9 @@ fn main() -> ExitCode {
             duration,
             dt,
             mass,
+            vessel_motion,
             json,
-        } => bench(&file, duration, dt, &mass, json),
+        } => bench(&file, duration, dt, &mass, vessel_motion, json),
         Command::Modes(args) => modes::run(&args),
     };
     match result {
@@ -546,9 +551,14 @@ fn bench(
     duration: Option<Real>,
     dt: Option<Real>,
     which: &str,
+    vessel_motion: Option<PathBuf>,
     json: bool,
 ) -> Result<ExitCode> {
-    let Some(loaded) = load(file) else {
+    let deck = DeckArgs {
+        deck_duration: duration,
+        vessel_motion,
+    };
+    let Some(loaded) = load_with(file, &deck, true) else {
         return Ok(ExitCode::from(2));
     };
     let masses: &[MassMatrix] = match which {
