@@ -10,7 +10,7 @@ use anyhow::{Context, Result};
 use hawser::analysis::modes::{ModalOptions, ModeOwner, Modes, natural_modes};
 use hawser::analysis::resonance::{ResonanceCheck, excitations, resonance_report};
 use hawser::linearise::{ConnectionStiffness, Linearisation, LinearisationOptions};
-use hawser::math::Real;
+use hawser::math::{Real, Vec3};
 use hawser::model::PointKind;
 use hawser::statics::{StaticOptions, StaticSolution};
 use hawser::system::System;
@@ -393,18 +393,8 @@ fn write_files(
             for node in 0..=l.fe.elements() {
                 let r = ws.lines[li].position[node];
                 let u = m.node_displacement(&lin.dofs, li, node) * scale[k];
-                writeln!(
-                    w,
-                    "{},{node},{},{},{},{},{},{},{}",
-                    k + 1,
-                    l.fe.arc_length(node),
-                    r.x,
-                    r.y,
-                    r.z,
-                    u.x,
-                    u.y,
-                    u.z
-                )?;
+                let at = format!("{},{node},{}", k + 1, l.fe.arc_length(node));
+                shape_row(&mut w, &at, &r, &u)?;
             }
         }
         w.flush()?;
@@ -416,18 +406,8 @@ fn write_files(
             for &p in &system.free_points {
                 let r = ws.points[p].position;
                 let u = m.point_displacement(&lin.dofs, p) * scale[k];
-                writeln!(
-                    w,
-                    "{},{},{},{},{},{},{},{}",
-                    k + 1,
-                    system.points[p].name,
-                    r.x,
-                    r.y,
-                    r.z,
-                    u.x,
-                    u.y,
-                    u.z
-                )?;
+                let at = format!("{},{}", k + 1, system.points[p].name);
+                shape_row(&mut w, &at, &r, &u)?;
             }
         }
         w.flush()?;
@@ -437,4 +417,9 @@ fn write_files(
         serde_json::to_string_pretty(document)? + "\n",
     )?;
     Ok(())
+}
+
+/// One CSV row of a shape file: the leading columns, the static position and the displacement.
+fn shape_row(w: &mut impl Write, at: &str, r: &Vec3, u: &Vec3) -> std::io::Result<()> {
+    writeln!(w, "{at},{},{},{},{},{},{}", r.x, r.y, r.z, u.x, u.y, u.z)
 }

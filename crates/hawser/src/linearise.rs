@@ -74,6 +74,45 @@ const VELOCITY_STEP: Real = 1e-6;
 /// drag, seabed contact vary on metre scales).
 const POINT_POSITION_STEP: Real = 1e-6;
 
+/// Sets the workspace's kinematics to the static state `y`: positions from the state,
+/// prescribed points at their t = 0 positions, every velocity zero.
+pub(crate) fn kinematics_at_rest(system: &System, y: &[Real], ws: &mut Workspace) {
+    system.point_kinematics(0.0, y, ws);
+    for k in ws.points.iter_mut() {
+        k.velocity = Vec3::zeros();
+    }
+    system.gather_lines(y, ws);
+    for lw in ws.lines.iter_mut() {
+        lw.velocity.iter_mut().for_each(|v| *v = Vec3::zeros());
+    }
+}
+
+/// Evaluates every line's forces at the static state `y` (see [`kinematics_at_rest`]) into
+/// `ws.lines[..].force`, and its mass blocks into `ws.blocks` when `with_mass`.
+pub(crate) fn line_forces_at_rest(
+    system: &System,
+    y: &[Real],
+    current_factor: Real,
+    with_mass: bool,
+    ws: &mut Workspace,
+) {
+    kinematics_at_rest(system, y, ws);
+    for (li, l) in system.lines.iter().enumerate() {
+        let lw = &mut ws.lines[li];
+        line_forces(
+            &l.fe,
+            &system.environment,
+            0.0,
+            &lw.position,
+            &lw.velocity,
+            &mut lw.force,
+            &mut lw.elements,
+            with_mass.then_some(&mut ws.blocks[li]),
+            LoadOptions { current_factor },
+        );
+    }
+}
+
 /// The force Jacobian ∂F/∂x or ∂F/∂v at state `y`, at rest and with prescribed points at
 /// their t = 0 positions (the static state), into `ws.blocks` (per line, over every node 0..=N,
 /// ends included: the columns of a known end give the forces its motion causes) and
@@ -91,11 +130,7 @@ pub fn force_jacobian(
     ws: &mut Workspace,
 ) {
     let options = LoadOptions { current_factor };
-    system.point_kinematics(0.0, y, ws);
-    for k in ws.points.iter_mut() {
-        k.velocity = Vec3::zeros();
-    }
-    system.gather_lines(y, ws);
+    kinematics_at_rest(system, y, ws);
     let env = &system.environment;
     let mut base: Vec<Vec3> = Vec::new();
     let mut plus: Vec<Vec3> = Vec::new();
@@ -109,7 +144,6 @@ pub fn force_jacobian(
         blocks.coupled = true;
         blocks.clear();
         let lw = &mut ws.lines[li];
-        lw.velocity.iter_mut().for_each(|v| *v = Vec3::zeros());
         let evaluate = |lw: &mut crate::system::LineWork, out: &mut Vec<Vec3>| {
             line_forces(
                 &l.fe,
@@ -538,28 +572,7 @@ pub fn linearise(system: &System, state: &[Real], options: LinearisationOptions)
 /// line mass blocks with added mass, and the free points' own mass with added mass.
 pub fn mass_matrix(system: &System, y: &[Real]) -> BlockMatrix {
     let mut ws = system.workspace();
-    system.point_kinematics(0.0, y, &mut ws);
-    for k in ws.points.iter_mut() {
-        k.velocity = Vec3::zeros();
-    }
-    system.gather_lines(y, &mut ws);
-    for (li, l) in system.lines.iter().enumerate() {
-        let lw = &mut ws.lines[li];
-        lw.velocity.iter_mut().for_each(|v| *v = Vec3::zeros());
-        line_forces(
-            &l.fe,
-            &system.environment,
-            0.0,
-            &lw.position,
-            &lw.velocity,
-            &mut lw.force,
-            &mut lw.elements,
-            Some(&mut ws.blocks[li]),
-            LoadOptions {
-                current_factor: 1.0,
-            },
-        );
-    }
+    line_forces_at_rest(system, y, 1.0, true, &mut ws);
     let points = system
         .free_points
         .iter()

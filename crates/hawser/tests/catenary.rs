@@ -62,19 +62,9 @@ fn suspended_catenary_end_tensions_match_closed_form() {
 fn catenary_on_frictionless_seabed_matches_closed_form() {
     // OC3-like chain: 902.2 m from an anchor on the bed at 320 m depth to a fairlead at 70 m depth.
     let (d, m, ea) = (0.09, 77.7066, 384.243e6);
-    let lt = line_type(d, m, ea);
     let w = (m - 1025.0 * std::f64::consts::PI * d * d / 4.0) * 9.80665;
-    let mut model = single_line(
-        lt,
-        902.2,
-        200,
-        fixed("anchor", Vec3::new(-848.67, 0.0, -320.0)),
-        fixed("fairlead", Vec3::new(0.0, 0.0, -70.0)),
-        MassMatrix::Consistent,
-    );
-    model.environment.depth = 320.0;
     // A stiff bed so the penetration (w / (K d) ≈ 0.3 mm) does not move the touchdown.
-    model.environment.seabed.stiffness = 3.0e7;
+    let model = oc3_chain(200, Vec3::new(0.0, 0.0, -70.0));
     let exact = catenary::solve(848.67, 250.0, 902.2, w, ea, true).unwrap();
     assert!(
         exact.grounded_length > 10.0,

@@ -302,16 +302,7 @@ fn catenary_fairlead_stiffness_matches_the_closed_form() {
     // OC3 chain resting on a frictionless bed.
     let (d, m, ea) = (0.09, 77.7066, 384.243e6);
     let w = (m - 1025.0 * PI * d * d / 4.0) * 9.80665;
-    let mut model = single_line(
-        line_type(d, m, ea),
-        902.2,
-        200,
-        fixed("anchor", Vec3::new(-848.67, 0.0, -320.0)),
-        fixed("fairlead", Vec3::new(0.0, 0.0, -70.0)),
-        MassMatrix::Consistent,
-    );
-    model.environment.depth = 320.0;
-    model.environment.seabed.stiffness = 3.0e7;
+    let model = oc3_chain(200, Vec3::new(0.0, 0.0, -70.0));
     let (fe, force) = fairlead_stiffness(&model, 1);
     let exact = closed_form_stiffness(848.67, 250.0, 902.2, w, ea, true);
     compare("catenary on the seabed", &fe, &exact, 3e-3);
@@ -365,19 +356,7 @@ fn connection_stiffness_equals_finite_differences_of_static_solutions() {
 
     // The OC3 chain on the seabed (200 elements): the FE model's own derivative, touchdown
     // included. Tolerance 1e-4: ±1 cm moves no node across the bed level here.
-    let build = |fairlead: Vec3| {
-        let mut model = single_line(
-            line_type(0.09, 77.7066, 384.243e6),
-            902.2,
-            200,
-            fixed("anchor", Vec3::new(-848.67, 0.0, -320.0)),
-            fixed("fairlead", fairlead),
-            MassMatrix::Consistent,
-        );
-        model.environment.depth = 320.0;
-        model.environment.seabed.stiffness = 3.0e7;
-        model
-    };
+    let build = |fairlead: Vec3| oc3_chain(200, fairlead);
     let base = Vec3::new(0.0, 0.0, -70.0);
     let system = System::new(&build(base)).unwrap();
     let sol = solve(&system, None, &StaticOptions::default()).unwrap();

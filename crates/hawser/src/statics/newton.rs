@@ -11,8 +11,7 @@
 use super::catenary;
 use super::dynamic_relaxation;
 use crate::error::StaticsError;
-use crate::formulation::fe::{LoadOptions, line_forces};
-use crate::linearise::{Difference, Variable, force_jacobian};
+use crate::linearise::{Difference, Variable, force_jacobian, line_forces_at_rest};
 use crate::math::{Mat3, Real, Vec3, get3, set3};
 use crate::system::{System, Workspace};
 
@@ -93,26 +92,9 @@ pub fn residual(
     out: &mut [Real],
 ) -> (Real, usize) {
     out.iter_mut().for_each(|x| *x = 0.0);
-    system.point_kinematics(0.0, y, ws);
-    for k in ws.points.iter_mut() {
-        k.velocity = Vec3::zeros();
-    }
-    system.gather_lines(y, ws);
-    let options = LoadOptions { current_factor };
+    line_forces_at_rest(system, y, current_factor, false, ws);
     for (li, l) in system.lines.iter().enumerate() {
-        let lw = &mut ws.lines[li];
-        lw.velocity.iter_mut().for_each(|v| *v = Vec3::zeros());
-        line_forces(
-            &l.fe,
-            &system.environment,
-            0.0,
-            &lw.position,
-            &lw.velocity,
-            &mut lw.force,
-            &mut lw.elements,
-            None,
-            options,
-        );
+        let lw = &ws.lines[li];
         let o = system.layout.line_offset[li];
         for i in 1..l.fe.elements() {
             set3(&mut out[o..], i - 1, &lw.force[i]);

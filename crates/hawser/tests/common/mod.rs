@@ -260,3 +260,20 @@ pub fn mean_period(crossings: &[Real]) -> Real {
     );
     (crossings[crossings.len() - 1] - crossings[0]) / (crossings.len() - 1) as Real
 }
+
+/// The OC3 chain (902.2 m, d 0.09 m, 77.7066 kg/m, EA 384.243 MN) from an anchor on the bed
+/// at (−848.67, 0, −320) to a fixed fairlead at `fairlead` ((0, 0, −70) in the deck), in
+/// 320 m of water on a stiff, frictionless bed (3e7 Pa/m: penetration w/(K_g d) ≈ 0.3 mm).
+pub fn oc3_chain(elements: usize, fairlead: Vec3) -> Model {
+    let mut model = single_line(
+        line_type(0.09, 77.7066, 384.243e6),
+        902.2,
+        elements,
+        fixed("anchor", Vec3::new(-848.67, 0.0, -320.0)),
+        fixed("fairlead", fairlead),
+        MassMatrix::Consistent,
+    );
+    model.environment.depth = 320.0;
+    model.environment.seabed.stiffness = 3.0e7;
+    model
+}
