@@ -96,16 +96,7 @@ fn static_catenary_converges_at_second_order() {
 /// Measured fundamental transverse frequency [Hz] of a taut string of `n` elements.
 fn string_frequency(n: usize, mass_matrix: MassMatrix, l0: Real, gamma: Real, ea: Real) -> Real {
     let strain = 0.01;
-    let span = l0 * (1.0 + strain);
-    let mut model = single_line(
-        dry_line_type(0.01, gamma, ea),
-        l0,
-        n,
-        fixed("A", Vec3::new(0.0, 0.0, 10.0)),
-        fixed("B", Vec3::new(span, 0.0, 10.0)),
-        mass_matrix,
-    );
-    model.environment = vacuum_environment(0.0);
+    let model = taut_string(l0, gamma, ea, strain, n, mass_matrix);
     let system = System::new(&model).unwrap();
     // Transverse sine of amplitude 1e-5 L0: the tension change it causes, ~EA (π A/L)²/4,
     // shifts the frequency by ~1e-8 relative, far below the O(1e-4) mesh errors measured.

@@ -58,15 +58,7 @@ fn taut_string_transverse_and_axial_frequencies_match_closed_forms() {
     let span = l0 * (1.0 + strain);
     let tension = ea * strain;
     for mass in [MassMatrix::Consistent, MassMatrix::Lumped] {
-        let mut model = single_line(
-            dry_line_type(0.01, gamma, ea),
-            l0,
-            n,
-            fixed("A", Vec3::new(0.0, 0.0, 10.0)),
-            fixed("B", Vec3::new(span, 0.0, 10.0)),
-            mass,
-        );
-        model.environment = vacuum_environment(0.0);
+        let model = taut_string(l0, gamma, ea, strain, n, mass);
         let count = 14;
         let (_, _, modes) = modes_of(&model, count, EigenMethod::ShiftInvert);
         // Expected: (frequency [Hz], axial?) merged and sorted.

@@ -277,3 +277,27 @@ pub fn oc3_chain(elements: usize, fairlead: Vec3) -> Model {
     model.environment.seabed.stiffness = 3.0e7;
     model
 }
+
+/// A taut string in vacuum and zero gravity: unstretched length `l0` [m], γ0 `gamma` [kg/m],
+/// EA `ea` [N], `elements` elements, stretched by `strain` between fixed points along x at
+/// z = 10 m (tension EA·strain).
+pub fn taut_string(
+    l0: Real,
+    gamma: Real,
+    ea: Real,
+    strain: Real,
+    elements: usize,
+    mass: MassMatrix,
+) -> Model {
+    let span = l0 * (1.0 + strain);
+    let mut model = single_line(
+        dry_line_type(0.01, gamma, ea),
+        l0,
+        elements,
+        fixed("A", Vec3::new(0.0, 0.0, 10.0)),
+        fixed("B", Vec3::new(span, 0.0, 10.0)),
+        mass,
+    );
+    model.environment = vacuum_environment(0.0);
+    model
+}
