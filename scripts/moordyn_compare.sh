@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# hawser vs MoorDyn (MoorDyn-C Python bindings) on the public MoorDyn decks:
+# statics of every deck, OC3 surge at 20/40/80 segments, WD0200 chain under
+# the ZZP1_A1 heave against MoorDyn and the reference series.
+#
+# Usage: scripts/moordyn_compare.sh [moordyn_compare.py options...]
+#   e.g. --segments 20 (skip the refined OC3 runs), --keep-tmp
+#
+# Writes tests/data/moordyn_reference.json, docs/data/moordyn_*.csv and
+# docs/img/moordyn_*.svg; prints a markdown summary on stdout.
+#
+# Environment:
+#   MOORDYN_VERSION   moordyn version to install into the venv (default 2.7.2)
+#   BENCH_VENV        virtualenv path (default <repo>/.venv-bench, gitignored;
+#                     shared with scripts/bench.sh)
+#   PYTHON            interpreter used to create the venv (default python3)
+#   CARGO_TARGET_DIR  cargo target directory (default <repo>/target)
+#   MOORDYN_DECKS     deck directory (default <repo>/../shared/moordyn-decks)
+set -euo pipefail
+
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+VENV="${BENCH_VENV:-$ROOT/.venv-bench}"
+MOORDYN_VERSION="${MOORDYN_VERSION:-2.7.2}"
+DECKS="${MOORDYN_DECKS:-$ROOT/../shared/moordyn-decks}"
+TARGET="${CARGO_TARGET_DIR:-$ROOT/target}"
+
+# ---------------------------------------------------------------- MoorDyn side
+if [ ! -x "$VENV/bin/python" ]; then
+    echo "creating throwaway virtualenv $VENV" >&2
+    "${PYTHON:-python3}" -m venv "$VENV"
+fi
+if ! "$VENV/bin/python" -c "
+import sys
+from importlib.metadata import version
+sys.exit(0 if version('moordyn') == '$MOORDYN_VERSION' else 1)
+" 2>/dev/null; then
+    echo "installing moordyn==$MOORDYN_VERSION into $VENV" >&2
+    "$VENV/bin/python" -m pip install --quiet --disable-pip-version-check \
+        "moordyn==$MOORDYN_VERSION" >&2
+fi
+
+# ---------------------------------------------------------------- hawser side
+CARGO_TARGET_DIR="$TARGET" cargo build --release -q -p hawser-cli \
+    --manifest-path "$ROOT/Cargo.toml"
+
+exec "$VENV/bin/python" "$ROOT/scripts/moordyn_compare.py" \
+    --hawser "$TARGET/release/hawser" --decks "$DECKS" "$@"
