@@ -16,7 +16,7 @@ set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 VENV="${BENCH_VENV:-$ROOT/.venv-bench}"
 MOORDYN_VERSION="${MOORDYN_VERSION:-2.7.2}"
-DECK="${MOORDYN_DECK:-$ROOT/../shared/moordyn-decks/oc3_lines.txt}"
+DECK="${MOORDYN_DECK:-$ROOT/tests/data/moordyn/oc3_lines.txt}"
 
 # ---------------------------------------------------------------- MoorDyn side
 if [ ! -x "$VENV/bin/python" ]; then

@@ -576,6 +576,12 @@ def chain_mid_interval(moordyn, hawser, d, copy, mot):
                          "hawser_minus_moordyn_max_abs_kN": s_["max_abs_kN"],
                          "moordyn_range_kN": rng / 1e3}
         out[label] = res
+    ks = sorted(k for k in rec if k % 2 == 1 and CHAIN_FROM - 1e-9 <= k * h < CHAIN_DURATION - 1e-9)
+    out["moordyn_series"] = {
+        "time_s": [round(k * h, 6) for k in ks],
+        "fairlead_tension_N": [rec[k][0] for k in ks],
+        "anchor_tension_N": [rec[k][1] for k in ks],
+    }
     return out
 
 
@@ -730,6 +736,14 @@ def write_outputs(a, st, surge, series20, chain, md_version):
             "anchor_tension_N": [v for t, v in zip(chain["moordyn_series"]["time_s"],
                                                    chain["moordyn_series"]["anchor_tension_N"])
                                  if t >= CHAIN_FROM - 1e-9],
+            "mid_interval": {
+                "what": "MoorDyn stepping each 0.1 s coupling interval in two halves along the "
+                        "same x + xd (t - t_i); tensions half-way between the motion's knots, "
+                        "where the fairlead velocity is continuous (at the knots it jumps, and "
+                        "codes that sample on either side of the jump differ by the change of "
+                        "the end segment's damping force)",
+                **chain["mid_interval"]["moordyn_series"],
+            },
         },
     }
     with open(a.json, "w") as fh:

@@ -15,13 +15,13 @@
 #                     shared with scripts/bench.sh)
 #   PYTHON            interpreter used to create the venv (default python3)
 #   CARGO_TARGET_DIR  cargo target directory (default <repo>/target)
-#   MOORDYN_DECKS     deck directory (default <repo>/../shared/moordyn-decks)
+#   MOORDYN_DECKS     deck directory (default <repo>/tests/data/moordyn)
 set -euo pipefail
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 VENV="${BENCH_VENV:-$ROOT/.venv-bench}"
 MOORDYN_VERSION="${MOORDYN_VERSION:-2.7.2}"
-DECKS="${MOORDYN_DECKS:-$ROOT/../shared/moordyn-decks}"
+DECKS="${MOORDYN_DECKS:-$ROOT/tests/data/moordyn}"
 TARGET="${CARGO_TARGET_DIR:-$ROOT/target}"
 
 # ---------------------------------------------------------------- MoorDyn side
