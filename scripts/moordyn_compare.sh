@@ -19,25 +19,11 @@
 set -euo pipefail
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-VENV="${BENCH_VENV:-$ROOT/.venv-bench}"
-MOORDYN_VERSION="${MOORDYN_VERSION:-2.7.2}"
 DECKS="${MOORDYN_DECKS:-$ROOT/tests/data/moordyn}"
 TARGET="${CARGO_TARGET_DIR:-$ROOT/target}"
 
 # ---------------------------------------------------------------- MoorDyn side
-if [ ! -x "$VENV/bin/python" ]; then
-    echo "creating throwaway virtualenv $VENV" >&2
-    "${PYTHON:-python3}" -m venv "$VENV"
-fi
-if ! "$VENV/bin/python" -c "
-import sys
-from importlib.metadata import version
-sys.exit(0 if version('moordyn') == '$MOORDYN_VERSION' else 1)
-" 2>/dev/null; then
-    echo "installing moordyn==$MOORDYN_VERSION into $VENV" >&2
-    "$VENV/bin/python" -m pip install --quiet --disable-pip-version-check \
-        "moordyn==$MOORDYN_VERSION" >&2
-fi
+. "$ROOT/scripts/moordyn_venv.sh"
 
 # ---------------------------------------------------------------- hawser side
 CARGO_TARGET_DIR="$TARGET" cargo build --release -q -p hawser-cli \

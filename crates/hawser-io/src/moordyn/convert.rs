@@ -917,8 +917,8 @@ impl<'r> Options<'r> {
     }
 }
 
-/// Options hawser reads, with their MoorDyn spellings (lower case).
-const KNOWN_OPTIONS: &[&str] = &[
+/// Options hawser reads, with their MoorDyn-C 2.7 spellings (lower case).
+const USED_OPTIONS: &[&str] = &[
     "dtm",
     "dt",
     "cfl",
@@ -937,31 +937,59 @@ const KNOWN_OPTIONS: &[&str] = &[
     "fricdamp",
     "statdynfricscale",
     "dtout",
-    "dtic",
-    "icdt",
-    "tmaxic",
-    "ictmax",
-    "cdscaleic",
-    "icdfac",
-    "threshic",
-    "icthresh",
-    "icgendynamic",
-    "gendynamicic",
-    "fileic",
-    "icfile",
-    "inputic",
-    "writelog",
-    "writeunits",
-    "disableoutput",
-    "disableouttime",
-    "echo",
     "wavekin",
-    "dtwave",
-    "wavekin_rampt",
     "currents",
-    "unifycurrentgrid",
     "seafloorfile",
 ];
+
+/// MoorDyn's initial-condition controls: hawser solves statics by Newton instead.
+const IC_OPTIONS: &[(&[&str], &str)] = &[
+    (
+        &[
+            "dtic",
+            "icdt",
+            "tmaxic",
+            "ictmax",
+            "cdscaleic",
+            "icdfac",
+            "threshic",
+            "icthresh",
+            "icgendynamic",
+            "gendynamicic",
+        ],
+        "initial-condition control",
+    ),
+    (&["fileic", "icfile", "inputic"], "initial-condition file"),
+];
+
+/// Options without effect in hawser, and why.
+const NO_EFFECT_OPTIONS: &[(&[&str], &str)] = &[
+    (&["writelog"], "hawser reports on the terminal"),
+    (
+        &["writeunits"],
+        "hawser's column headers always carry units",
+    ),
+    (
+        &["disableoutput", "disableouttime"],
+        "hawser always writes its results and reports progress",
+    ),
+    (&["echo"], "hawser prints conversion notes instead"),
+    (&["dtwave", "wavekin_rampt"], "waves are off (WaveKin 0)"),
+    (
+        &["unifycurrentgrid"],
+        "the current profile is used as given",
+    ),
+];
+
+/// Every option name hawser knows.
+fn known_options() -> impl Iterator<Item = &'static str> {
+    USED_OPTIONS.iter().copied().chain(
+        IC_OPTIONS
+            .iter()
+            .chain(NO_EFFECT_OPTIONS)
+            .flat_map(|(names, _)| names.iter().copied()),
+    )
+}
 
 fn read_options<'r>(c: &mut Converter, rows: &'r [Row]) -> Options<'r> {
     let mut out = Options { rows: Vec::new() };
@@ -981,8 +1009,8 @@ fn read_options<'r>(c: &mut Converter, rows: &'r [Row]) -> Options<'r> {
             continue;
         };
         let lower = name.text.to_lowercase();
-        if !KNOWN_OPTIONS.contains(&lower.as_str()) {
-            let hint = match closest(&lower, KNOWN_OPTIONS.iter().copied()) {
+        if !known_options().any(|k| k == lower) {
+            let hint = match closest(&lower, known_options()) {
                 Some(k) => format!("did you mean `{k}`? (option names are case-insensitive here)"),
                 None => "MoorDyn would ignore it too; remove it, or check the spelling".to_string(),
             };
@@ -1099,8 +1127,8 @@ fn environment_of(
     }
     let current = match o.get(&["currents"]) {
         Some((t, row)) => match parse_number(&t.text) {
-            Some(x) if x == 0.0 => None,
-            Some(x) if x == 1.0 => current_profile(c, t, row, dir),
+            Some(0.0) => None,
+            Some(1.0) => current_profile(c, t, row, dir),
             _ => {
                 let d = c
                     .diag(
@@ -1243,27 +1271,7 @@ fn simulation_of(
             c.note(row.line, "dtOut 0: a sample every time step");
         }
     }
-    for (names, what) in [
-        (
-            &[
-                "dtic",
-                "icdt",
-                "tmaxic",
-                "ictmax",
-                "cdscaleic",
-                "icdfac",
-                "threshic",
-                "icthresh",
-                "icgendynamic",
-                "gendynamicic",
-            ][..],
-            "initial-condition control",
-        ),
-        (
-            &["fileic", "icfile", "inputic"][..],
-            "initial-condition file",
-        ),
-    ] {
+    for (names, what) in IC_OPTIONS {
         for (_, _, row) in o
             .rows
             .iter()
@@ -1279,23 +1287,7 @@ fn simulation_of(
             );
         }
     }
-    for (names, why) in [
-        (&["writelog"][..], "hawser reports on the terminal"),
-        (
-            &["writeunits"],
-            "hawser's column headers always carry units",
-        ),
-        (
-            &["disableoutput", "disableouttime"],
-            "hawser always writes its results and reports progress",
-        ),
-        (&["echo"], "hawser prints conversion notes instead"),
-        (&["dtwave", "wavekin_rampt"], "waves are off (WaveKin 0)"),
-        (
-            &["unifycurrentgrid"],
-            "the current profile is used as given",
-        ),
-    ] {
+    for (names, why) in NO_EFFECT_OPTIONS {
         for (_, _, row) in o
             .rows
             .iter()

@@ -216,7 +216,7 @@ fn is_unit_row(tokens: &[Token]) -> bool {
 }
 
 /// Splits a deck into sections. Errors: a table row before any section, no closing line.
-pub fn lex(file: &Path, source: &str) -> Result<Deck, Diagnostic> {
+pub fn lex(file: &Path, source: &str) -> Result<Deck, Box<Diagnostic>> {
     let mut sections: Vec<Section> = Vec::new();
     let mut offset = 0;
     let mut closed = false;
@@ -271,7 +271,7 @@ pub fn lex(file: &Path, source: &str) -> Result<Deck, Diagnostic> {
     }
     if !closed {
         let end = source.len();
-        return Err(Diagnostic::new(
+        return Err(Box::new(Diagnostic::new(
             file,
             source,
             Some(end..end),
@@ -283,7 +283,7 @@ pub fn lex(file: &Path, source: &str) -> Result<Deck, Diagnostic> {
         .hint(
             "MoorDyn decks end with a dashed closing line; a deck without one may have been cut \
              short: check that the file is complete and add the line",
-        ));
+        )));
     }
     Ok(Deck { sections })
 }

@@ -36,7 +36,7 @@ pub fn parse(
     source: &str,
     options: &ConvertOptions,
 ) -> Result<LoadedDeck, ScenarioError> {
-    let deck = deck::lex(file, source)?;
+    let deck = deck::lex(file, source).map_err(|d| ScenarioError::from(*d))?;
     let conversion = convert::convert(file, source, &deck, options)?;
     let mut loaded = crate::scenario::build::build_scenario(file, source, &conversion.scenario)
         .map_err(|e| conversion.in_deck_words(e))?;

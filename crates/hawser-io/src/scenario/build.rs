@@ -2193,9 +2193,8 @@ fn build_channels(
         match parse_channel(spec, model) {
             Ok(ch) => {
                 let o = OutputChannel { channel: ch, label };
-                if o.label.is_some() {
-                    out.push(o);
-                } else if !out.iter().any(|x| x.channel == ch) {
+                // named channels are always recorded; unnamed repeats are dropped
+                if o.label.is_some() || !out.iter().any(|x| x.channel == ch) {
                     out.push(o);
                 }
             }

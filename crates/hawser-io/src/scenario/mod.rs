@@ -43,18 +43,7 @@ fn read(path: &Path) -> Result<String, ScenarioError> {
 
 /// Reads and validates a scenario file.
 pub fn load(path: &Path) -> Result<LoadedScenario, ScenarioError> {
-    let source = std::fs::read_to_string(path).map_err(|e| {
-        ScenarioError::from(
-            Diagnostic::new(
-                path,
-                "",
-                None,
-                "",
-                format!("cannot read the scenario file: {e}"),
-            )
-            .hint("check the path"),
-        )
-    })?;
+    let source = read(path)?;
     build::build(path, &source)
 }
 
