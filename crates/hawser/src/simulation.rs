@@ -3,9 +3,9 @@
 //! writes nothing.
 
 use crate::error::SimulationError;
-use crate::integrate::ExplicitRk;
+use crate::integrate::{ExplicitRk, ThreeLevel};
 use crate::math::Real;
-use crate::model::{Settings, TimeStep};
+use crate::model::{Scheme, Settings, TimeStep};
 use crate::system::{Location, System, Workspace};
 
 /// Receives the state at every output time.
@@ -15,11 +15,26 @@ pub trait Observer {
     fn sample(&mut self, system: &System, time: Real, state: &[Real], ws: &Workspace);
 }
 
+/// C_k of the elastic-link paper's eq. 48 for the three-level scheme: the highest mode of a
+/// lumped element chain has ω = 2c/l, and the predictor–corrector needs ωΔt ≤ 1, so
+/// Δt ≤ l/(2c) (the paper allows C_k ≤ 1, which is unstable for this scheme).
+const WAVE_COURANT: Real = 0.5;
+
+/// The integrator of a run.
+#[derive(Clone, Debug)]
+enum Integrator {
+    /// An explicit Runge–Kutta scheme at a fixed step.
+    Rk(ExplicitRk),
+    /// The three-level scheme; `variable`: the step is chosen again from the wave speeds
+    /// (eq. 48) at the start of every output interval.
+    ThreeLevel { scheme: ThreeLevel, variable: bool },
+}
+
 /// A dynamic simulation in progress.
 pub struct Simulation<'a> {
     system: &'a System,
     ws: Workspace,
-    integrator: ExplicitRk,
+    integrator: Integrator,
     derivative: Vec<Real>,
     /// Simulated time [s].
     pub time: Real,
@@ -31,6 +46,15 @@ pub struct Simulation<'a> {
     pub stable_step: (Real, String),
     steps_per_output: usize,
     steps_done: u64,
+    /// Interval between samples [s].
+    interval: Real,
+    /// Samples taken after t = 0, and steps since the last.
+    outputs_done: u64,
+    substep: usize,
+    /// Fraction of the stability limit used by automatic steps.
+    safety_factor: Real,
+    /// The stiffness-and-damping estimate of the stable step [s] ([`System::stable_step`]).
+    stiffness_limit: Real,
 }
 
 impl<'a> Simulation<'a> {
@@ -61,7 +85,25 @@ impl<'a> Simulation<'a> {
         initial: Vec<Real>,
         check: bool,
     ) -> Result<Self, SimulationError> {
-        let (limit, culprit) = system.stable_step(settings.scheme);
+        let (mut limit, mut culprit) = system.stable_step(settings.scheme);
+        let stiffness_limit = limit;
+        let n = initial.len();
+        let mut ws = system.workspace();
+        if settings.scheme == Scheme::ThreeLevel {
+            // Eq. 48 at the initial strains, bounded by the stiffness-and-damping estimate.
+            let mut derivative = vec![0.0; n];
+            system
+                .rhs(0.0, &initial, &mut derivative, &mut ws)
+                .map_err(|loc| divergence(limit, 0.0, loc, "singular mass matrix"))?;
+            let (wave, line, element) = system.wave_step(&ws, WAVE_COURANT);
+            if wave < limit {
+                limit = wave;
+                culprit = format!(
+                    "the axial wave in element {element} of line {} (elastic-link paper eq. 48)",
+                    system.lines[line].name
+                );
+            }
+        }
         let wanted = match settings.time_step {
             TimeStep::Auto => settings.safety_factor * limit,
             TimeStep::Fixed(dt) => {
@@ -84,12 +126,17 @@ impl<'a> Simulation<'a> {
             }
             TimeStep::Fixed(dt) => (dt, (settings.output_interval / dt).round().max(1.0)),
         };
-        let ws = system.workspace();
-        let n = initial.len();
+        let integrator = match settings.scheme.tableau() {
+            Some(t) => Integrator::Rk(ExplicitRk::new(t, n)),
+            None => Integrator::ThreeLevel {
+                scheme: ThreeLevel::new(n),
+                variable: settings.time_step == TimeStep::Auto,
+            },
+        };
         Ok(Self {
             system,
             ws,
-            integrator: ExplicitRk::new(settings.scheme, n),
+            integrator,
             derivative: vec![0.0; n],
             time: 0.0,
             state: initial,
@@ -97,17 +144,25 @@ impl<'a> Simulation<'a> {
             stable_step: (limit, culprit),
             steps_per_output: per_output as usize,
             steps_done: 0,
+            interval: step * per_output,
+            outputs_done: 0,
+            substep: 0,
+            safety_factor: settings.safety_factor,
+            stiffness_limit,
         })
     }
 
     /// Interval between samples [s] (a whole number of steps).
     pub fn sample_interval(&self) -> Real {
-        self.step * self.steps_per_output as Real
+        self.interval
     }
 
-    /// Right-hand-side evaluations per step.
+    /// Right-hand-side (force) evaluations per step.
     pub fn evaluations_per_step(&self) -> usize {
-        self.integrator.stages()
+        match &self.integrator {
+            Integrator::Rk(rk) => rk.stages(),
+            Integrator::ThreeLevel { scheme, .. } => scheme.evaluations(),
+        }
     }
 
     /// Steps taken so far.
@@ -118,10 +173,13 @@ impl<'a> Simulation<'a> {
     /// Advances one step. Checks the state for non-finite values.
     pub fn step(&mut self) -> Result<(), SimulationError> {
         let sys = self.system;
-        if let Err(loc) =
-            self.integrator
-                .step(sys, &mut self.ws, self.time, self.step, &mut self.state)
-        {
+        let done = match &mut self.integrator {
+            Integrator::Rk(rk) => rk.step(sys, &mut self.ws, self.time, self.step, &mut self.state),
+            Integrator::ThreeLevel { scheme, .. } => {
+                scheme.step(sys, &mut self.ws, self.time, self.step, &mut self.state)
+            }
+        };
+        if let Err(loc) = done {
             return Err(divergence(
                 self.stable_step.0,
                 self.time,
@@ -130,7 +188,21 @@ impl<'a> Simulation<'a> {
             ));
         }
         self.steps_done += 1;
-        self.time = self.steps_done as Real * self.step;
+        self.substep += 1;
+        if self.substep == self.steps_per_output {
+            self.outputs_done += 1;
+            self.substep = 0;
+            if let Integrator::ThreeLevel { variable: true, .. } = self.integrator {
+                // Variable step (eq. 48): the whole interval in equal steps no longer than
+                // the wave limit at the current strains and the stiffness estimate.
+                let wave = sys.wave_step(&self.ws, WAVE_COURANT).0;
+                let wanted = self.safety_factor * wave.min(self.stiffness_limit);
+                let n = (self.interval / wanted).ceil().max(1.0);
+                self.step = self.interval / n;
+                self.steps_per_output = n as usize;
+            }
+        }
+        self.time = self.outputs_done as Real * self.interval + self.substep as Real * self.step;
         if let Some(i) = self.state.iter().position(|x| !x.is_finite()) {
             return Err(divergence(
                 self.stable_step.0,
@@ -173,9 +245,7 @@ impl<'a> Simulation<'a> {
         duration: Real,
         observer: &mut impl Observer,
     ) -> Result<(), SimulationError> {
-        let outputs = (duration / (self.step * self.steps_per_output as Real) - 1e-9)
-            .ceil()
-            .max(0.0) as u64;
+        let outputs = (duration / self.interval - 1e-9).ceil().max(0.0) as u64;
         self.evaluate()?;
         observer.sample(self.system, self.time, &self.state, &self.ws);
         for _ in 0..outputs {

@@ -340,6 +340,37 @@ impl System {
         dydt: &mut [Real],
         ws: &mut Workspace,
     ) -> Result<(), Location> {
+        self.assemble(t, y, ws);
+        ws.coupled
+            .solve(&mut ws.blocks)
+            .map_err(|s| self.singular_location(s))?;
+        // Write dy/dt.
+        for (li, l) in self.lines.iter().enumerate() {
+            let o = self.layout.line_offset[li];
+            let m = self.layout.line_interior[li];
+            let lw = &ws.lines[li];
+            let acc = &ws.blocks[li].x;
+            for i in 1..l.fe.elements() {
+                set3(&mut dydt[o..], i - 1, &lw.velocity[i]);
+                set3(&mut dydt[o + 3 * m..], i - 1, &acc[i]);
+            }
+        }
+        for (f, &p) in self.free_points.iter().enumerate() {
+            let o = self.layout.point_offset[p].expect("free point");
+            set3(&mut dydt[o..], 0, &ws.points[p].velocity);
+            set3(&mut dydt[o..], 1, &ws.coupled.point_x[f]);
+            ws.points[p].acceleration = ws.coupled.point_x[f];
+        }
+        Ok(())
+    }
+
+    /// The equations of motion at (t, y), assembled but not solved: point kinematics (free
+    /// points from the state, others from their motion, with their accelerations), node
+    /// positions and velocities, node forces `ws.lines[l].force` and mass blocks
+    /// `ws.blocks[l]` (whose `x` holds the forces, with the known accelerations at ends on
+    /// fixed or prescribed points), and each free point's own load and mass in
+    /// `ws.coupled.point_x`, `ws.coupled.point_diag`.
+    pub fn assemble(&self, t: Real, y: &[Real], ws: &mut Workspace) {
         self.point_kinematics(t, y, ws);
         self.gather_lines(y, ws);
         let options = LoadOptions {
@@ -373,27 +404,6 @@ impl System {
             ws.coupled.point_x[f] = force;
             ws.coupled.point_diag[f] = mass;
         }
-        ws.coupled
-            .solve(&mut ws.blocks)
-            .map_err(|s| self.singular_location(s))?;
-        // Write dy/dt.
-        for (li, l) in self.lines.iter().enumerate() {
-            let o = self.layout.line_offset[li];
-            let m = self.layout.line_interior[li];
-            let lw = &ws.lines[li];
-            let acc = &ws.blocks[li].x;
-            for i in 1..l.fe.elements() {
-                set3(&mut dydt[o..], i - 1, &lw.velocity[i]);
-                set3(&mut dydt[o + 3 * m..], i - 1, &acc[i]);
-            }
-        }
-        for (f, &p) in self.free_points.iter().enumerate() {
-            let o = self.layout.point_offset[p].expect("free point");
-            set3(&mut dydt[o..], 0, &ws.points[p].velocity);
-            set3(&mut dydt[o..], 1, &ws.coupled.point_x[f]);
-            ws.points[p].acceleration = ws.coupled.point_x[f];
-        }
-        Ok(())
     }
 
     /// Names the place of a singular block.
@@ -454,6 +464,30 @@ impl System {
         }
     }
 
+    /// The time step of the elastic-link paper's condition Δt ≤ C_k l / c (eq. 48) over every
+    /// element [s], at the strains in `ws` (from the last evaluation), with c the faster of the
+    /// axial wave √(EA_t/γ0) (EA_t the tangent stiffness) and the transverse wave √(T/γ0)
+    /// (the paper's eq. 49), and l the unstretched element length (the waves travel
+    /// √(EA/γ0) metres of unstretched cable per second); and the line and element that set it.
+    pub fn wave_step(&self, ws: &Workspace, c_k: Real) -> (Real, usize, usize) {
+        let mut best = (Real::INFINITY, 0, 0);
+        for (li, l) in self.lines.iter().enumerate() {
+            let el = &ws.lines[li].elements;
+            for (e, &k) in l.fe.element_section.iter().enumerate() {
+                let s = &l.fe.sections[k];
+                let gamma = s.line_type.mass_per_length;
+                let axial = s.law.stiffness.max_tangent() / gamma;
+                let transverse = el.tension[e].max(0.0) / gamma;
+                let c = axial.max(transverse).sqrt();
+                let dt = c_k * s.element_length / c;
+                if dt < best.0 {
+                    best = (dt, li, e);
+                }
+            }
+        }
+        best
+    }
+
     /// Tension [N] at node i of a line: the mean of its elements' tensions at interior nodes
     /// and the magnitude of the end force at the ends.
     pub fn node_tension(&self, ws: &Workspace, line: usize, node: usize) -> Real {
@@ -488,6 +522,10 @@ impl System {
         let radius = match scheme {
             Scheme::Rk4 => 2.6,
             Scheme::SspRk3 => 1.7,
+            // The predictor–corrector on ẍ = −ω²x gives x^{n+1} = (2 − 2h² + h⁴) x^n −
+            // (1 − h²) x^{n−1}, h = ωΔt, whose roots stay in the unit disc for h ≤ 1
+            // (derived in integrate/three_level.rs): half the central difference's limit.
+            Scheme::ThreeLevel => 1.0,
         };
         let env = &self.environment;
         let rho = env.water_density;

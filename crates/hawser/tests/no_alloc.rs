@@ -68,10 +68,15 @@ fn check(name: &str, model: &Model, scheme: Scheme) {
     let system = System::new(model).unwrap();
     let y = system.straight_state();
     let dt = 0.5 * system.stable_step(scheme).0;
-    let settings = Settings {
+    let mut settings = Settings {
         scheme,
         ..fixed_step_settings(dt, scheme)
     };
+    if scheme == Scheme::ThreeLevel {
+        // Automatic, variable steps: the step is chosen again every output interval.
+        settings.time_step = TimeStep::Auto;
+        settings.output_interval = 20.0 * dt;
+    }
     let mut sim = Simulation::new(&system, &settings, y).unwrap();
     for _ in 0..10 {
         sim.step().unwrap();
@@ -114,11 +119,13 @@ fn time_loop_does_not_allocate() {
             mass_matrix,
         );
         model.environment.current = Current::Uniform(Vec3::new(0.5, 0.2, 0.0));
-        check(
-            &format!("{mass_matrix:?} line + free point"),
-            &model,
-            Scheme::Rk4,
-        );
+        for scheme in [Scheme::Rk4, Scheme::ThreeLevel] {
+            check(
+                &format!("{mass_matrix:?} line + free point, {scheme:?}"),
+                &model,
+                scheme,
+            );
+        }
     }
 
     // Two lines meeting at a free buoy: an anchor on the seabed, a fairlead moving by a time
@@ -161,7 +168,7 @@ fn time_loop_does_not_allocate() {
         end_a: LineEnd::Point(1),
         end_b: LineEnd::Point(2),
     });
-    for scheme in [Scheme::Rk4, Scheme::SspRk3] {
+    for scheme in [Scheme::Rk4, Scheme::SspRk3, Scheme::ThreeLevel] {
         check("two lines on a shared buoy", &model, scheme);
     }
 }

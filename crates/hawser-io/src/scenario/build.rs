@@ -2119,7 +2119,8 @@ fn build_settings(
     }
     s.scheme = match sim.scheme {
         Some(SchemeSpec::SspRk3) => Scheme::SspRk3,
-        _ => Scheme::Rk4,
+        Some(SchemeSpec::ThreeLevel) => Scheme::ThreeLevel,
+        Some(SchemeSpec::Rk4) | None => Scheme::Rk4,
     };
     s.initial_condition = match sim.initial_condition {
         Some(InitialConditionSpec::AsDefined) => InitialCondition::AsDefined,

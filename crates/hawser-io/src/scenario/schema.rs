@@ -66,6 +66,9 @@ pub enum SchemeSpec {
     Rk4,
     /// Third-order SSP Runge–Kutta.
     SspRk3,
+    /// The elastic-link paper's explicit three-time-level predictor–corrector with variable
+    /// steps.
+    ThreeLevel,
 }
 
 /// Initial condition of a dynamic run.
@@ -93,7 +96,7 @@ pub struct SimulationSpec {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<f64>")]
     pub safety_factor: Option<Spanned<f64>>,
-    /// `"rk4"` (default) or `"ssp-rk3"`.
+    /// `"rk4"` (default), `"ssp-rk3"` or `"three-level"`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub scheme: Option<SchemeSpec>,
     /// Interval between time-series samples [s], default 0.1.

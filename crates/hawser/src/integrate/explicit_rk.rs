@@ -41,11 +41,12 @@ pub const SSP_RK3: Tableau = Tableau {
 };
 
 impl Scheme {
-    /// The tableau of this scheme.
-    pub fn tableau(self) -> &'static Tableau {
+    /// The tableau of this scheme, if it is a Runge–Kutta scheme.
+    pub fn tableau(self) -> Option<&'static Tableau> {
         match self {
-            Scheme::Rk4 => &RK4,
-            Scheme::SspRk3 => &SSP_RK3,
+            Scheme::Rk4 => Some(&RK4),
+            Scheme::SspRk3 => Some(&SSP_RK3),
+            Scheme::ThreeLevel => None,
         }
     }
 }
@@ -59,9 +60,8 @@ pub struct ExplicitRk {
 }
 
 impl ExplicitRk {
-    /// Integrator for a state of length `n`.
-    pub fn new(scheme: Scheme, n: usize) -> Self {
-        let tableau = scheme.tableau();
+    /// Integrator of `tableau` for a state of length `n`.
+    pub fn new(tableau: &'static Tableau, n: usize) -> Self {
         Self {
             tableau,
             k: vec![vec![0.0; n]; tableau.stages],

@@ -22,6 +22,9 @@ pub enum Scheme {
     Rk4,
     /// Strong-stability-preserving 3rd-order Runge–Kutta (DG paper eqs. 31–33).
     SspRk3,
+    /// The elastic-link paper's explicit three-time-level scheme with variable steps and a
+    /// predictor–corrector (eqs. 35–48), [`crate::integrate::ThreeLevel`].
+    ThreeLevel,
 }
 
 /// Time step of a dynamic run.
