@@ -8,6 +8,7 @@ use hawser::analysis::Channel;
 use hawser::math::Vec3;
 use hawser::model::*;
 use hawser::physics::environment::{Current, Environment};
+use hawser::physics::waves::Waves;
 use hawser::physics::hydrodynamics::{DragModel, LoadingFunction};
 use hawser::physics::material::{AxialDamping, AxialStiffness};
 use hawser::physics::seabed::{ContactDamping, FrictionLaw, Seabed};
@@ -703,6 +704,7 @@ fn build_environment(b: &mut Builder, spec: Option<&EnvironmentSpec>) -> Environ
         depth: f64::INFINITY,
         seabed: Seabed::default(),
         current: Current::None,
+        waves: Waves::None,
     };
     if let Some(d) = &e.depth {
         let errors = b.errors.len();

@@ -1,6 +1,7 @@
-//! Water, air, gravity and current.
+//! Water, air, gravity, current and waves.
 
 use crate::math::{Real, Vec3};
+use crate::physics::waves::Waves;
 
 /// Standard gravity [m/s²] (SPEC §1).
 pub const STANDARD_GRAVITY: Real = 9.80665;
@@ -9,9 +10,12 @@ pub const SEA_WATER_DENSITY: Real = 1025.0;
 /// Default air density [kg/m³] (SPEC §1).
 pub const AIR_DENSITY: Real = 1.225;
 
-/// The medium around a cable: water, air above z = 0, the seabed and the current.
+/// The medium around a cable: water, air above z = 0, the seabed, the current and the waves.
 ///
 /// z is up and z = 0 is the still water level; the flat seabed is at z = −`depth`.
+/// Current and waves are superposed: in the water their velocities add, with no wave–current
+/// interaction (the waves are not Doppler-shifted by the current, nor the current profile
+/// stretched by the waves).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Environment {
     /// Gravitational acceleration [m/s²]; default [`STANDARD_GRAVITY`].
@@ -26,6 +30,9 @@ pub struct Environment {
     pub seabed: crate::physics::seabed::Seabed,
     /// Current velocity field.
     pub current: Current,
+    /// Sea state; [`Waves::None`] by default. Build it with [`Waves::new`] for this
+    /// environment's `depth` and `gravity`.
+    pub waves: Waves,
 }
 
 impl Default for Environment {
@@ -37,6 +44,7 @@ impl Default for Environment {
             depth: Real::INFINITY,
             seabed: Default::default(),
             current: Current::None,
+            waves: Waves::None,
         }
     }
 }
@@ -97,28 +105,59 @@ impl Environment {
         }
     }
 
-    /// Fluid velocity at a point [m/s]: the current under water, still air above.
+    /// Fluid velocity at a point [m/s] and time [s]: under water the current plus the wave
+    /// particle velocity, still air above. Without waves the water ends at z = 0; with waves
+    /// at the instantaneous surface η (see [`crate::physics::waves`] for the stretching).
     #[inline]
-    pub fn fluid_velocity(&self, position: &Vec3, _time: Real) -> Vec3 {
-        if position.z < 0.0 {
-            self.current.velocity(position.z)
-        } else {
-            Vec3::zeros()
+    pub fn fluid_velocity(&self, position: &Vec3, time: Real) -> Vec3 {
+        match &self.waves {
+            Waves::None if position.z < 0.0 => self.current.velocity(position.z),
+            Waves::None => Vec3::zeros(),
+            Waves::Airy(field) => {
+                let k = field.kinematics(position, time);
+                if k.submerged {
+                    self.current.velocity(position.z) + k.velocity
+                } else {
+                    Vec3::zeros()
+                }
+            }
         }
     }
 
-    /// Fluid acceleration at a point [m/s²]. Zero for steady currents; wave kinematics
-    /// (issue 6) enter here.
+    /// Local fluid acceleration ∂u/∂t at a point [m/s²] and time [s]: the waves' (steady
+    /// currents add none), zero in the air. This is what the Froude–Krylov and added-mass
+    /// terms of Morison's equation take (SPEC §1).
     #[inline]
-    pub fn fluid_acceleration(&self, _position: &Vec3, _time: Real) -> Vec3 {
-        Vec3::zeros()
+    pub fn fluid_acceleration(&self, position: &Vec3, time: Real) -> Vec3 {
+        match &self.waves {
+            Waves::None => Vec3::zeros(),
+            Waves::Airy(field) => field.kinematics(position, time).acceleration,
+        }
     }
 
-    /// Whether the fluid is at rest everywhere (no current; waves come with issue 6): drag and
-    /// fluid inertia then need no fluid kinematics.
+    /// Surface elevation η [m] at (x, y) [m] and time [s]: 0 without waves.
+    #[inline]
+    pub fn surface_elevation(&self, x: Real, y: Real, time: Real) -> Real {
+        self.waves.elevation(x, y, time)
+    }
+
+    /// Dynamic wave pressure p_d [Pa] at a point [m] and time [s]: the pressure beyond the
+    /// hydrostatic −ρ g z, zero above the surface and without waves.
+    #[inline]
+    pub fn dynamic_pressure(&self, position: &Vec3, time: Real) -> Real {
+        match &self.waves {
+            Waves::None => 0.0,
+            Waves::Airy(field) => {
+                self.water_density * field.kinematics(position, time).kinematic_pressure
+            }
+        }
+    }
+
+    /// Whether the fluid is at rest everywhere (no current and no waves): drag and fluid
+    /// inertia then need no fluid kinematics.
     #[inline]
     pub fn is_still_water(&self) -> bool {
-        matches!(self.current, Current::None)
+        matches!(self.current, Current::None) && self.waves.is_none()
     }
 
     /// Height of the seabed z = −depth [m].

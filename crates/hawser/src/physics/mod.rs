@@ -1,7 +1,8 @@
-//! Physics shared by every cable formulation (SPEC §1): the water and seabed around a line,
-//! the hydrodynamic loads on it and the constitutive law of its material.
+//! Physics shared by every cable formulation (SPEC §1): the water, waves and seabed around a
+//! line, the hydrodynamic loads on it and the constitutive law of its material.
 
 pub mod environment;
 pub mod hydrodynamics;
 pub mod material;
 pub mod seabed;
+pub mod waves;
