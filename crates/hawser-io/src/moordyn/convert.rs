@@ -1160,6 +1160,7 @@ fn environment_of(
         depth,
         seabed,
         current,
+        waves: None,
     }
 }
 

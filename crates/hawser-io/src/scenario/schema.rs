@@ -143,6 +143,9 @@ pub struct EnvironmentSpec {
     /// Current.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub current: Option<CurrentSpec>,
+    /// Waves; a calm sea by default.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub waves: Option<WavesSpec>,
 }
 
 /// `[environment.seabed]`.
@@ -208,6 +211,87 @@ pub struct CurrentSpec {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<Vec<[f64; 4]>>")]
     pub profile: Option<Spanned<Vec<[f64; 4]>>>,
+}
+
+/// Kind of waves.
+#[derive(Clone, Copy, Debug, Deserialize, Serialize, JsonSchema, PartialEq, Eq)]
+#[serde(rename_all = "kebab-case")]
+pub enum WaveKind {
+    /// One regular Airy wave.
+    Regular,
+    /// An irregular sea from a JONSWAP spectrum.
+    Jonswap,
+    /// An irregular sea from a Pierson–Moskowitz spectrum.
+    PiersonMoskowitz,
+}
+
+/// Continuation of the linear wave profiles above the mean water level.
+#[derive(Clone, Copy, Debug, Deserialize, Serialize, JsonSchema, PartialEq, Eq)]
+#[serde(rename_all = "kebab-case")]
+pub enum StretchingSpec {
+    /// Stretching of the whole water column to the instantaneous surface (Wheeler).
+    Wheeler,
+    /// Linear profiles below z = 0, the z = 0 value held up to the surface.
+    Vertical,
+}
+
+/// `[environment.waves]`.
+#[derive(Debug, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct WavesSpec {
+    /// `"regular"`, `"jonswap"` or `"pierson-moskowitz"`.
+    #[serde(rename = "type")]
+    #[schemars(with = "WaveKind")]
+    pub kind: Spanned<WaveKind>,
+    /// Regular wave height H, crest to trough [m].
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub height: Option<Spanned<f64>>,
+    /// Regular wave period T [s].
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub period: Option<Spanned<f64>>,
+    /// Significant wave height Hs [m] of an irregular sea.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub significant_height: Option<Spanned<f64>>,
+    /// Peak period Tp [s] of an irregular sea.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub peak_period: Option<Spanned<f64>>,
+    /// JONSWAP peak enhancement factor γ [-], default 3.3.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub gamma: Option<Spanned<f64>>,
+    /// Direction the waves travel toward [deg], from +x toward +y; default 0.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub direction: Option<Spanned<f64>>,
+    /// Exponent s of cos-2s directional spreading [-]; long-crested by default.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub spreading: Option<Spanned<f64>>,
+    /// Seed of the random frequencies, phases and directions; default 1.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<i64>")]
+    pub seed: Option<Spanned<i64>>,
+    /// Number of wave components [-], default 200.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<i64>")]
+    pub components: Option<Spanned<i64>>,
+    /// Lowest and highest component frequency [Hz], default 0.5 and 5 times the peak
+    /// frequency 1/Tp.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<[f64; 2]>")]
+    pub frequency_range: Option<Spanned<[f64; 2]>>,
+    /// Build-up time [s] over which the sea grows from calm; default two (peak) periods, 0 for
+    /// none.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub ramp_time: Option<Spanned<f64>>,
+    /// `"wheeler"` (default) or `"vertical"`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub stretching: Option<StretchingSpec>,
 }
 
 /// Fourier coefficients of a drag loading function.

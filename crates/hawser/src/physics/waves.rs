@@ -43,6 +43,9 @@ use std::f64::consts::PI;
 pub const JONSWAP_SIGMA_BELOW: Real = 0.07;
 /// Peak-width parameter σ of the JONSWAP spectrum above the peak frequency [-].
 pub const JONSWAP_SIGMA_ABOVE: Real = 0.09;
+/// Largest cos-2s spreading exponent [-]: the rejection sampler accepts about 1/√(π s) of its
+/// draws (2 % at s = 1000), and a sea that narrow is long-crested for any practical purpose.
+pub const MAX_SPREADING: Real = 1000.0;
 /// Depth factors below this are taken as zero: a component (sorted by wavenumber) whose factor
 /// e^{kz} + e^{−k(z+2h)} falls below it, and all shorter ones after it, are skipped in the
 /// kinematics [-]. Their contribution is below 1e-20 of their surface value.
@@ -111,7 +114,8 @@ pub struct IrregularSea {
     pub spectrum: Spectrum,
     /// Mean direction of propagation β [rad], from +x toward +y.
     pub direction: Real,
-    /// Spreading exponent s of the cos-2s distribution [-]; `None` for a long-crested sea.
+    /// Spreading exponent s of the cos-2s distribution [-], 0 < s ≤ [`MAX_SPREADING`]; `None`
+    /// for a long-crested sea.
     pub spreading: Option<Real>,
     /// Seed of the random frequencies, phases and directions.
     pub seed: u64,
@@ -695,7 +699,7 @@ fn uniform(rng: &mut Pcg64) -> Real {
 }
 
 /// A direction offset [rad] from the cos-2s distribution D(θ) ∝ cos^{2s}(θ/2), θ ∈ (−π, π],
-/// by rejection from the uniform distribution.
+/// by rejection from the uniform distribution (s ≤ [`MAX_SPREADING`] keeps it quick).
 fn spreading_offset(rng: &mut Pcg64, s: Real) -> Real {
     loop {
         let theta = PI * (2.0 * uniform(rng) - 1.0);
@@ -729,9 +733,9 @@ fn irregular_components(
     )?;
     if let Some(s) = sea.spreading {
         check(
-            s.is_finite() && s > 0.0,
+            s > 0.0 && s <= MAX_SPREADING,
             "spreading",
-            "the spreading exponent s must be > 0",
+            "the spreading exponent s must be in (0, 1000]",
         )?;
     }
     let mut frequencies = generator(sea.seed, 1);
