@@ -29,8 +29,8 @@
 //! interaction (no Doppler shift of the wave frequencies).
 //!
 //! Everything a point evaluation needs is precomputed per component, so evaluation allocates
-//! nothing; the cost is one cosine per component for η and one sine–cosine pair and one or two
-//! exponentials per component for the kinematics.
+//! nothing; the cost is one cosine per component for η and one sine–cosine pair and one
+//! exponential per component for the kinematics.
 
 use crate::error::ModelError;
 use crate::math::{Real, Vec3};
@@ -47,8 +47,8 @@ pub const JONSWAP_SIGMA_ABOVE: Real = 0.09;
 /// draws (2 % at s = 1000), and a sea that narrow is long-crested for any practical purpose.
 pub const MAX_SPREADING: Real = 1000.0;
 /// Depth factors below this are taken as zero: a component (sorted by wavenumber) whose factor
-/// e^{kz} + e^{−k(z+2h)} falls below it, and all shorter ones after it, are skipped in the
-/// kinematics [-]. Their contribution is below 1e-20 of their surface value.
+/// e^{kz} (≥ e^{−k(z+2h)}) falls below it, and all shorter ones after it, are skipped in the
+/// kinematics [-]. Their contribution is below 2e-20 of their surface value.
 const NEGLIGIBLE_DEPTH_FACTOR: Real = 1e-20;
 
 /// The sea state: none, or linear waves.
@@ -475,17 +475,13 @@ impl WaveField {
         let (mut ah_x, mut ah_y, mut aw) = (0.0, 0.0, 0.0);
         let mut p = 0.0;
         for c in &self.components {
-            let k = c.wavenumber;
-            let e1 = (k * zs).exp();
-            let e2 = if c.exp_2kh > 0.0 {
-                (-k * (zs + 2.0 * h)).exp()
-            } else {
-                0.0
-            };
-            if e1 + e2 < NEGLIGIBLE_DEPTH_FACTOR {
+            // e2 = e^{−k(z'+2h)} = e^{−2kh} / e1 ≤ e1 (z' ≥ −h), so one exponential serves.
+            let e1 = (c.wavenumber * zs).exp();
+            if e1 < NEGLIGIBLE_DEPTH_FACTOR {
                 // Components come by increasing k, and the factor decreases with k.
                 break;
             }
+            let e2 = c.exp_2kh / e1;
             let cosh_factor = (e1 + e2) * c.inv_sinh_scale;
             let sinh_factor = (e1 - e2) * c.inv_sinh_scale;
             let pressure_factor = (e1 + e2) * c.inv_cosh_scale;
