@@ -6,13 +6,15 @@
 //! calls of `Simulation::step` and 1000 of `Simulation::evaluate` must allocate nothing, for:
 //! a consistent-mass line with a free point mass; the same with lumped mass; and two lines
 //! sharing a free point (the dense shared-point solve) with a prescribed, time-series end, in
-//! water with current, drag, added mass and seabed contact, under each RK scheme.
+//! water with current, an irregular sea, drag, added mass and seabed contact, under each RK
+//! scheme.
 
 mod common;
 use common::*;
 use hawser::math::Vec3;
 use hawser::model::*;
 use hawser::physics::environment::Current;
+use hawser::physics::waves::{IrregularSea, SeaState, Spectrum, Stretching, WaveSpec, Waves};
 use hawser::simulation::Simulation;
 use hawser::system::System;
 use std::alloc::{GlobalAlloc, Layout, System as SystemAlloc};
@@ -129,7 +131,7 @@ fn time_loop_does_not_allocate() {
     }
 
     // Two lines meeting at a free buoy: an anchor on the seabed, a fairlead moving by a time
-    // series; current profile, drag and added mass in water.
+    // series; current profile, waves, drag and added mass in water.
     let mut model = single_line(
         line_type(0.08, 40.0, 3.0e8),
         120.0,
@@ -143,6 +145,27 @@ fn time_loop_does_not_allocate() {
         z: vec![-60.0, 0.0],
         velocity: vec![Vec3::zeros(), Vec3::new(1.0, 0.0, 0.0)],
     };
+    model.environment.waves = Waves::new(
+        &WaveSpec {
+            sea: SeaState::Irregular(IrregularSea {
+                spectrum: Spectrum::Jonswap {
+                    significant_height: 2.0,
+                    peak_period: 8.0,
+                    peak_enhancement: 3.3,
+                },
+                direction: 0.5,
+                spreading: Some(4.0),
+                seed: 3,
+                components: 50,
+                frequency_range: (0.4, 4.0),
+            }),
+            ramp_time: 0.0,
+            stretching: Stretching::Wheeler,
+        },
+        60.0,
+        model.environment.gravity,
+    )
+    .unwrap();
     model.points.push(Point {
         name: "fairlead".into(),
         position: Vec3::new(30.0, 0.0, -5.0),

@@ -777,6 +777,20 @@ fn invalid_waves_are_rejected() {
     assert!(Waves::new(&spec(Real::NAN, 5.0), 10.0, G).is_err());
     assert!(Waves::new(&spec(1.0, 5.0), 0.0, G).is_err());
     assert!(Waves::new(&spec(1.0, 5.0), 10.0, 0.0).is_err());
+    // A model whose waves were built for another depth is refused.
+    let mut model = single_line(
+        line_type(0.05, 20.0, 1e8),
+        20.0,
+        4,
+        fixed("a", Vec3::new(0.0, 0.0, -30.0)),
+        fixed("b", Vec3::new(0.0, 0.0, -10.0)),
+        MassMatrix::Lumped,
+    );
+    model.environment.depth = 30.0;
+    model.environment.waves = Waves::new(&spec(1.0, 5.0), 40.0, G).unwrap();
+    assert!(model.validate().is_err());
+    model.environment.waves = Waves::new(&spec(1.0, 5.0), 30.0, G).unwrap();
+    assert!(model.validate().is_ok());
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -125,6 +125,15 @@ impl Model {
         if !(env.depth > 0.0) {
             return bad("environment.depth".into(), "must be > 0 m");
         }
+        if let Some(w) = env.waves.field()
+            && (w.depth() != env.depth || w.gravity() != env.gravity)
+        {
+            return bad(
+                "environment.waves".into(),
+                "were built for another depth or gravity: build them with Waves::new for the \
+                 environment's depth and gravity (the wavenumbers depend on both)",
+            );
+        }
         for t in &self.line_types {
             if !(t.diameter > 0.0) {
                 return bad(format!("line type {}: diameter", t.name), "must be > 0 m");
