@@ -2,8 +2,9 @@
 //! key, the value, the expected unit or range and a hint, and never a panic. Each test mutates
 //! a small valid scenario and snapshots the rendered error.
 
+mod common;
+use common::*;
 use hawser_io::scenario;
-use std::panic::{AssertUnwindSafe, catch_unwind};
 use std::path::Path;
 
 /// A valid scenario: a chain from a fixed anchor to a prescribed fairlead, and a free buoy
@@ -79,49 +80,10 @@ length = 40.0
 elements = 4
 "#;
 
-const FILE: &str = "scenario.toml";
-
 /// `BASE` with the first occurrence of `from` replaced by `to` (which must exist).
 fn mutate(from: &str, to: &str) -> String {
     assert!(BASE.contains(from), "the base scenario has no `{from}`");
     BASE.replacen(from, to, 1)
-}
-
-/// The rendered error for `text`, which must be rejected.
-fn error(text: &str) -> String {
-    match scenario::parse(Path::new(FILE), text) {
-        Ok(_) => panic!("expected an error for:\n{text}"),
-        Err(e) => e.to_string(),
-    }
-}
-
-/// 1-based line of the first occurrence of `needle` in `text`.
-fn line_of(text: &str, needle: &str) -> usize {
-    let at = text
-        .find(needle)
-        .unwrap_or_else(|| panic!("no `{needle}` in the text"));
-    text[..at].matches('\n').count() + 1
-}
-
-/// Checks the message points at `scenario.toml:LINE:`, names `key` and, if asked, has a hint
-/// and an expected unit or range.
-fn assert_located(msg: &str, line: usize, key: &str, hint: bool, expected: bool) {
-    let at = format!("{FILE}:{line}:");
-    assert!(msg.contains(&at), "message lacks `{at}`:\n{msg}");
-    assert!(
-        msg.contains(&format!("= key: {key}\n")) || msg.ends_with(&format!("= key: {key}")),
-        "message lacks key `{key}`:\n{msg}"
-    );
-    if hint {
-        assert!(msg.contains("= hint: "), "message lacks a hint:\n{msg}");
-    }
-    if expected {
-        assert!(
-            msg.contains("= expected: "),
-            "message lacks an expected unit or range:\n{msg}"
-        );
-    }
-    assert!(!msg.contains("panicked"), "{msg}");
 }
 
 #[test]
@@ -782,19 +744,6 @@ fn several_schema_errors_at_once() {
     }
     assert!(msg.contains("4 errors in scenario.toml"), "{msg}");
     insta::assert_snapshot!(msg);
-}
-
-/// Runs `parse` on `text` and, if it is accepted, sets the model up as `hawser check` does;
-/// returns whether anything panicked.
-fn panics(text: &str) -> bool {
-    catch_unwind(AssertUnwindSafe(|| {
-        if let Ok(s) = scenario::parse(Path::new(FILE), text) {
-            if let Ok(system) = hawser::system::System::new(&s.model) {
-                let _ = system.stable_step(s.model.settings.scheme);
-            }
-        }
-    }))
-    .is_err()
 }
 
 #[test]

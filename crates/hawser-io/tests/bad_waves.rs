@@ -5,9 +5,10 @@
 use hawser::physics::waves::{
     IrregularSea, RegularWave, SeaState, Spectrum, Stretching, WaveSpec, Waves,
 };
+mod common;
+use common::*;
 use hawser_io::scenario;
 use std::f64::consts::PI;
-use std::panic::{AssertUnwindSafe, catch_unwind};
 use std::path::Path;
 
 /// A riser in an irregular sea with every wave key given.
@@ -67,8 +68,6 @@ period = 8.0
 direction = -45.0
 "#;
 
-const FILE: &str = "scenario.toml";
-
 /// The irregular waves table of `BASE`.
 fn irregular_table() -> &'static str {
     let start = BASE.find("[environment.waves]").unwrap();
@@ -91,44 +90,10 @@ fn mutate(from: &str, to: &str) -> String {
     mutate_in(BASE, from, to)
 }
 
-/// The rendered error for `text`, which must be rejected.
-fn error(text: &str) -> String {
-    match scenario::parse(Path::new(FILE), text) {
-        Ok(_) => panic!("expected an error for:\n{text}"),
-        Err(e) => e.to_string(),
-    }
-}
-
-/// 1-based line of the first occurrence of `needle` in `text`.
-fn line_of(text: &str, needle: &str) -> usize {
-    let at = text
-        .find(needle)
-        .unwrap_or_else(|| panic!("no `{needle}` in the text"));
-    text[..at].matches('\n').count() + 1
-}
-
-/// Checks the message points at `scenario.toml:LINE:`, names `key` and has a hint and, if
-/// asked, an expected unit or range.
-fn assert_located(msg: &str, line: usize, key: &str, expected: bool) {
-    let at = format!("{FILE}:{line}:");
-    assert!(msg.contains(&at), "message lacks `{at}`:\n{msg}");
-    assert!(
-        msg.contains(&format!("= key: {key}\n")) || msg.ends_with(&format!("= key: {key}")),
-        "message lacks key `{key}`:\n{msg}"
-    );
-    assert!(msg.contains("= hint: "), "message lacks a hint:\n{msg}");
-    if expected {
-        assert!(
-            msg.contains("= expected: "),
-            "message lacks an expected unit or range:\n{msg}"
-        );
-    }
-}
-
 /// A bad value on the line of `needle`: located, keyed, with unit and hint; snapshotted.
 fn bad(text: &str, needle: &str, key: &str) -> String {
     let msg = error(text);
-    assert_located(&msg, line_of(text, needle), key, true);
+    assert_located(&msg, line_of(text, needle), key, true, true);
     msg
 }
 
@@ -383,6 +348,7 @@ fn height_on_an_irregular_sea() {
         &msg,
         line_of(&text, "\nheight = 3.0") + 1,
         "environment.waves.height",
+        true,
         false,
     );
     insta::assert_snapshot!(msg);
@@ -396,6 +362,7 @@ fn gamma_on_a_pierson_moskowitz_sea() {
         &msg,
         line_of(&text, "gamma"),
         "environment.waves.gamma",
+        true,
         false,
     );
     insta::assert_snapshot!(msg);
@@ -437,6 +404,7 @@ fn seed_on_a_regular_wave() {
         &msg,
         line_of(&text, "seed"),
         "environment.waves.seed",
+        true,
         false,
     );
     insta::assert_snapshot!(msg);
@@ -447,25 +415,6 @@ fn waves_without_gravity() {
     let text = mutate("depth = 60.0", "depth = 60.0\ngravity = 0.0");
     let msg = bad(&text, "type = \"jonswap\"", "environment.gravity");
     insta::assert_snapshot!(msg);
-}
-
-/// Runs `parse` on `text` and, if it is accepted, sets the model up and evaluates the forces
-/// once at t = 30 s (after the ramp); returns whether anything panicked.
-fn panics(text: &str) -> bool {
-    catch_unwind(AssertUnwindSafe(|| {
-        if let Ok(s) = scenario::parse(Path::new(FILE), text)
-            && let Ok(system) = hawser::system::System::new(&s.model)
-        {
-            let _ = system.stable_step(s.model.settings.scheme);
-            let env = &s.model.environment;
-            let p = hawser::math::Vec3::new(1.0, 2.0, -3.0);
-            let _ = (
-                env.fluid_velocity(&p, 30.0),
-                env.fluid_acceleration(&p, 30.0),
-            );
-        }
-    }))
-    .is_err()
 }
 
 /// Every line of the wave tables replaced by extreme and ill-typed values: no panic.

@@ -1,0 +1,64 @@
+//! Helpers shared by the bad-input tests: every rejected scenario must name the file, line and
+//! column, the key, the value, the expected unit or range and a hint, and never panic.
+#![allow(dead_code)]
+
+use hawser_io::scenario;
+use std::panic::{AssertUnwindSafe, catch_unwind};
+use std::path::Path;
+
+/// The file name the test scenarios are parsed as.
+pub const FILE: &str = "scenario.toml";
+
+/// The rendered error for `text`, which must be rejected.
+pub fn error(text: &str) -> String {
+    match scenario::parse(Path::new(FILE), text) {
+        Ok(_) => panic!("expected an error for:\n{text}"),
+        Err(e) => e.to_string(),
+    }
+}
+
+/// 1-based line of the first occurrence of `needle` in `text`.
+pub fn line_of(text: &str, needle: &str) -> usize {
+    let at = text
+        .find(needle)
+        .unwrap_or_else(|| panic!("no `{needle}` in the text"));
+    text[..at].matches('\n').count() + 1
+}
+
+/// Checks the message points at `scenario.toml:LINE:`, names `key` and, if asked, has a hint
+/// and an expected unit or range.
+pub fn assert_located(msg: &str, line: usize, key: &str, hint: bool, expected: bool) {
+    let at = format!("{FILE}:{line}:");
+    assert!(msg.contains(&at), "message lacks `{at}`:\n{msg}");
+    assert!(
+        msg.contains(&format!("= key: {key}\n")) || msg.ends_with(&format!("= key: {key}")),
+        "message lacks key `{key}`:\n{msg}"
+    );
+    if hint {
+        assert!(msg.contains("= hint: "), "message lacks a hint:\n{msg}");
+    }
+    if expected {
+        assert!(
+            msg.contains("= expected: "),
+            "message lacks an expected unit or range:\n{msg}"
+        );
+    }
+    assert!(!msg.contains("panicked"), "{msg}");
+}
+
+/// Runs `parse` on `text` and, if it is accepted, sets the model up as `hawser check` does and
+/// evaluates the fluid kinematics at a point under water after any wave ramp; returns whether
+/// anything panicked.
+pub fn panics(text: &str) -> bool {
+    catch_unwind(AssertUnwindSafe(|| {
+        if let Ok(s) = scenario::parse(Path::new(FILE), text)
+            && let Ok(system) = hawser::system::System::new(&s.model)
+        {
+            let _ = system.stable_step(s.model.settings.scheme);
+            let env = &s.model.environment;
+            let p = hawser::math::Vec3::new(1.0, 2.0, -3.0);
+            let _ = (env.fluid_velocity(&p, 1e3), env.fluid_acceleration(&p, 1e3));
+        }
+    }))
+    .is_err()
+}
