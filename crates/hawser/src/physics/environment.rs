@@ -160,6 +160,14 @@ impl Environment {
         matches!(self.current, Current::None) && self.waves.is_none()
     }
 
+    /// Whether the fluid is at rest everywhere at time t [s]: no current, and no waves or
+    /// waves not yet built up by their ramp.
+    #[inline]
+    pub fn is_still_at(&self, time: Real) -> bool {
+        matches!(self.current, Current::None)
+            && self.waves.field().is_none_or(|w| w.ramp(time).0 == 0.0)
+    }
+
     /// Height of the seabed z = −depth [m].
     #[inline]
     pub fn seabed_z(&self) -> Real {
@@ -170,6 +178,35 @@ impl Environment {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::physics::waves::{RegularWave, SeaState, Stretching, WaveSpec};
+
+    #[test]
+    fn ramped_waves_are_still_at_the_start() {
+        let waves = |ramp_time| {
+            let spec = WaveSpec {
+                sea: SeaState::Regular(RegularWave {
+                    height: 1.0,
+                    period: 6.0,
+                    direction: 0.0,
+                }),
+                ramp_time,
+                stretching: Stretching::Wheeler,
+            };
+            Waves::new(&spec, Real::INFINITY, STANDARD_GRAVITY).unwrap()
+        };
+        let mut env = Environment {
+            waves: waves(12.0),
+            ..Default::default()
+        };
+        assert!(env.is_still_at(0.0) && !env.is_still_at(1.0) && !env.is_still_water());
+        env.waves = waves(0.0);
+        assert!(!env.is_still_at(0.0));
+        env.waves = Waves::None;
+        assert!(env.is_still_at(0.0) && env.is_still_water());
+        env.current = Current::Uniform(Vec3::x());
+        assert!(!env.is_still_at(0.0));
+    }
+
     #[test]
     fn profile_interpolates_and_clamps() {
         let c = Current::Profile {

@@ -409,13 +409,14 @@ fn check_supported(system: &System) -> Result<(), StaticsError> {
                     * s.element_length;
             }
         }
-        let drifting = !env.is_still_water();
+        // The statics is solved at t = 0, where ramped waves are still calm.
+        let drifting = !env.is_still_at(0.0);
         if net.norm() > 1e-9 * force_scale(system) || drifting {
             return Err(StaticsError::Unsupported {
                 points: names.join(", "),
                 net_force: net.norm(),
                 what: if drifting {
-                    "and a current pushes them".to_string()
+                    "and a current or the waves push them".to_string()
                 } else {
                     "weight, buoyancy and point forces".to_string()
                 },
