@@ -129,7 +129,7 @@ impl<'a> Simulation<'a> {
         let integrator = match settings.scheme.tableau() {
             Some(t) => Integrator::Rk(ExplicitRk::new(t, n)),
             None => Integrator::ThreeLevel {
-                scheme: ThreeLevel::new(n),
+                scheme: ThreeLevel::new(system, n),
                 variable: settings.time_step == TimeStep::Auto,
             },
         };

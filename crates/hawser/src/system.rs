@@ -26,6 +26,18 @@ pub struct Layout {
     pub len: usize,
 }
 
+impl Layout {
+    /// Every block of the state as (offset, node count): each line's interior nodes, then
+    /// each free point (one node). A block holds 3·count positions then 3·count velocities.
+    pub fn blocks(&self) -> impl Iterator<Item = (usize, usize)> + '_ {
+        self.line_offset
+            .iter()
+            .copied()
+            .zip(self.line_interior.iter().copied())
+            .chain(self.point_offset.iter().flatten().map(|&o| (o, 1)))
+    }
+}
+
 /// A line of the system.
 #[derive(Clone, Debug)]
 pub struct SystemLine {

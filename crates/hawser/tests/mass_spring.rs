@@ -13,61 +13,20 @@
 
 mod common;
 use common::*;
-use hawser::math::{Real, Vec3};
+use hawser::math::Real;
 use hawser::model::*;
 use hawser::simulation::Simulation;
 use hawser::system::System;
 use std::f64::consts::TAU;
 
-const LENGTH: Real = 10.0;
-const ELEMENTS: usize = 20;
-const GAMMA: Real = 1.0;
-const EA: Real = 1.0e6;
-const MASS: Real = 100.0;
-const G: Real = 9.80665;
-
-/// Root of β tan β = μ in (0, π/2) by bisection.
-fn rod_beta(mu: Real) -> Real {
-    let (mut lo, mut hi) = (0.0, std::f64::consts::FRAC_PI_2 - 1e-12);
-    for _ in 0..200 {
-        let mid = 0.5 * (lo + hi);
-        if mid * mid.tan() < mu {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
-    0.5 * (lo + hi)
-}
+use common::hanging_mass::*;
 
 /// Measured period [s] of the hanging mass.
 fn measured_period(mass_matrix: MassMatrix) -> Real {
-    let top = Vec3::new(0.0, 0.0, 20.0);
-    let mut model = single_line(
-        dry_line_type(0.02, GAMMA, EA),
-        LENGTH,
-        ELEMENTS,
-        fixed("top", top),
-        free("mass", top - Vec3::new(0.0, 0.0, LENGTH), MASS, 0.0),
-        mass_matrix,
-    );
-    model.environment = vacuum_environment(G);
+    let model = model(mass_matrix);
     let system = System::new(&model).unwrap();
-    let l0 = LENGTH / ELEMENTS as Real;
-
-    // Static equilibrium: element e (from the top) carries the weight below its midpoint,
-    // T_e = m g + γ0 g (L − (e + ½) L0) (exact for the lumped and consistent weight alike).
     let amplitude = 2.0e-3;
-    let mut y = system.straight_state();
-    let mut z = top.z;
-    for e in 0..ELEMENTS {
-        let tension = MASS * G + GAMMA * G * (LENGTH - (e as Real + 0.5) * l0);
-        z -= l0 * (1.0 + tension / EA);
-        let s = (e + 1) as Real * l0;
-        let displaced = Vec3::new(0.0, 0.0, z - amplitude * s / LENGTH);
-        set_node_state(&system, &mut y, 0, e + 1, displaced, Vec3::zeros());
-    }
-    let z_eq = z;
+    let (y, z_eq) = displaced_state(&system, amplitude);
     // The bottom element's static strain m g/EA ≈ 1e-3 exceeds the strain amplitude 2e-4, so
     // the line stays taut and the linear analysis holds.
     assert!(amplitude / LENGTH < 0.5 * MASS * G / EA);

@@ -3,47 +3,19 @@
 
 mod common;
 use common::*;
-use hawser::math::{Real, Vec3};
+use hawser::math::Real;
 use hawser::model::*;
 use hawser::simulation::Simulation;
 use hawser::system::System;
 
-const LENGTH: Real = 10.0;
-const ELEMENTS: usize = 20;
-const EA: Real = 1.0e6;
-const MASS: Real = 100.0;
-const G: Real = 9.80665;
+use common::hanging_mass::*;
 
 /// The hanging mass of tests/mass_spring.rs, displaced 2 mm and released; returns the mass's
 /// height every `dt` for `duration`.
 fn hanging_mass(scheme: Scheme, mass_matrix: MassMatrix, dt: Real, duration: Real) -> Vec<Real> {
-    let top = Vec3::new(0.0, 0.0, 20.0);
-    let mut model = single_line(
-        dry_line_type(0.02, 1.0, EA),
-        LENGTH,
-        ELEMENTS,
-        fixed("top", top),
-        free("mass", top - Vec3::new(0.0, 0.0, LENGTH), MASS, 0.0),
-        mass_matrix,
-    );
-    model.environment = vacuum_environment(G);
+    let model = model(mass_matrix);
     let system = System::new(&model).unwrap();
-    let l0 = LENGTH / ELEMENTS as Real;
-    let mut y = system.straight_state();
-    let mut z = top.z;
-    for e in 0..ELEMENTS {
-        let tension = MASS * G + G * (LENGTH - (e as Real + 0.5) * l0);
-        z -= l0 * (1.0 + tension / EA);
-        let s = (e + 1) as Real * l0;
-        set_node_state(
-            &system,
-            &mut y,
-            0,
-            e + 1,
-            Vec3::new(0.0, 0.0, z - 2e-3 * s / LENGTH),
-            Vec3::zeros(),
-        );
-    }
+    let (y, _) = displaced_state(&system, 2e-3);
     let settings = fixed_step_settings(dt, scheme);
     let mut sim = Simulation::new(&system, &settings, y).unwrap();
     let steps = (duration / dt).round() as usize;
@@ -53,20 +25,6 @@ fn hanging_mass(scheme: Scheme, mass_matrix: MassMatrix, dt: Real, duration: Rea
         zs.push(node_state(&system, &sim.state, 0, ELEMENTS).0.z);
     }
     zs
-}
-
-/// Root of β tan β = μ in (0, π/2) by bisection (the hanging mass's fundamental).
-fn rod_beta(mu: Real) -> Real {
-    let (mut lo, mut hi) = (0.0, std::f64::consts::FRAC_PI_2 - 1e-12);
-    for _ in 0..200 {
-        let mid = 0.5 * (lo + hi);
-        if mid * mid.tan() < mu {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
-    0.5 * (lo + hi)
 }
 
 /// The scheme converges to the RK4 solution at first order in Δt (the corrector takes the

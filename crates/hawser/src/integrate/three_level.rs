@@ -44,7 +44,8 @@
 //! The run takes the smaller of this step and the stiffness-and-damping bound of
 //! [`System::stable_step`] (radius 1), which also covers seabed contact and a consistent mass.
 
-use crate::math::{Real, Vec3, get3, set3, solve3};
+use crate::linalg::EndKind;
+use crate::math::{Mat3, Real, Vec3, get3, set3, solve3};
 use crate::system::{Location, System, Workspace};
 
 /// The three-level integrator: the previous level and per-node accelerations, sized once.
@@ -60,6 +61,9 @@ pub struct ThreeLevel {
     accelerations: Vec<Real>,
     /// Δt_n of the last step (0 before the first).
     last_step: Real,
+    /// Per free point: its mass with the line ends' blocks, and its force.
+    point_mass: Vec<Mat3>,
+    point_force: Vec<Vec3>,
 }
 
 /// Which accelerations of the neighbours enter a node's equation.
@@ -72,14 +76,17 @@ enum Stage {
 }
 
 impl ThreeLevel {
-    /// Integrator for a state of length `n`.
-    pub fn new(n: usize) -> Self {
+    /// Integrator for `system`, whose state has length `n`.
+    pub fn new(system: &System, n: usize) -> Self {
+        let points = system.free_points.len();
         Self {
             previous: vec![0.0; n],
             trial: vec![0.0; n],
             predicted: vec![0.0; n],
             accelerations: vec![0.0; n],
             last_step: 0.0,
+            point_mass: vec![Mat3::zeros(); points],
+            point_force: vec![Vec3::zeros(); points],
         }
     }
 
@@ -88,14 +95,27 @@ impl ThreeLevel {
         2
     }
 
-    /// Node accelerations from an assembled workspace, into `out` (position entries).
+    /// Node accelerations from an assembled workspace into `out` (position entries):
+    /// predictor with the row-sum masses, corrector with the neighbours' `predicted`
+    /// accelerations.
     fn accelerations(
+        &mut self,
         system: &System,
         ws: &Workspace,
         stage: Stage,
-        predicted: &[Real],
-        out: &mut [Real],
     ) -> Result<(), Location> {
+        let Self {
+            predicted,
+            accelerations,
+            point_mass,
+            point_force,
+            ..
+        } = self;
+        // The predictor writes ã and reads no neighbour; the corrector reads ã, writes â.
+        let (out, predicted): (&mut [Real], &[Real]) = match stage {
+            Stage::Predictor => (predicted, &[]),
+            Stage::Corrector => (accelerations, predicted),
+        };
         let neighbour = |li: usize, node: usize| -> Vec3 {
             let l = &system.lines[li];
             let n = l.fe.elements();
@@ -109,6 +129,8 @@ impl ThreeLevel {
                 get3(&predicted[system.layout.line_offset[li]..], node - 1)
             }
         };
+        point_mass.copy_from_slice(&ws.coupled.point_diag);
+        point_force.copy_from_slice(&ws.coupled.point_x);
         for (li, l) in system.lines.iter().enumerate() {
             let n = l.fe.elements();
             let o = system.layout.line_offset[li];
@@ -130,32 +152,23 @@ impl ThreeLevel {
                 })?;
                 set3(&mut out[o..], i - 1, &a);
             }
-        }
-        for (fi, &p) in system.free_points.iter().enumerate() {
-            let mut mass = ws.coupled.point_diag[fi];
-            let mut force = ws.coupled.point_x[fi];
-            for (li, l) in system.lines.iter().enumerate() {
-                let n = l.fe.elements();
-                let b = &ws.blocks[li];
-                let f = &ws.lines[li].force;
-                if l.end_a == p {
-                    mass += b.diag[0];
-                    force += f[0];
+            // The ends on free points: their blocks join the point's equation.
+            for (kind, end, inner, coupling) in [
+                (b.end_a, 0, 1, &b.upper[0]),
+                (b.end_b, n, n - 1, &b.lower[n - 1]),
+            ] {
+                if let EndKind::Free(fi) = kind {
+                    point_mass[fi] += b.diag[end];
+                    point_force[fi] += f[end];
                     match stage {
-                        Stage::Predictor => mass += b.upper[0],
-                        Stage::Corrector => force -= b.upper[0] * neighbour(li, 1),
-                    }
-                }
-                if l.end_b == p {
-                    mass += b.diag[n];
-                    force += f[n];
-                    match stage {
-                        Stage::Predictor => mass += b.lower[n - 1],
-                        Stage::Corrector => force -= b.lower[n - 1] * neighbour(li, n - 1),
+                        Stage::Predictor => point_mass[fi] += coupling,
+                        Stage::Corrector => point_force[fi] -= coupling * neighbour(li, inner),
                     }
                 }
             }
-            let a = solve3(&mass, &force).ok_or_else(|| Location {
+        }
+        for (fi, &p) in system.free_points.iter().enumerate() {
+            let a = solve3(&point_mass[fi], &point_force[fi]).ok_or_else(|| Location {
                 object: system.points[p].name.clone(),
                 node: 0,
             })?;
@@ -167,20 +180,19 @@ impl ThreeLevel {
 
     /// Applies e^{n+1} = (a + C_t1 e^n − C_t0 e^{n−1}) / C_t2 to every position entry of `y`
     /// (level n) into `next`, and the velocity estimate at n+1 into its velocity entries.
-    #[allow(clippy::too_many_arguments)]
     fn advance(
         system: &System,
-        y: &[Real],
-        previous: &[Real],
+        levels: (&[Real], &[Real]),
         acc: &[Real],
-        dt_n: Real,
-        dt: Real,
+        steps: (Real, Real),
         next: &mut [Real],
     ) {
+        let (y, previous) = levels;
+        let (dt_n, dt) = steps;
         let c0 = 2.0 / ((dt_n + dt) * dt_n);
         let c1 = 2.0 / (dt * dt_n);
         let c2 = 2.0 / ((dt_n + dt) * dt);
-        let mut apply = |o: usize, count: usize| {
+        for (o, count) in system.layout.blocks() {
             for i in 0..count {
                 let e = get3(&y[o..], i);
                 let a = get3(&acc[o..], i);
@@ -192,15 +204,6 @@ impl ThreeLevel {
                     &((en - e) / dt + a * (0.5 * dt)),
                 );
             }
-        };
-        for (li, _) in system.lines.iter().enumerate() {
-            apply(
-                system.layout.line_offset[li],
-                system.layout.line_interior[li],
-            );
-        }
-        for &p in &system.free_points {
-            apply(system.layout.point_offset[p].expect("free point"), 1);
         }
     }
 
@@ -215,58 +218,40 @@ impl ThreeLevel {
     ) -> Result<(), Location> {
         // Level n: forces and masses, predictor accelerations.
         system.assemble(t, y, ws);
-        Self::accelerations(system, ws, Stage::Predictor, &[], &mut self.predicted)?;
+        self.accelerations(system, ws, Stage::Predictor)?;
         if self.last_step == 0.0 {
             // Taylor start: e^{-1} = e^0 − Δt v^0 + ½Δt² a^0, with Δt_0 = Δt.
             self.previous.copy_from_slice(y);
-            let start = |o: usize, count: usize, prev: &mut [Real], acc: &[Real]| {
+            for (o, count) in system.layout.blocks() {
                 for i in 0..count {
                     let e = get3(&y[o..], i);
                     let v = get3(&y[o + 3 * count..], i);
-                    let a = get3(&acc[o..], i);
-                    set3(&mut prev[o..], i, &(e - v * dt + a * (0.5 * dt * dt)));
+                    let a = get3(&self.predicted[o..], i);
+                    set3(
+                        &mut self.previous[o..],
+                        i,
+                        &(e - v * dt + a * (0.5 * dt * dt)),
+                    );
                 }
-            };
-            for (li, _) in system.lines.iter().enumerate() {
-                start(
-                    system.layout.line_offset[li],
-                    system.layout.line_interior[li],
-                    &mut self.previous,
-                    &self.predicted,
-                );
-            }
-            for &p in &system.free_points {
-                let o = system.layout.point_offset[p].expect("free point");
-                start(o, 1, &mut self.previous, &self.predicted);
             }
             self.last_step = dt;
         }
-        let dt_n = self.last_step;
+        let steps = (self.last_step, dt);
         Self::advance(
             system,
-            y,
-            &self.previous,
+            (y, &self.previous),
             &self.predicted,
-            dt_n,
-            dt,
+            steps,
             &mut self.trial,
         );
         // Level n+1 predicted: forces there, corrector accelerations.
         system.assemble(t + dt, &self.trial, ws);
-        Self::accelerations(
-            system,
-            ws,
-            Stage::Corrector,
-            &self.predicted,
-            &mut self.accelerations,
-        )?;
+        self.accelerations(system, ws, Stage::Corrector)?;
         Self::advance(
             system,
-            y,
-            &self.previous,
+            (y, &self.previous),
             &self.accelerations,
-            dt_n,
-            dt,
+            steps,
             &mut self.trial,
         );
         // Shift levels: n − 1 ← n, n ← n + 1.

@@ -523,12 +523,8 @@ pub fn solve(
 
 /// Sets every velocity entry of the state to zero.
 pub fn zero_velocities(system: &System, y: &mut [Real]) {
-    for (li, &m) in system.layout.line_interior.iter().enumerate() {
-        let o = system.layout.line_offset[li];
+    for (o, m) in system.layout.blocks() {
         y[o + 3 * m..o + 6 * m].iter_mut().for_each(|v| *v = 0.0);
-    }
-    for o in system.layout.point_offset.iter().flatten() {
-        y[o + 3..o + 6].iter_mut().for_each(|v| *v = 0.0);
     }
 }
 

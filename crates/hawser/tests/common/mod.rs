@@ -301,3 +301,72 @@ pub fn taut_string(
     model.environment = vacuum_environment(0.0);
     model
 }
+
+/// The hanging mass of tests/mass_spring.rs: a 100 kg point mass in a vacuum at the end of a
+/// 10 m line of 20 elements (γ0 = 1 kg/m, EA = 1e6 N) fixed at z = 20 m, gravity on.
+pub mod hanging_mass {
+    use super::*;
+    use hawser::system::System;
+
+    /// Line length [m].
+    pub const LENGTH: Real = 10.0;
+    /// Elements.
+    pub const ELEMENTS: usize = 20;
+    /// Mass per length [kg/m].
+    pub const GAMMA: Real = 1.0;
+    /// Axial stiffness [N].
+    pub const EA: Real = 1.0e6;
+    /// The hanging mass [kg].
+    pub const MASS: Real = 100.0;
+    /// Gravity [m/s²].
+    pub const G: Real = 9.80665;
+
+    /// The model with the given mass matrix.
+    pub fn model(mass_matrix: MassMatrix) -> Model {
+        let top = Vec3::new(0.0, 0.0, 20.0);
+        let mut model = single_line(
+            dry_line_type(0.02, GAMMA, EA),
+            LENGTH,
+            ELEMENTS,
+            fixed("top", top),
+            free("mass", top - Vec3::new(0.0, 0.0, LENGTH), MASS, 0.0),
+            mass_matrix,
+        );
+        model.environment = vacuum_environment(G);
+        model
+    }
+
+    /// The static equilibrium displaced downward by `amplitude` [m] at the mass, linearly in
+    /// s (the shape of the fundamental), at rest; and the mass's equilibrium height [m].
+    ///
+    /// Element e (from the top) carries the weight below its midpoint,
+    /// T_e = m g + γ0 g (L − (e + ½) L0) (exact for the lumped and consistent weight alike).
+    pub fn displaced_state(system: &System, amplitude: Real) -> (Vec<Real>, Real) {
+        let l0 = LENGTH / ELEMENTS as Real;
+        let mut y = system.straight_state();
+        let mut z = 20.0;
+        for e in 0..ELEMENTS {
+            let tension = MASS * G + GAMMA * G * (LENGTH - (e as Real + 0.5) * l0);
+            z -= l0 * (1.0 + tension / EA);
+            let s = (e + 1) as Real * l0;
+            let displaced = Vec3::new(0.0, 0.0, z - amplitude * s / LENGTH);
+            set_node_state(system, &mut y, 0, e + 1, displaced, Vec3::zeros());
+        }
+        (y, z)
+    }
+
+    /// Root of β tan β = μ in (0, π/2) by bisection: the fundamental of the rod with an end
+    /// mass is ω = β c/L, μ = γ0 L/m, c = √(EA/γ0).
+    pub fn rod_beta(mu: Real) -> Real {
+        let (mut lo, mut hi) = (0.0, std::f64::consts::FRAC_PI_2 - 1e-12);
+        for _ in 0..200 {
+            let mid = 0.5 * (lo + hi);
+            if mid * mid.tan() < mu {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        0.5 * (lo + hi)
+    }
+}
