@@ -236,6 +236,17 @@ fn convert(file: &Path, out: Option<&Path>, deck: &DeckArgs) -> Result<ExitCode>
     Ok(ExitCode::SUCCESS)
 }
 
+/// A MoorDyn deck's `dtM` above hawser's stability limit, as (dtM, limit, its cause) [s]. Its
+/// step was chosen for MoorDyn's integrator, so hawser takes its automatic step instead of
+/// refusing the deck as it refuses such a step in a hawser scenario.
+fn deck_step_above_limit(loaded: &LoadedScenario, system: &System) -> Option<(Real, Real, String)> {
+    let TimeStep::Fixed(dt) = loaded.model.settings.time_step else {
+        return None;
+    };
+    let (limit, culprit) = system.stable_step(loaded.model.settings.scheme);
+    (loaded.format == InputFormat::MoorDyn && dt > limit).then_some((dt, limit, culprit))
+}
+
 fn system_of(model: &Model) -> Result<System> {
     System::new(model).context("the model is invalid")
 }
@@ -318,17 +329,14 @@ fn run(
         return Ok(ExitCode::from(2));
     }
     let system = system_of(&loaded.model)?;
-    if loaded.format == InputFormat::MoorDyn
-        && let TimeStep::Fixed(dt) = loaded.model.settings.time_step
+    if let Some((dt, limit, culprit)) = deck_step_above_limit(&loaded, &system)
+        && !allow_unstable_step
     {
-        let (limit, culprit) = system.stable_step(loaded.model.settings.scheme);
-        if dt > limit && !allow_unstable_step {
-            eprintln!(
-                "warning: the deck's dtM = {dt} s is above hawser's stability limit {limit:.4e} s \
-                 (set by {culprit}); using time_step = \"auto\""
-            );
-            loaded.model.settings.time_step = TimeStep::Auto;
-        }
+        eprintln!(
+            "warning: the deck's dtM = {dt} s is above hawser's stability limit {limit:.4e} s \
+             (set by {culprit}); using time_step = \"auto\""
+        );
+        loaded.model.settings.time_step = TimeStep::Auto;
     }
     let model = &loaded.model;
     let t0 = Instant::now();
@@ -510,23 +518,21 @@ fn check(file: &Path, deck: &DeckArgs) -> Result<ExitCode> {
     let model = &loaded.model;
     let system = system_of(model)?;
     let (limit, culprit) = system.stable_step(model.settings.scheme);
-    if let hawser::model::TimeStep::Fixed(dt) = model.settings.time_step
+    if let Some((dt, limit, culprit)) = deck_step_above_limit(&loaded, &system) {
+        eprintln!(
+            "warning: the deck's dtM = {dt} s is above hawser's stability limit {limit:.4e} s \
+             ({culprit}); `hawser run` will use time_step = \"auto\""
+        );
+    } else if let TimeStep::Fixed(dt) = model.settings.time_step
         && dt > limit
     {
-        if loaded.format == InputFormat::MoorDyn {
-            eprintln!(
-                "warning: the deck's dtM = {dt} s is above hawser's stability limit {limit:.4e} s \
-                 ({culprit}); `hawser run` will use time_step = \"auto\""
-            );
-        } else {
-            let e = SimulationError::StepTooLarge {
-                step: dt,
-                limit,
-                culprit,
-            };
-            eprintln!("{}", step_error(file, &loaded, &e));
-            return Ok(ExitCode::from(2));
-        }
+        let e = SimulationError::StepTooLarge {
+            step: dt,
+            limit,
+            culprit,
+        };
+        eprintln!("{}", step_error(file, &loaded, &e));
+        return Ok(ExitCode::from(2));
     }
     let nodes: usize = system.lines.iter().map(|l| l.fe.elements() + 1).sum();
     out!(

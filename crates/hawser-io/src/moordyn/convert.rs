@@ -17,7 +17,7 @@
 //! reported in the deck's words.
 
 use super::deck::{Deck, Row, Section, SectionKind, Token};
-use crate::scenario::diagnostics::closest;
+use crate::scenario::diagnostics::{closest, line_number};
 use crate::scenario::schema::*;
 use crate::scenario::{Diagnostic, ScenarioError};
 use std::ops::Range;
@@ -144,11 +144,7 @@ impl<'a> Converter<'a> {
     }
 
     fn line_of(&self, span: &Range<usize>) -> usize {
-        self.source.as_bytes()[..span.start.min(self.source.len())]
-            .iter()
-            .filter(|&&c| c == b'\n')
-            .count()
-            + 1
+        line_number(self.source, span.start)
     }
 
     /// A number from a table cell, or an error naming the section and column.
@@ -311,13 +307,14 @@ pub fn convert(
         Some(s) => convert_line_types(&mut c, s, dir),
         None => Vec::new(),
     };
+    let vessel = options.vessel_motion.as_deref().map(VesselFile::read);
     let option_rows = deck
         .section(SectionKind::Options)
         .map(|s| s.rows.as_slice())
         .unwrap_or(&[]);
     let opts = read_options(&mut c, option_rows);
     let (points, coupled) = match deck.section(SectionKind::Points) {
-        Some(s) => convert_points(&mut c, s, options),
+        Some(s) => convert_points(&mut c, s, vessel.as_ref()),
         None => (Vec::new(), 0),
     };
     let (lines, line_outputs) = match deck.section(SectionKind::Lines) {
@@ -336,7 +333,15 @@ pub fn convert(
         _ => Vec::new(),
     };
     let environment = environment_of(&mut c, &opts, dir, &points);
-    let simulation = simulation_of(&mut c, &opts, options, channels, line_outputs, coupled);
+    let simulation = simulation_of(
+        &mut c,
+        &opts,
+        options.duration,
+        vessel.as_ref().and_then(|v| v.duration),
+        channels,
+        line_outputs,
+        coupled,
+    );
     if !c.errors.is_empty() {
         c.errors.sort_by_key(|d| (d.line, d.column));
         return Err(ScenarioError {
@@ -588,18 +593,11 @@ fn line_name(id: &str) -> String {
 fn convert_points(
     c: &mut Converter,
     s: &Section,
-    options: &ConvertOptions,
+    vessel: Option<&VesselFile>,
 ) -> (Vec<PointSpec>, usize) {
     const S: &str = "POINTS";
     let mut out = Vec::new();
     let mut coupled = 0;
-    let vessel_file = options.vessel_motion.as_ref().map(|p| {
-        if p.is_absolute() {
-            p.clone()
-        } else {
-            std::env::current_dir().unwrap_or_default().join(p)
-        }
-    });
     for row in &s.rows {
         let with_force = row.tokens.len() >= POINT_COLUMNS_WITH_FORCE.len();
         let columns = if with_force {
@@ -718,7 +716,7 @@ fn convert_points(
             MotionSpec {
                 kind: spanned(
                     &word,
-                    if vessel_file.is_some() {
+                    if vessel.is_some() {
                         MotionKind::VesselMotion
                     } else {
                         MotionKind::Fixed
@@ -733,12 +731,8 @@ fn convert_points(
                 radius: None,
                 plane: None,
                 table: None,
-                file: vessel_file
-                    .as_ref()
-                    .map(|p| spanned(&word, p.display().to_string())),
-                time_offset: vessel_file
-                    .as_ref()
-                    .map(|p| spanned(&word, vessel_time_offset(p))),
+                file: vessel.map(|v| spanned(&word, v.path.display().to_string())),
+                time_offset: vessel.map(|v| spanned(&word, v.time_offset)),
             }
         });
         out.push(PointSpec {
@@ -756,19 +750,32 @@ fn convert_points(
     (out, coupled)
 }
 
-/// The offset that puts the first row of a vessel motion file at t = 0 (0 if unreadable;
-/// validation then reports the file).
-fn vessel_time_offset(path: &Path) -> f64 {
-    crate::scenario::build::read_table::<7>(path, "")
-        .ok()
-        .and_then(|rows| rows.first().map(|r| -r[0]))
-        .unwrap_or(0.0)
+/// The vessel motion file of [`ConvertOptions`], read once.
+struct VesselFile {
+    /// Absolute path (a relative one is relative to the working directory).
+    path: PathBuf,
+    /// The offset that puts its first row at t = 0 (0 if unreadable: validation then reports
+    /// the file).
+    time_offset: f64,
+    /// Its length after that shift [s], if readable.
+    duration: Option<f64>,
 }
 
-/// The end time of a vessel motion file after its shift to t = 0.
-fn vessel_duration(path: &Path) -> Option<f64> {
-    let rows = crate::scenario::build::read_table::<7>(path, "").ok()?;
-    Some(rows.last()?[0] - rows.first()?[0])
+impl VesselFile {
+    fn read(path: &Path) -> Self {
+        let path = if path.is_absolute() {
+            path.to_path_buf()
+        } else {
+            std::env::current_dir().unwrap_or_default().join(path)
+        };
+        let rows = crate::scenario::build::read_table::<7>(&path, "").unwrap_or_default();
+        let (first, last) = (rows.first().map(|r| r[0]), rows.last().map(|r| r[0]));
+        Self {
+            time_offset: first.map(|t| -t).unwrap_or(0.0),
+            duration: first.zip(last).map(|(a, b)| b - a),
+            path,
+        }
+    }
 }
 
 fn convert_lines(c: &mut Converter, s: &Section, points: &[PointSpec]) -> (Vec<LineSpec>, bool) {
@@ -942,8 +949,8 @@ const USED_OPTIONS: &[&str] = &[
     "seafloorfile",
 ];
 
-/// MoorDyn's initial-condition controls: hawser solves statics by Newton instead.
-const IC_OPTIONS: &[(&[&str], &str)] = &[
+/// Options read but without effect in hawser, and the note that follows the option's name.
+const NOTED_OPTIONS: &[(&[&str], &str)] = &[
     (
         &[
             "dtic",
@@ -957,36 +964,45 @@ const IC_OPTIONS: &[(&[&str], &str)] = &[
             "icgendynamic",
             "gendynamicic",
         ],
-        "initial-condition control",
+        " (initial-condition control) is not used: hawser starts from its Newton static \
+         equilibrium, the state MoorDyn's initial-condition solver approximates",
     ),
-    (&["fileic", "icfile", "inputic"], "initial-condition file"),
-];
-
-/// Options without effect in hawser, and why.
-const NO_EFFECT_OPTIONS: &[(&[&str], &str)] = &[
-    (&["writelog"], "hawser reports on the terminal"),
+    (
+        &["fileic", "icfile", "inputic"],
+        " (initial-condition file) is not used: hawser starts from its Newton static \
+         equilibrium, the state MoorDyn's initial-condition solver approximates",
+    ),
+    (
+        &["writelog"],
+        " has no effect: hawser reports on the terminal",
+    ),
     (
         &["writeunits"],
-        "hawser's column headers always carry units",
+        " has no effect: hawser's column headers always carry units",
     ),
     (
         &["disableoutput", "disableouttime"],
-        "hawser always writes its results and reports progress",
+        " has no effect: hawser always writes its results and reports progress",
     ),
-    (&["echo"], "hawser prints conversion notes instead"),
-    (&["dtwave", "wavekin_rampt"], "waves are off (WaveKin 0)"),
+    (
+        &["echo"],
+        " has no effect: hawser prints conversion notes instead",
+    ),
+    (
+        &["dtwave", "wavekin_rampt"],
+        " has no effect: waves are off (WaveKin 0)",
+    ),
     (
         &["unifycurrentgrid"],
-        "the current profile is used as given",
+        " has no effect: the current profile is used as given",
     ),
 ];
 
 /// Every option name hawser knows.
 fn known_options() -> impl Iterator<Item = &'static str> {
     USED_OPTIONS.iter().copied().chain(
-        IC_OPTIONS
+        NOTED_OPTIONS
             .iter()
-            .chain(NO_EFFECT_OPTIONS)
             .flat_map(|(names, _)| names.iter().copied()),
     )
 }
@@ -1218,7 +1234,8 @@ fn current_profile(c: &mut Converter, t: &Token, row: &Row, dir: &Path) -> Optio
 fn simulation_of(
     c: &mut Converter,
     o: &Options,
-    options: &ConvertOptions,
+    duration: Option<f64>,
+    vessel_end: Option<f64>,
     channels: Vec<Spanned<String>>,
     line_outputs: bool,
     coupled: usize,
@@ -1272,36 +1289,16 @@ fn simulation_of(
             c.note(row.line, "dtOut 0: a sample every time step");
         }
     }
-    for (names, what) in IC_OPTIONS {
+    for (names, note) in NOTED_OPTIONS {
         for (_, _, row) in o
             .rows
             .iter()
             .filter(|(n, _, _)| names.contains(&n.as_str()))
         {
-            c.note(
-                row.line,
-                format!(
-                    "{} ({what}) is not used: hawser starts from its Newton static equilibrium, \
-                     the state MoorDyn's initial-condition solver approximates",
-                    row.tokens[1].text
-                ),
-            );
+            c.note(row.line, format!("{}{note}", row.tokens[1].text));
         }
     }
-    for (names, why) in NO_EFFECT_OPTIONS {
-        for (_, _, row) in o
-            .rows
-            .iter()
-            .filter(|(n, _, _)| names.contains(&n.as_str()))
-        {
-            c.note(
-                row.line,
-                format!("{} has no effect: {why}", row.tokens[1].text),
-            );
-        }
-    }
-    let vessel_end = options.vessel_motion.as_deref().and_then(vessel_duration);
-    let duration = match (options.duration, vessel_end) {
+    let duration = match (duration, vessel_end) {
         (Some(d), _) => d,
         (None, Some(d)) if coupled > 0 => d,
         _ => {

@@ -1,7 +1,7 @@
 //! Validation of a parsed scenario and its conversion into a [`hawser::Model`].
 //! Every problem is collected (not just the first) with its file position.
 
-use super::diagnostics::{Diagnostic, ScenarioError, closest};
+use super::diagnostics::{Diagnostic, ScenarioError, closest, line_number};
 use super::schema::*;
 use crate::results::OutputChannel;
 use hawser::analysis::Channel;
@@ -76,12 +76,7 @@ impl<'a> Builder<'a> {
 
     /// 1-based line of a byte offset, for "first defined on line N" hints.
     fn line_of(&self, span: Range<usize>) -> usize {
-        let end = span.start.min(self.source.len());
-        self.source.as_bytes()[..end]
-            .iter()
-            .filter(|&&c| c == b'\n')
-            .count()
-            + 1
+        line_number(self.source, span.start)
     }
 
     /// Checks a number is finite and in range; returns it (or a harmless default on error).
@@ -298,14 +293,7 @@ fn toml_error(file: &Path, source: &str, e: &toml::de::Error) -> Diagnostic {
         })
         .unwrap_or_default();
     let in_array = matches!(at.path.last(), Some(Step::Index(_)));
-    let line_of = |offset: usize| {
-        let end = offset.min(source.len());
-        source.as_bytes()[..end]
-            .iter()
-            .filter(|&&c| c == b'\n')
-            .count()
-            + 1
-    };
+    let line_of = |offset: usize| line_number(source, offset);
     let one_of = |known: &[&str]| {
         let list: Vec<String> = known.iter().map(|q| format!("`{q}`")).collect();
         format!("one of {}", list.join(", "))

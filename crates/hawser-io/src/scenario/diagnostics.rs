@@ -82,10 +82,20 @@ impl Diagnostic {
     }
 }
 
+/// 1-based line of a byte offset in `source` (clamped to its end).
+pub fn line_number(source: &str, offset: usize) -> usize {
+    let end = offset.min(source.len());
+    source.as_bytes()[..end]
+        .iter()
+        .filter(|&&c| c == b'\n')
+        .count()
+        + 1
+}
+
 fn locate(source: &str, offset: usize) -> (usize, usize, String) {
     let offset = offset.min(source.len());
     let before = &source[..offset];
-    let line = before.matches('\n').count() + 1;
+    let line = line_number(source, offset);
     let start = before.rfind('\n').map(|i| i + 1).unwrap_or(0);
     let column = source[start..offset].chars().count() + 1;
     let end = source[start..]
