@@ -21,11 +21,17 @@ fn deck_step_above_the_limit_falls_back_to_auto() {
             .args(args)
             .output()
             .unwrap();
-        (out.status.code(), String::from_utf8_lossy(&out.stderr).to_string())
+        (
+            out.status.code(),
+            String::from_utf8_lossy(&out.stderr).to_string(),
+        )
     };
     let (code, stderr) = run(&["check", deck.to_str().unwrap()]);
     assert_eq!(code, Some(0), "{stderr}");
-    assert!(stderr.contains("dtM = 0.05 s is above hawser's stability limit"), "{stderr}");
+    assert!(
+        stderr.contains("dtM = 0.05 s is above hawser's stability limit"),
+        "{stderr}"
+    );
     let out = dir.join("out");
     let (code, stderr) = run(&[
         "run",

@@ -104,3 +104,51 @@ fn an_orbit_accepts_a_period_and_refuses_per_axis_values() {
         "{e}"
     );
 }
+
+/// A point on a vessel follows r = X + R r0 with R = R_z(yaw) R_y(pitch) R_x(roll) about the
+/// vessel origin: a quarter turn of each angle moves the unit vectors as right-handed rotations
+/// do, the displacement adds, and times shift by the offset.
+#[test]
+fn vessel_motion_rotates_points_about_the_vessel_origin() {
+    use hawser::math::Vec3;
+    use hawser_io::scenario::build::vessel_point_motion;
+    let at = |row: [f64; 7], r0: Vec3| {
+        let m = vessel_point_motion(&[row], r0, 5.0);
+        let (p, _, _) = m.kinematics(5.0);
+        p
+    };
+    let close = |a: Vec3, b: Vec3| (a - b).norm() < 1e-12;
+    // yaw 90°: x → y
+    assert!(close(
+        at([0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 90.0], Vec3::x()),
+        Vec3::y()
+    ));
+    // pitch 90°: x → −z (nose down for a positive pitch about y)
+    assert!(close(
+        at([0.0, 0.0, 0.0, 0.0, 0.0, 90.0, 0.0], Vec3::x()),
+        -Vec3::z()
+    ));
+    // roll 90°: y → z
+    assert!(close(
+        at([0.0, 0.0, 0.0, 0.0, 90.0, 0.0, 0.0], Vec3::y()),
+        Vec3::z()
+    ));
+    // the displacement adds; yaw then applies to the body point
+    assert!(close(
+        at(
+            [0.0, 1.0, 2.0, 3.0, 0.0, 0.0, 180.0],
+            Vec3::new(1.0, 0.0, -1.0)
+        ),
+        Vec3::new(0.0, 2.0, 2.0)
+    ));
+    // roll, pitch, yaw compose as R_z R_y R_x: (0, 90, 90) takes x to −z, then yaw leaves z.
+    assert!(close(
+        at([0.0, 0.0, 0.0, 0.0, 0.0, 90.0, 90.0], Vec3::x()),
+        -Vec3::z()
+    ));
+    // and y: R_x(0) y = y, R_y(90) y = y, R_z(90) y = −x
+    assert!(close(
+        at([0.0, 0.0, 0.0, 0.0, 0.0, 90.0, 90.0], Vec3::y()),
+        -Vec3::x()
+    ));
+}

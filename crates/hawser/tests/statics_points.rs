@@ -94,3 +94,41 @@ fn a_clump_weight_rests_on_the_seabed() {
         "bottom {bottom} vs {expected}"
     );
 }
+
+/// The point force channel is the net force of the attached lines on a point (MoorDyn's
+/// P#FX): at the static equilibrium of the hanging mass it balances the mass's own wet weight
+/// exactly, and at the anchor it is the line's pull, whose vertical part is the whole
+/// system's wet weight. Tolerances: at the mass, one node's statics residual (Newton stops at
+/// 1e-9 of the weight scale per unknown); at the anchor, the residuals of the line's six nodes
+/// add up, so 1e-8 of the weight.
+#[test]
+fn point_force_balances_the_hanging_mass_in_statics() {
+    use hawser::analysis::Channel;
+    use hawser::statics::evaluate;
+    let model = single_line(
+        line_type(0.02, 0.5, 1e6),
+        10.0,
+        5,
+        fixed("a", Vec3::new(0.0, 0.0, -10.0)),
+        free("b", Vec3::new(10.0, 0.0, -10.0), 5.0, 0.0),
+        MassMatrix::Lumped,
+    );
+    let system = System::new(&model).unwrap();
+    let sol = solve(&system, None, &StaticOptions::default()).unwrap();
+    let mut ws = system.workspace();
+    evaluate(&system, &sol.state, &mut ws);
+    let force = |point: usize| {
+        Vec3::from_fn(|axis, _| Channel::PointForce { point, axis }.value(&system, &ws))
+    };
+    let g = 9.80665;
+    let mass = 5.0 * g;
+    let rope = (0.5 - 1025.0 * std::f64::consts::PI * 0.02f64.powi(2) / 4.0) * 10.0 * g;
+    let on_mass = force(1);
+    assert!(on_mass.x.abs() < 1e-9 * mass && on_mass.y.abs() < 1e-9 * mass);
+    assert!((on_mass.z - mass).abs() < 1e-9 * mass, "{on_mass}");
+    let on_anchor = force(0);
+    assert!(
+        (on_anchor.z + mass + rope).abs() < 1e-8 * (mass + rope),
+        "{on_anchor}"
+    );
+}
