@@ -491,7 +491,7 @@ fn statics(file: &Path, json: bool) -> Result<ExitCode> {
     for (li, l) in system.lines.iter().enumerate() {
         let ta = system.end_force(&ws, li, false).norm();
         let tb = system.end_force(&ws, li, true).norm();
-        let tmax = (0..=l.fe.elements())
+        let tmax = (0..l.nodes())
             .map(|i| system.node_tension(&ws, li, i))
             .fold(0.0, Real::max);
         out!("{:<16} {:>14.2} {:>14.2} {:>14.2}", l.name, ta, tb, tmax);
@@ -534,7 +534,7 @@ fn check(file: &Path, deck: &DeckArgs) -> Result<ExitCode> {
         eprintln!("{}", step_error(file, &loaded, &e));
         return Ok(ExitCode::from(2));
     }
-    let nodes: usize = system.lines.iter().map(|l| l.fe.elements() + 1).sum();
+    let nodes: usize = system.lines.iter().map(|l| l.nodes()).sum();
     out!(
         "{}: ok — {} line(s), {} point(s), {} nodes; stable time step {:.4e} s ({})",
         file.display(),
@@ -602,7 +602,7 @@ fn bench(
         let start = Instant::now();
         sim.run(model.settings.duration, &mut Null)?;
         let wall = start.elapsed().as_secs_f64();
-        let nodes: usize = system.lines.iter().map(|l| l.fe.elements() + 1).sum();
+        let nodes: usize = system.lines.iter().map(|l| l.nodes()).sum();
         let steps = sim.steps_done();
         let node_steps = nodes as f64 * steps as f64 / wall;
         let evals = node_steps * sim.evaluations_per_step() as f64;

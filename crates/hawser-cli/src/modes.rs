@@ -390,10 +390,10 @@ fn write_files(
             "mode,node,arc_length [m],x [m],y [m],z [m],ux [-],uy [-],uz [-]"
         )?;
         for (k, m) in modes.modes.iter().enumerate() {
-            for node in 0..=l.fe.elements() {
-                let r = ws.lines[li].position[node];
+            for node in 0..l.nodes() {
+                let r = ws.lines[li].position[l.node_vector(node)];
                 let u = m.node_displacement(&lin.dofs, li, node) * scale[k];
-                let at = format!("{},{node},{}", k + 1, l.fe.arc_length(node));
+                let at = format!("{},{node},{}", k + 1, l.mesh.arc_length(node));
                 shape_row(&mut w, &at, &r, &u)?;
             }
         }

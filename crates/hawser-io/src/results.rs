@@ -141,7 +141,7 @@ impl RunWriter {
         for (li, l) in system.lines.iter().enumerate() {
             let lw = &ws.lines[li];
             self.detectors[li].push(time, &lw.elements.tension, &lw.elements.strain, |e| {
-                0.5 * (l.fe.arc_length(e) + l.fe.arc_length(e + 1))
+                0.5 * (l.mesh.arc_length(e) + l.mesh.arc_length(e + 1))
             });
         }
         if let Some(interval) = self.snapshot_interval
@@ -150,12 +150,13 @@ impl RunWriter {
             for (li, l) in system.lines.iter().enumerate() {
                 let w = &mut self.snapshots[li];
                 let lw = &ws.lines[li];
-                for (i, p) in lw.position.iter().enumerate() {
+                for i in 0..l.nodes() {
+                    let p = lw.position[l.node_vector(i)];
                     let t = system.node_tension(ws, li, i);
                     writeln!(
                         w,
                         "{time},{i},{},{},{},{},{t}",
-                        l.fe.arc_length(i) + 0.0,
+                        l.mesh.arc_length(i) + 0.0,
                         p.x,
                         p.y,
                         p.z
@@ -258,20 +259,42 @@ impl Observer for RunWriter {
 /// also the node velocities.
 fn line_json(system: &System, ws: &Workspace, li: usize, velocities: bool) -> Value {
     let lw = &ws.lines[li];
+    let line = &system.lines[li];
     let end = |b: bool| {
         let f = system.end_force(ws, li, b);
         json!({"tension": f.norm(), "force": [f.x, f.y, f.z]})
     };
+    let nodes = |v: &[hawser::math::Vec3]| {
+        (0..line.nodes())
+            .map(|i| {
+                let p = v[line.node_vector(i)];
+                [p.x, p.y, p.z]
+            })
+            .collect::<Vec<_>>()
+    };
     let mut v = json!({
-        "positions": lw.position.iter().map(|p| [p.x, p.y, p.z]).collect::<Vec<_>>(),
-        "tension": (0..=system.lines[li].fe.elements()).map(|i| system.node_tension(ws, li, i)).collect::<Vec<_>>(),
+        "positions": nodes(&lw.position),
+        "tension": (0..line.nodes()).map(|i| system.node_tension(ws, li, i)).collect::<Vec<_>>(),
         "end_a": end(false),
         "end_b": end(true),
     });
+    if matches!(line.kind, hawser::formulation::LineKind::Hermite(_)) {
+        let n = line.mesh.elements();
+        v["tangents"] = json!(
+            (0..=n)
+                .map(|i| {
+                    let t = lw.position[hawser::formulation::hermite::vector_index(i, true, n)];
+                    [t.x, t.y, t.z]
+                })
+                .collect::<Vec<_>>()
+        );
+        v["bending_moment"] = json!(lw.elements.bending_moment);
+        v["curvature"] = json!(lw.elements.curvature);
+    }
     if velocities {
         v["velocities"] = json!(
-            lw.velocity
-                .iter()
+            (0..line.nodes())
+                .map(|i| lw.velocity[line.node_vector(i)])
                 .map(|p| [p.x, p.y, p.z])
                 .collect::<Vec<_>>()
         );

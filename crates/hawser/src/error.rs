@@ -99,6 +99,19 @@ pub enum StaticsError {
 /// A modal analysis that failed.
 #[derive(Debug, thiserror::Error, Clone, PartialEq)]
 pub enum ModalError {
+    /// A line uses a formulation whose modes are not labelled yet.
+    #[error(
+        "line `{line}` uses the `{formulation}` formulation; natural modes are available for \
+         `fe` lines only in this version; hint: run `modes` on the same scenario with \
+         `formulation = \"fe\"` (the static state and frequencies agree within their \
+         discretisation errors)"
+    )]
+    Unsupported {
+        /// Line name.
+        line: String,
+        /// Formulation name.
+        formulation: &'static str,
+    },
     /// Nothing can move: every line end is fixed or prescribed and no line has interior nodes.
     #[error(
         "the system has no degrees of freedom (no interior line nodes and no free points); \

@@ -21,7 +21,7 @@
 //! body sees: K₆ = Σ_pq T_pᵀ K_pq T_q + the geometric term of the fairlead forces, with
 //! T_p = [I  −[r_p×]] for the body-fixed fairlead offset r_p.
 
-use crate::formulation::fe::{LoadOptions, line_forces};
+use crate::formulation::{LoadOptions, line_forces};
 use crate::linalg::{CoupledSystem, EndKind, LineBlocks, Singular};
 use crate::math::{Mat3, Real, Vec3, get3};
 use crate::system::{System, Workspace};
@@ -53,12 +53,7 @@ pub enum Difference {
 /// Finite-difference step [m] for positions of line `line`: a fraction of its shortest
 /// element.
 fn position_step(system: &System, line: usize, difference: Difference) -> Real {
-    let min_l0 = system.lines[line]
-        .fe
-        .sections
-        .iter()
-        .map(|s| s.element_length)
-        .fold(Real::INFINITY, Real::min);
+    let min_l0 = system.lines[line].mesh.shortest_element();
     match difference {
         Difference::Forward => 1e-6 * min_l0,
         Difference::Central => 4e-6 * min_l0,
@@ -100,7 +95,8 @@ pub(crate) fn line_forces_at_rest(
     for (li, l) in system.lines.iter().enumerate() {
         let lw = &mut ws.lines[li];
         line_forces(
-            &l.fe,
+            &l.mesh,
+            &l.kind,
             &system.environment,
             0.0,
             &lw.position,
@@ -119,8 +115,9 @@ pub(crate) fn line_forces_at_rest(
 /// `ws.coupled.point_diag` (the free points' own loads).
 ///
 /// `current_factor` scales the current seen by drag (statics load continuation; 1 otherwise).
-/// Every line's blocks are marked coupled. Three colours per line: nodes j ≡ c (mod 3) are
-/// perturbed together, since node j's force depends only on nodes j − 1, j, j + 1.
+/// Every line's blocks are marked coupled. 2w + 1 colours per line of block bandwidth w:
+/// vectors j ≡ c (mod 2w + 1) are perturbed together, since vector j moves only the forces of
+/// vectors j − w ..= j + w (w = 1 for `fe`: three colours; 3 for `hermite`).
 pub fn force_jacobian(
     system: &System,
     y: &[Real],
@@ -135,18 +132,23 @@ pub fn force_jacobian(
     let mut base: Vec<Vec3> = Vec::new();
     let mut plus: Vec<Vec3> = Vec::new();
     for (li, l) in system.lines.iter().enumerate() {
-        let n = l.fe.elements();
+        let n = l.vectors() - 1;
         let h = match variable {
             Variable::Position => position_step(system, li, difference),
             Variable::Velocity => VELOCITY_STEP,
         };
+        // Tangents (dimensionless) take the step per metre of the shortest element.
+        let tangent_scale = 1.0 / l.mesh.shortest_element();
+        let scale = |j: usize| if l.is_tangent(j) { tangent_scale } else { 1.0 };
         let blocks = &mut ws.blocks[li];
         blocks.coupled = true;
         blocks.clear();
+        let stride = 2 * blocks.width() + 1;
         let lw = &mut ws.lines[li];
         let evaluate = |lw: &mut crate::system::LineWork, out: &mut Vec<Vec3>| {
             line_forces(
-                &l.fe,
+                &l.mesh,
+                &l.kind,
                 env,
                 0.0,
                 &lw.position,
@@ -164,14 +166,14 @@ pub fn force_jacobian(
                 Variable::Position => &mut lw.position,
                 Variable::Velocity => &mut lw.velocity,
             };
-            for j in (colour..=n).step_by(3) {
-                v[j][k] += by;
+            for j in (colour..=n).step_by(stride) {
+                v[j][k] += by * scale(j);
             }
         };
         if difference == Difference::Forward {
             evaluate(lw, &mut base);
         }
-        for colour in 0..3.min(n + 1) {
+        for colour in 0..stride.min(n + 1) {
             for k in 0..3 {
                 shift(lw, colour, k, h);
                 evaluate(lw, &mut plus);
@@ -187,15 +189,11 @@ pub fn force_jacobian(
                         2.0 * h
                     }
                 };
-                for j in (colour..=n).step_by(3) {
-                    for r in 0..3 {
-                        blocks.diag[j][(r, k)] = (plus[j][r] - base[j][r]) / step;
-                        if j > 0 {
-                            blocks.upper[j - 1][(r, k)] = (plus[j - 1][r] - base[j - 1][r]) / step;
-                        }
-                        if j < n {
-                            blocks.lower[j][(r, k)] = (plus[j + 1][r] - base[j + 1][r]) / step;
-                        }
+                for j in (colour..=n).step_by(stride) {
+                    let step = step * scale(j);
+                    for i in blocks.band_of(j) {
+                        let column = (plus[i] - base[i]) / step;
+                        blocks.block_mut(i, j).set_column(k, &column);
                     }
                 }
             }
@@ -268,7 +266,7 @@ impl DofMap {
         let mut line_first = Vec::new();
         for (li, l) in system.lines.iter().enumerate() {
             line_first.push(owners.len());
-            for node in 1..l.fe.elements() {
+            for node in 1..l.vectors() - 1 {
                 owners.push(DofOwner::LineNode { line: li, node });
             }
         }
@@ -281,7 +279,7 @@ impl DofMap {
             owners,
             line_first,
             point_group,
-            line_nodes: system.lines.iter().map(|l| l.fe.elements() + 1).collect(),
+            line_nodes: system.lines.iter().map(|l| l.vectors()).collect(),
             line_ends: system.lines.iter().map(|l| (l.end_a, l.end_b)).collect(),
         }
     }
@@ -339,18 +337,10 @@ impl BlockMatrix {
                     continue;
                 };
                 let mut acc = Vec3::zeros();
-                if let Some(c) = map.node_group(li, i) {
-                    acc += b.diag[i] * at(c);
-                }
-                if i > 0
-                    && let Some(c) = map.node_group(li, i - 1)
-                {
-                    acc += b.lower[i - 1] * at(c);
-                }
-                if i < n
-                    && let Some(c) = map.node_group(li, i + 1)
-                {
-                    acc += b.upper[i] * at(c);
+                for j in b.band_of(i) {
+                    if let Some(c) = map.node_group(li, j) {
+                        acc += b.block(i, j) * at(c);
+                    }
                 }
                 crate::math::add3(y, row, &acc);
             }
@@ -380,16 +370,10 @@ impl BlockMatrix {
                 let Some(r) = map.node_group(li, i) else {
                     continue;
                 };
-                push(r, r, &b.diag[i]);
-                if i > 0
-                    && let Some(c) = map.node_group(li, i - 1)
-                {
-                    push(r, c, &b.lower[i - 1]);
-                }
-                if i < n
-                    && let Some(c) = map.node_group(li, i + 1)
-                {
-                    push(r, c, &b.upper[i]);
+                for j in b.band_of(i) {
+                    if let Some(c) = map.node_group(li, j) {
+                        push(r, c, &b.block(i, j));
+                    }
                 }
             }
         }
@@ -437,10 +421,12 @@ impl BlockMatrix {
             for d in b.diag.iter_mut() {
                 *d = (*d + d.transpose()) * 0.5;
             }
-            for (lo, up) in b.lower.iter_mut().zip(b.upper.iter_mut()) {
-                let m = (*lo + up.transpose()) * 0.5;
-                *lo = m;
-                *up = m.transpose();
+            for (below, above) in b.band_pairs_mut() {
+                for (lo, up) in below.iter_mut().zip(above.iter_mut()) {
+                    let m = (*lo + up.transpose()) * 0.5;
+                    *lo = m;
+                    *up = m.transpose();
+                }
             }
         }
         for m in s.points.iter_mut() {
@@ -459,9 +445,11 @@ impl BlockMatrix {
                 skew = skew.max((d - d.transpose()).abs().max());
                 size = size.max(d.abs().max());
             }
-            for (lo, up) in b.lower.iter().zip(b.upper.iter()) {
-                skew = skew.max((lo - up.transpose()).abs().max());
-                size = size.max(lo.abs().max()).max(up.abs().max());
+            for (below, above) in b.band_pairs() {
+                for (lo, up) in below.iter().zip(above.iter()) {
+                    skew = skew.max((lo - up.transpose()).abs().max());
+                    size = size.max(lo.abs().max()).max(up.abs().max());
+                }
             }
         }
         for m in &self.points {
@@ -475,13 +463,7 @@ impl BlockMatrix {
     pub fn shifted(&self, sigma: Real, b: &BlockMatrix) -> Self {
         let mut s = self.clone();
         for (sl, bl) in s.lines.iter_mut().zip(b.lines.iter()) {
-            for (x, y) in sl.diag.iter_mut().zip(bl.diag.iter()) {
-                *x -= y * sigma;
-            }
-            for (x, y) in sl.lower.iter_mut().zip(bl.lower.iter()) {
-                *x -= y * sigma;
-            }
-            for (x, y) in sl.upper.iter_mut().zip(bl.upper.iter()) {
+            for (x, y) in sl.blocks_mut().zip(bl.blocks()) {
                 *x -= y * sigma;
             }
             sl.coupled = true;
@@ -523,9 +505,7 @@ fn negated(lines: &[LineBlocks], points: &[Mat3]) -> BlockMatrix {
         points: points.to_vec(),
     };
     for b in m.lines.iter_mut() {
-        b.diag.iter_mut().for_each(|x| *x = -*x);
-        b.lower.iter_mut().for_each(|x| *x = -*x);
-        b.upper.iter_mut().for_each(|x| *x = -*x);
+        b.blocks_mut().for_each(|x| *x = -*x);
         b.coupled = true;
     }
     m.points.iter_mut().for_each(|x| *x = -*x);
@@ -722,13 +702,7 @@ pub fn connection_stiffness(
                         continue;
                     };
                     let k = &lin.stiffness.lines[li];
-                    let mut row = k.diag[node] * b.x[node];
-                    if node > 0 {
-                        row += k.lower[node - 1] * b.x[node - 1];
-                    }
-                    if node < n {
-                        row += k.upper[node] * b.x[node + 1];
-                    }
+                    let row = k.row_times(node, &b.x);
                     for r in 0..3 {
                         matrix[(3 * pi + r, 3 * qi + axis)] += row[r];
                     }

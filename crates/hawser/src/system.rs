@@ -1,24 +1,25 @@
 //! The assembled system: the model discretised for simulation, its state layout, and the
 //! right-hand side of the equations of motion.
 //!
-//! State layout (one contiguous `Vec<f64>`, see [`Layout`]): for every line, the positions of
-//! its interior nodes (3 per node) then their velocities; then for every free point its
+//! State layout (one contiguous `Vec<f64>`, see [`Layout`]): for every line, its interior
+//! 3-vector unknowns (positions of interior nodes for `fe`; positions and tangents for
+//! `hermite`, see [`crate::formulation`]) then their rates; then for every free point its
 //! position then its velocity. End nodes are not line state: they belong to the point they are
 //! attached to (fixed, prescribed, or free and then in the state).
 
 use crate::error::ModelError;
-use crate::formulation::fe::{ElementState, FeLine, LoadOptions, line_forces};
+use crate::formulation::{ElementState, LineKind, LoadOptions, Mesh, line_forces};
 use crate::linalg::{CoupledSystem, EndKind, LineBlocks, Singular};
 use crate::math::{Mat3, Real, Vec3, get3, set3};
-use crate::model::{LineEnd, Model, PointKind, Scheme};
+use crate::model::{Formulation, LineEnd, Model, PointKind, Scheme};
 use crate::physics::environment::Environment;
 
 /// Where each object's unknowns sit in the state vector.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Layout {
-    /// Offset of each line's block: 3·(N−1) positions then 3·(N−1) velocities.
+    /// Offset of each line's block: 3·m coordinates then 3·m rates.
     pub line_offset: Vec<usize>,
-    /// Interior node count N − 1 of each line.
+    /// Interior vector count m of each line (`fe`: N − 1 nodes; `hermite`: 2N).
     pub line_interior: Vec<usize>,
     /// Offset of each free point's block (position then velocity), `None` otherwise.
     pub point_offset: Vec<Option<usize>>,
@@ -43,12 +44,79 @@ impl Layout {
 pub struct SystemLine {
     /// Name.
     pub name: String,
-    /// Discretisation.
-    pub fe: FeLine,
+    /// Elements along the unstretched arc length.
+    pub mesh: Mesh,
+    /// Formulation and its options.
+    pub kind: LineKind,
     /// Point index of end A.
     pub end_a: usize,
     /// Point index of end B.
     pub end_b: usize,
+}
+
+impl SystemLine {
+    /// Number of 3-vector unknowns, ends included (`fe`: N + 1; `hermite`: 2N + 2).
+    #[inline]
+    pub fn vectors(&self) -> usize {
+        self.kind.vectors(self.mesh.elements())
+    }
+
+    /// Number of nodes N + 1.
+    #[inline]
+    pub fn nodes(&self) -> usize {
+        self.mesh.elements() + 1
+    }
+
+    /// Index of node i's position among the line's vectors (`LineWork::position`).
+    #[inline]
+    pub fn node_vector(&self, node: usize) -> usize {
+        self.kind.node_vector(node, self.mesh.elements())
+    }
+
+    /// Whether vector j is a tangent [-] rather than a position [m].
+    #[inline]
+    pub fn is_tangent(&self, j: usize) -> bool {
+        self.kind.is_tangent(j, self.mesh.elements())
+    }
+
+    /// Writes the coordinates of the line's interior vectors into its state block `y` (the
+    /// coordinates part) from the node positions `shape` (nodes 0..=N, ends included).
+    /// `hermite` tangents t = ∂r/∂s come from second-order finite differences over the
+    /// unstretched arc length (one-sided at the ends; exact for a straight line).
+    pub fn set_shape(&self, shape: &[Vec3], y: &mut [Real]) {
+        let n = self.mesh.elements();
+        match self.kind {
+            LineKind::Fe { .. } => {
+                for (i, r) in shape.iter().enumerate().take(n).skip(1) {
+                    set3(y, i - 1, r);
+                }
+            }
+            LineKind::Hermite(_) => {
+                use crate::formulation::hermite::vector_index;
+                let s: Vec<Real> = (0..=n).map(|i| self.mesh.arc_length(i)).collect();
+                for i in 0..=n {
+                    let t = if n == 1 {
+                        (shape[1] - shape[0]) / (s[1] - s[0])
+                    } else if i == 0 || i == n {
+                        // One-sided, second order, through the end and its two neighbours.
+                        let (a, b, c) = if i == 0 { (0, 1, 2) } else { (n, n - 1, n - 2) };
+                        let (h1, h2) = (s[b] - s[a], s[c] - s[b]);
+                        (shape[b] - shape[a]) * ((h1 + h2) / (h1 * h2))
+                            - (shape[c] - shape[a]) * (h1 / (h2 * (h1 + h2)))
+                    } else {
+                        let (h1, h2) = (s[i] - s[i - 1], s[i + 1] - s[i]);
+                        ((shape[i + 1] - shape[i]) * (h1 * h1)
+                            + (shape[i] - shape[i - 1]) * (h2 * h2))
+                            / (h1 * h2 * (h1 + h2))
+                    };
+                    set3(y, vector_index(i, true, n) - 1, &t);
+                    if i > 0 && i < n {
+                        set3(y, vector_index(i, false, n) - 1, &shape[i]);
+                    }
+                }
+            }
+        }
+    }
 }
 
 /// A point of the system.
@@ -162,16 +230,26 @@ impl System {
                 .iter()
                 .map(|s| (model.line_types[s.line_type].clone(), s.length, s.elements))
                 .collect();
-            let fe = FeLine::new(&sections, l.mass_matrix);
+            let mesh = Mesh::new(&sections);
+            let kind = match l.formulation {
+                Formulation::Fe => LineKind::Fe {
+                    mass_matrix: l.mass_matrix,
+                },
+                Formulation::Hermite => LineKind::Hermite(crate::formulation::HermiteOptions {
+                    strain: l.strain_measure,
+                }),
+                Formulation::Dg => unreachable!("refused by Model::validate"),
+            };
             let LineEnd::Point(end_a) = l.end_a;
             let LineEnd::Point(end_b) = l.end_b;
-            let interior = fe.elements() - 1;
+            let interior = kind.vectors(mesh.elements()) - 2;
             line_offset.push(len);
             line_interior.push(interior);
             len += 6 * interior;
             lines.push(SystemLine {
                 name: l.name.clone(),
-                fe,
+                mesh,
+                kind,
                 end_a,
                 end_b,
             });
@@ -205,11 +283,12 @@ impl System {
             .lines
             .iter()
             .map(|l| {
-                let n = l.fe.elements();
+                let n = l.mesh.elements();
+                let m = l.vectors();
                 LineWork {
-                    position: vec![Vec3::zeros(); n + 1],
-                    velocity: vec![Vec3::zeros(); n + 1],
-                    force: vec![Vec3::zeros(); n + 1],
+                    position: vec![Vec3::zeros(); m],
+                    velocity: vec![Vec3::zeros(); m],
+                    force: vec![Vec3::zeros(); m],
                     elements: ElementState::new(n),
                 }
             })
@@ -218,12 +297,12 @@ impl System {
             .lines
             .iter()
             .map(|l| {
-                let coupled = l.fe.mass_matrix == crate::model::MassMatrix::Consistent;
-                LineBlocks::new(
-                    l.fe.elements(),
+                LineBlocks::banded(
+                    l.vectors(),
+                    l.kind.bandwidth(),
                     end_kind(l.end_a),
                     end_kind(l.end_b),
-                    coupled,
+                    l.kind.consistent_mass(),
                 )
             })
             .collect();
@@ -246,12 +325,12 @@ impl System {
         for (li, l) in self.lines.iter().enumerate() {
             let a = self.points[l.end_a].position;
             let b = self.points[l.end_b].position;
-            let total = l.fe.arc_length(l.fe.elements());
+            let total = l.mesh.length();
             let o = self.layout.line_offset[li];
-            for i in 1..l.fe.elements() {
-                let s = l.fe.arc_length(i) / total;
-                set3(&mut y[o..], i - 1, &(a + (b - a) * s));
-            }
+            let shape: Vec<Vec3> = (0..=l.mesh.elements())
+                .map(|i| a + (b - a) * (l.mesh.arc_length(i) / total))
+                .collect();
+            l.set_shape(&shape, &mut y[o..]);
         }
         y
     }
@@ -287,7 +366,7 @@ impl System {
     /// Fills each line's node positions and velocities from the state and its ends.
     pub fn gather_lines(&self, y: &[Real], ws: &mut Workspace) {
         for (li, l) in self.lines.iter().enumerate() {
-            let n = l.fe.elements();
+            let n = l.vectors() - 1;
             let o = self.layout.line_offset[li];
             let m = self.layout.line_interior[li];
             let lw = &mut ws.lines[li];
@@ -362,7 +441,7 @@ impl System {
             let m = self.layout.line_interior[li];
             let lw = &ws.lines[li];
             let acc = &ws.blocks[li].x;
-            for i in 1..l.fe.elements() {
+            for i in 1..l.vectors() - 1 {
                 set3(&mut dydt[o..], i - 1, &lw.velocity[i]);
                 set3(&mut dydt[o + 3 * m..], i - 1, &acc[i]);
             }
@@ -392,7 +471,8 @@ impl System {
             let lw = &mut ws.lines[li];
             let blocks = &mut ws.blocks[li];
             line_forces(
-                &l.fe,
+                &l.mesh,
+                &l.kind,
                 &self.environment,
                 t,
                 &lw.position,
@@ -402,7 +482,7 @@ impl System {
                 Some(blocks),
                 options,
             );
-            let n = l.fe.elements();
+            let n = l.vectors() - 1;
             blocks.x.copy_from_slice(&lw.force);
             if blocks.end_a == EndKind::Known {
                 blocks.x[0] = ws.points[l.end_a].acceleration;
@@ -467,13 +547,10 @@ impl System {
     /// inertia of its share of the line's mass, F_end − (M_ee a_e + M_en a_n).
     pub fn end_force(&self, ws: &Workspace, line: usize, end_b: bool) -> Vec3 {
         let lw = &ws.lines[line];
-        let n = self.lines[line].fe.elements();
+        let n = self.lines[line].vectors() - 1;
         let b = &ws.blocks[line];
-        if end_b {
-            lw.force[n] - (b.diag[n] * b.x[n] + b.lower[n - 1] * b.x[n - 1])
-        } else {
-            lw.force[0] - (b.diag[0] * b.x[0] + b.upper[0] * b.x[1])
-        }
+        let node = if end_b { n } else { 0 };
+        lw.force[node] - b.row_times_x(node)
     }
 
     /// The time step of the elastic-link paper's condition Δt ≤ C_k l / c (eq. 48) over every
@@ -485,8 +562,8 @@ impl System {
         let mut best = (Real::INFINITY, 0, 0);
         for (li, l) in self.lines.iter().enumerate() {
             let el = &ws.lines[li].elements;
-            for (e, &k) in l.fe.element_section.iter().enumerate() {
-                let s = &l.fe.sections[k];
+            for (e, &k) in l.mesh.element_section.iter().enumerate() {
+                let s = &l.mesh.sections[k];
                 let gamma = s.line_type.mass_per_length;
                 let axial = s.law.stiffness.max_tangent() / gamma;
                 let transverse = el.tension[e].max(0.0) / gamma;
@@ -503,7 +580,7 @@ impl System {
     /// Tension [N] at node i of a line: the mean of its elements' tensions at interior nodes
     /// and the magnitude of the end force at the ends.
     pub fn node_tension(&self, ws: &Workspace, line: usize, node: usize) -> Real {
-        let n = self.lines[line].fe.elements();
+        let n = self.lines[line].mesh.elements();
         let t = &ws.lines[line].elements.tension;
         if node == 0 {
             self.end_force(ws, line, false).norm()
@@ -556,10 +633,16 @@ impl System {
         }
         let mut worst = 0.0;
         let mut culprit = String::from("nothing (no elements)");
+        let (lambda_axial, lambda_bending) =
+            crate::formulation::hermite::element_eigenvalue_bounds();
         for l in &self.lines {
-            let n = l.fe.elements();
-            let consistent = l.fe.mass_matrix == crate::model::MassMatrix::Consistent;
-            let mass_factor = if consistent { 1.0 / 3.0 } else { 1.0 };
+            let n = l.mesh.elements();
+            let hermite = matches!(l.kind, LineKind::Hermite(_));
+            let mass_factor = if l.kind.consistent_mass() {
+                1.0 / 3.0
+            } else {
+                1.0
+            };
             // Can this line touch the seabed? Its lowest possible point is its lower end minus
             // its length.
             let low = self.points[l.end_a]
@@ -568,10 +651,18 @@ impl System {
                 .min(self.points[l.end_b].position.z);
             let reaches_bed = env.depth.is_finite()
                 && seabed.stiffness > 0.0
-                && low - l.fe.arc_length(n) <= env.seabed_z();
+                && low - l.mesh.length() <= env.seabed_z();
             let mut rows = vec![NodeRows::default(); n + 1];
+            let describe = |what: &str, at: String, s: &crate::formulation::SectionProperties| {
+                format!(
+                    "{what} at line {} {at} (element length {:.4} m, axial wave speed {:.1} m/s)",
+                    l.name,
+                    s.element_length,
+                    (s.law.stiffness.max_tangent() / s.line_type.mass_per_length).sqrt()
+                )
+            };
             for e in 0..n {
-                let s = &l.fe.sections[l.fe.element_section[e]];
+                let s = l.mesh.section(e);
                 let lt = &s.line_type;
                 let l0 = s.element_length;
                 let gamma = lt.mass_per_length
@@ -593,6 +684,26 @@ impl System {
                         add.friction_damping = seabed.friction_slope(wet, 0.5 * l0) * 0.5 * l0;
                     }
                 }
+                if hermite {
+                    // Element bound (Irons): the assembled line's frequencies are below the
+                    // element's, whose pencils scale as λ EA/(γ l²) and λ_b EI/(γ l⁴); the
+                    // contact, integrated with the mass's own quadrature, as K_g d/γ.
+                    let element = NodeRows {
+                        mass: gamma * l0,
+                        axial_damping: lambda_axial * s.law.damping / l0,
+                        axial_stiffness: lambda_axial * s.law.stiffness.max_tangent() / l0,
+                        bending_stiffness: lambda_bending * lt.bending_stiffness / (l0 * l0 * l0),
+                        bending_damping: lambda_bending * lt.bending_damping / (l0 * l0 * l0),
+                        contact_stiffness: 2.0 * add.contact_stiffness,
+                        contact_damping: 2.0 * add.contact_damping,
+                        friction_damping: 2.0 * add.friction_damping,
+                    };
+                    let (lambda, what) = element.bound();
+                    if lambda > worst {
+                        worst = lambda;
+                        culprit = describe(what, format!("element {e}"), s);
+                    }
+                }
                 rows[e].add(&add);
                 rows[e + 1].add(&add);
             }
@@ -611,15 +722,16 @@ impl System {
                     }
                     continue;
                 }
+                if hermite {
+                    continue;
+                }
                 let (lambda, what) = row.bound();
                 if lambda > worst {
                     worst = lambda;
-                    let s = &l.fe.sections[l.fe.element_section[node.min(n - 1)]];
-                    culprit = format!(
-                        "{what} at line {} node {node} (element length {:.4} m, axial wave speed {:.1} m/s)",
-                        l.name,
-                        s.element_length,
-                        (s.law.stiffness.max_tangent() / s.line_type.mass_per_length).sqrt()
+                    culprit = describe(
+                        what,
+                        format!("node {node}"),
+                        l.mesh.section(node.min(n - 1)),
                     );
                 }
             }
@@ -716,6 +828,8 @@ struct NodeRows {
     contact_damping: Real,
     contact_stiffness: Real,
     friction_damping: Real,
+    bending_damping: Real,
+    bending_stiffness: Real,
 }
 
 impl NodeRows {
@@ -726,6 +840,8 @@ impl NodeRows {
         self.contact_damping += o.contact_damping;
         self.contact_stiffness += o.contact_stiffness;
         self.friction_damping += o.friction_damping;
+        self.bending_damping += o.bending_damping;
+        self.bending_stiffness += o.bending_stiffness;
     }
 
     /// Bound on |λ| [1/s] and the term that sets it.
@@ -746,6 +862,8 @@ impl NodeRows {
                 (self.contact_stiffness / m).sqrt(),
                 "seabed contact stiffness",
             ),
+            (self.bending_damping / m, "bending damping"),
+            ((self.bending_stiffness / m).sqrt(), "bending stiffness"),
         ]
         .into_iter()
         .fold((0.0, "nothing"), |a, b| if b.0 > a.0 { b } else { a })

@@ -43,7 +43,7 @@ fn model(mass_matrix: MassMatrix) -> Model {
 
 /// Total mechanical energy [J] of the state, with the mass matrix of the line's formulation.
 fn energy(system: &System, y: &[Real]) -> Real {
-    let fe = &system.lines[0].fe;
+    let fe = &system.lines[0].mesh;
     let n = fe.elements();
     let l0 = LENGTH / n as Real;
     let nodes: Vec<(Vec3, Vec3)> = (0..=n).map(|i| node_state(system, y, 0, i)).collect();
@@ -51,7 +51,10 @@ fn energy(system: &System, y: &[Real]) -> Real {
     for k in 0..n {
         let ((ra, va), (rb, vb)) = (nodes[k], nodes[k + 1]);
         let m = GAMMA * l0;
-        e += match fe.mass_matrix {
+        let hawser::formulation::LineKind::Fe { mass_matrix } = system.lines[0].kind else {
+            unreachable!("an fe line")
+        };
+        e += match mass_matrix {
             MassMatrix::Lumped => 0.25 * m * (va.norm_squared() + vb.norm_squared()),
             // ½ [va vb] (m/6)[2 1; 1 2] [va vb]ᵀ = (m/6)(va² + va·vb + vb²)
             MassMatrix::Consistent => {

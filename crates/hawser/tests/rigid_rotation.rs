@@ -56,7 +56,7 @@ fn free_free(n: usize, mass_matrix: MassMatrix, with_fluid: bool) -> Model {
 
 /// All nodes' positions and velocities (ends included) of line 0.
 fn nodes(system: &System, y: &[Real]) -> Vec<(Vec3, Vec3)> {
-    (0..=system.lines[0].fe.elements())
+    (0..=system.lines[0].mesh.elements())
         .map(|i| node_state(system, y, 0, i))
         .collect()
 }
@@ -67,7 +67,7 @@ fn rhs_is_objective_under_random_rigid_motions() {
     for mass_matrix in [MassMatrix::Consistent, MassMatrix::Lumped] {
         let model = free_free(8, mass_matrix, true);
         let system = System::new(&model).unwrap();
-        let n = system.lines[0].fe.elements();
+        let n = system.lines[0].mesh.elements();
         let l0 = 1.0;
         let mut ws = system.workspace();
         let mut dy = vec![0.0; system.layout.len];

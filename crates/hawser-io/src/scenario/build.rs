@@ -2312,6 +2312,7 @@ fn build_lines(
         }
         let formulation = match l.formulation.as_ref().map(|f| (*f.get_ref(), f.span())) {
             None | Some((FormulationSpec::Fe, _)) => Formulation::Fe,
+            Some((FormulationSpec::Hermite, _)) => Formulation::Hermite,
             Some((f, span)) => {
                 let d = b
                     .diag(
@@ -2322,8 +2323,8 @@ fn build_lines(
                             format!("{f:?}").to_lowercase()
                         ),
                     )
-                    .expected("`fe`")
-                    .hint("use `formulation = \"fe\"`; `dg` and `hermite` are coming");
+                    .expected("`fe` or `hermite`")
+                    .hint("use `formulation = \"fe\"` or `\"hermite\"`; `dg` is coming");
                 b.push(d);
                 Formulation::Fe
             }
@@ -2335,6 +2336,10 @@ fn build_lines(
             mass_matrix: match l.mass_matrix {
                 Some(MassMatrixSpec::Lumped) => MassMatrix::Lumped,
                 _ => MassMatrix::Consistent,
+            },
+            strain_measure: match l.strain {
+                Some(StrainSpec::SmallStrain) => StrainMeasure::SmallStrain,
+                _ => StrainMeasure::Exact,
             },
             end_a: LineEnd::Point(end_a),
             end_b: LineEnd::Point(end_b),

@@ -523,8 +523,18 @@ pub enum FormulationSpec {
     Fe,
     /// Discontinuous Galerkin (not yet available).
     Dg,
-    /// Cubic Hermite elements (not yet available).
+    /// Cubic Hermite elements (positions and tangents; bending).
     Hermite,
+}
+
+/// Axial strain measure of `hermite` lines.
+#[derive(Clone, Copy, Debug, Deserialize, Serialize, JsonSchema, PartialEq, Eq)]
+#[serde(rename_all = "kebab-case")]
+pub enum StrainSpec {
+    /// ε = |∂r/∂s| − 1 (default).
+    Exact,
+    /// ε = ½(|∂r/∂s|² − 1), the elastic-link paper's eq. 12.
+    SmallStrain,
 }
 
 /// Mass matrix of `fe` lines.
@@ -573,6 +583,9 @@ pub struct LineSpec {
     /// `"consistent"` (default) or `"lumped"` (`fe`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub mass_matrix: Option<MassMatrixSpec>,
+    /// `"exact"` (default) or `"small-strain"` (`hermite`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub strain: Option<StrainSpec>,
     /// Line type of a single-section line (or give `sections`).
     #[serde(default, rename = "type", skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<String>")]

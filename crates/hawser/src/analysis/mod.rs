@@ -68,6 +68,27 @@ pub enum Channel {
         /// Element index.
         element: usize,
     },
+    /// Curvature at an element's midpoint [1/m] (formulations with bending; 0 for `fe`).
+    ElementCurvature {
+        /// Line index.
+        line: usize,
+        /// Element index.
+        element: usize,
+    },
+    /// Bending moment at an element's midpoint [N·m] (formulations with bending).
+    ElementBendingMoment {
+        /// Line index.
+        line: usize,
+        /// Element index.
+        element: usize,
+    },
+    /// Shear force |dM/ds| in an element [N] (formulations with bending).
+    ElementShearForce {
+        /// Line index.
+        line: usize,
+        /// Element index.
+        element: usize,
+    },
     /// Point position component [m].
     PointPosition {
         /// Point index.
@@ -124,6 +145,15 @@ impl Channel {
             Channel::ElementStrain { line: l, element } => {
                 format!("{}.element{}.strain", line(l), element)
             }
+            Channel::ElementCurvature { line: l, element } => {
+                format!("{}.element{}.curvature", line(l), element)
+            }
+            Channel::ElementBendingMoment { line: l, element } => {
+                format!("{}.element{}.bending_moment", line(l), element)
+            }
+            Channel::ElementShearForce { line: l, element } => {
+                format!("{}.element{}.shear_force", line(l), element)
+            }
             Channel::PointPosition { point, axis } => {
                 format!("{}.{}", system.points[point].name, AXES[axis])
             }
@@ -143,7 +173,10 @@ impl Channel {
             | Channel::EndForce { .. }
             | Channel::EndNodeForce { .. }
             | Channel::NodeTension { .. }
+            | Channel::ElementShearForce { .. }
             | Channel::PointForce { .. } => "N",
+            Channel::ElementCurvature { .. } => "1/m",
+            Channel::ElementBendingMoment { .. } => "N·m",
             Channel::NodePosition { .. } | Channel::PointPosition { .. } => "m",
             Channel::NodeVelocity { .. } | Channel::PointVelocity { .. } => "m/s",
             Channel::ElementStrain { .. } => "-",
@@ -161,9 +194,22 @@ impl Channel {
                 lw.force[node].norm()
             }
             Channel::NodeTension { line, node } => system.node_tension(ws, line, node),
-            Channel::NodePosition { line, node, axis } => ws.lines[line].position[node][axis],
-            Channel::NodeVelocity { line, node, axis } => ws.lines[line].velocity[node][axis],
+            Channel::NodePosition { line, node, axis } => {
+                ws.lines[line].position[system.lines[line].node_vector(node)][axis]
+            }
+            Channel::NodeVelocity { line, node, axis } => {
+                ws.lines[line].velocity[system.lines[line].node_vector(node)][axis]
+            }
             Channel::ElementStrain { line, element } => ws.lines[line].elements.strain[element],
+            Channel::ElementCurvature { line, element } => {
+                ws.lines[line].elements.curvature[element]
+            }
+            Channel::ElementBendingMoment { line, element } => {
+                ws.lines[line].elements.bending_moment[element]
+            }
+            Channel::ElementShearForce { line, element } => {
+                ws.lines[line].elements.shear_force[element]
+            }
             Channel::PointPosition { point, axis } => ws.points[point].position[axis],
             Channel::PointVelocity { point, axis } => ws.points[point].velocity[axis],
             Channel::PointForce { point, axis } => system
@@ -186,13 +232,7 @@ impl Channel {
 
     /// Checks indices against the system.
     pub fn is_valid(&self, system: &System) -> bool {
-        let nodes = |l: usize| {
-            system
-                .lines
-                .get(l)
-                .map(|x| x.fe.elements() + 1)
-                .unwrap_or(0)
-        };
+        let nodes = |l: usize| system.lines.get(l).map(|x| x.nodes()).unwrap_or(0);
         match *self {
             Channel::EndTension { line, .. }
             | Channel::EndForce { line, .. }
@@ -200,7 +240,10 @@ impl Channel {
             Channel::NodeTension { line, node }
             | Channel::NodePosition { line, node, .. }
             | Channel::NodeVelocity { line, node, .. } => node < nodes(line),
-            Channel::ElementStrain { line, element } => element + 1 < nodes(line),
+            Channel::ElementStrain { line, element }
+            | Channel::ElementCurvature { line, element }
+            | Channel::ElementBendingMoment { line, element }
+            | Channel::ElementShearForce { line, element } => element + 1 < nodes(line),
             Channel::PointPosition { point, .. }
             | Channel::PointVelocity { point, .. }
             | Channel::PointForce { point, .. } => point < system.points.len(),

@@ -190,6 +190,12 @@ pub fn natural_modes(
     lin: &Linearisation,
     options: &ModalOptions,
 ) -> Result<Modes, ModalError> {
+    if let Some(l) = system.lines.iter().find(|l| l.kind.bandwidth() > 1) {
+        return Err(ModalError::Unsupported {
+            line: l.name.clone(),
+            formulation: l.kind.name(),
+        });
+    }
     let n = lin.dofs.len();
     if n == 0 {
         return Err(ModalError::NoDegreesOfFreedom);

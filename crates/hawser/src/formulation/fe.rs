@@ -13,126 +13,15 @@
 //! linearly interpolated velocities (eq. 20); weight and buoyancy (eqs. 24–25) exactly,
 //! including the part of an element below the water surface; seabed contact at the nodes.
 
+use super::{ElementState, LoadOptions, Mesh};
 use crate::linalg::LineBlocks;
 use crate::math::{Mat3, Real, Vec3};
-use crate::model::{LineType, MassMatrix};
+use crate::model::MassMatrix;
 use crate::physics::environment::Environment;
 use crate::physics::hydrodynamics::{added_mass_matrix, drag_force, fluid_inertia_force};
-use crate::physics::material::AxialLaw;
 
 /// Gauss points on [0, 1] for two-point quadrature (weight ½ each).
 const GAUSS: [Real; 2] = [0.5 - 0.288_675_134_594_812_9, 0.5 + 0.288_675_134_594_812_9];
-
-/// Properties of one section of an `fe` line, resolved from its line type.
-#[derive(Clone, Debug)]
-pub struct FeSection {
-    /// The line type (diameter, mass, drag, added mass).
-    pub line_type: LineType,
-    /// Unstretched element length L0 [m].
-    pub element_length: Real,
-    /// Cross-section area A = π d²/4 [m²].
-    pub area: Real,
-    /// Axial law with the damping coefficient resolved for this element length.
-    pub law: AxialLaw,
-    /// 1 / L0 [1/m].
-    pub inverse_length: Real,
-}
-
-/// An `fe` line: element lengths and section properties, nodes 0..=N.
-#[derive(Clone, Debug)]
-pub struct FeLine {
-    /// Sections in order from end A.
-    pub sections: Vec<FeSection>,
-    /// Section index of each element.
-    pub element_section: Vec<usize>,
-    /// Mass matrix kind.
-    pub mass_matrix: MassMatrix,
-}
-
-impl FeLine {
-    /// Builds the line from its sections: (line type, length [m], elements).
-    pub fn new(sections: &[(LineType, Real, usize)], mass_matrix: MassMatrix) -> Self {
-        let mut out = Vec::new();
-        let mut element_section = Vec::new();
-        for (k, (t, length, n)) in sections.iter().enumerate() {
-            let l0 = length / *n as Real;
-            let law = AxialLaw {
-                stiffness: t.axial_stiffness.clone(),
-                damping: t
-                    .axial_damping
-                    .coefficient(l0, &t.axial_stiffness, t.mass_per_length),
-                compression: t.compression,
-            };
-            out.push(FeSection {
-                line_type: t.clone(),
-                element_length: l0,
-                area: t.area(),
-                law,
-                inverse_length: 1.0 / l0,
-            });
-            element_section.extend(std::iter::repeat_n(k, *n));
-        }
-        Self {
-            sections: out,
-            element_section,
-            mass_matrix,
-        }
-    }
-
-    /// Number of elements N.
-    pub fn elements(&self) -> usize {
-        self.element_section.len()
-    }
-
-    /// Unstretched length of cable node i carries [m]: half of each adjacent element.
-    #[inline]
-    pub fn node_length(&self, node: usize) -> Real {
-        let half = |e: usize| 0.5 * self.sections[self.element_section[e]].element_length;
-        let n = self.elements();
-        (if node > 0 { half(node - 1) } else { 0.0 }) + (if node < n { half(node) } else { 0.0 })
-    }
-
-    /// Unstretched arc length of node i from end A [m].
-    pub fn arc_length(&self, node: usize) -> Real {
-        self.element_section[..node]
-            .iter()
-            .map(|&s| self.sections[s].element_length)
-            .sum()
-    }
-
-    /// The axial law of an element.
-    #[inline]
-    pub fn law(&self, element: usize) -> &AxialLaw {
-        &self.sections[self.element_section[element]].law
-    }
-}
-
-/// Per-element results of a force evaluation.
-#[derive(Clone, Debug)]
-pub struct ElementState {
-    /// Axial tension [N] (with damping).
-    pub tension: Vec<Real>,
-    /// Axial strain ε = L/L0 − 1 [-].
-    pub strain: Vec<Real>,
-}
-
-impl ElementState {
-    /// Storage for `n` elements.
-    pub fn new(n: usize) -> Self {
-        Self {
-            tension: vec![0.0; n],
-            strain: vec![0.0; n],
-        }
-    }
-}
-
-/// Load scaling for statics continuation (the mass blocks are assembled when the caller
-/// passes them).
-#[derive(Clone, Copy, Debug)]
-pub struct LoadOptions {
-    /// Multiplies the current velocity seen by drag [-].
-    pub current_factor: Real,
-}
 
 /// Evaluates the nodal forces [N] of an `fe` line at positions `r` [m] and velocities `v`
 /// [m/s] (nodes 0..=N, ends included) and, if asked, its mass blocks [kg] into `blocks`.
@@ -141,7 +30,8 @@ pub struct LoadOptions {
 /// buoyancy, drag, fluid inertia and seabed contact. End forces on attachments follow from it.
 #[allow(clippy::too_many_arguments)]
 pub fn line_forces(
-    line: &FeLine,
+    line: &Mesh,
+    mass_matrix: MassMatrix,
     env: &Environment,
     time: Real,
     r: &[Vec3],
@@ -156,7 +46,7 @@ pub fn line_forces(
     let g = env.gravity;
     let rho_w = env.water_density;
     let bed_z = env.seabed_z();
-    let consistent = line.mass_matrix == MassMatrix::Consistent;
+    let consistent = mass_matrix == MassMatrix::Consistent;
     // No current and no waves: the fluid is at rest everywhere.
     let still_water = env.is_still_water();
     let mut blocks = blocks;

@@ -1,7 +1,262 @@
 //! Cable formulations (SPEC §3). Each line of a [`crate::system::System`] is discretised by
-//! one of them; all share the physics of [`crate::physics`] and the end coupling of
-//! [`crate::linalg::CoupledSystem`]: a line owns its interior unknowns, its ends belong to
-//! the points (later bodies) they are attached to, which gather the line's end forces and
-//! end masses.
+//! one of them; all share the physics of [`crate::physics`], the mesh of elements along the
+//! unstretched arc length ([`Mesh`]) and the end coupling of [`crate::linalg::CoupledSystem`]:
+//! a line owns its interior unknowns, its ends belong to the points (later bodies) they are
+//! attached to, which gather the line's end forces and end masses.
+//!
+//! A line's unknowns are a sequence of 3-vectors ("vectors" below), the first and last being
+//! the positions of its two ends:
+//! - `fe`: the node positions r_0 … r_N (N + 1 vectors, block bandwidth 1);
+//! - `hermite`: positions and tangents r_0, t_0, r_1, t_1, …, r_{N−1}, t_{N−1}, t_N, r_N
+//!   (2N + 2 vectors, block bandwidth 3; the last two are swapped so that both end positions
+//!   sit at the ends), see [`hermite::vector_index`].
 
 pub mod fe;
+pub mod hermite;
+
+use crate::linalg::LineBlocks;
+use crate::math::{Real, Vec3};
+use crate::model::{LineType, MassMatrix};
+use crate::physics::environment::Environment;
+use crate::physics::material::AxialLaw;
+
+pub use crate::model::StrainMeasure;
+pub use hermite::HermiteOptions;
+
+/// Properties of one section of a line, resolved from its line type for its element length.
+#[derive(Clone, Debug)]
+pub struct SectionProperties {
+    /// The line type (diameter, mass, drag, added mass, bending).
+    pub line_type: LineType,
+    /// Unstretched element length L0 [m].
+    pub element_length: Real,
+    /// Cross-section area A = π d²/4 [m²].
+    pub area: Real,
+    /// Axial law with the damping coefficient resolved for this element length.
+    pub law: AxialLaw,
+    /// 1 / L0 [1/m].
+    pub inverse_length: Real,
+}
+
+/// The elements of a line along its unstretched arc length: sections and the section of each
+/// element. Shared by every formulation.
+#[derive(Clone, Debug)]
+pub struct Mesh {
+    /// Sections in order from end A.
+    pub sections: Vec<SectionProperties>,
+    /// Section index of each element.
+    pub element_section: Vec<usize>,
+}
+
+impl Mesh {
+    /// Builds the mesh from its sections: (line type, length [m], elements).
+    pub fn new(sections: &[(LineType, Real, usize)]) -> Self {
+        let mut out = Vec::new();
+        let mut element_section = Vec::new();
+        for (k, (t, length, n)) in sections.iter().enumerate() {
+            let l0 = length / *n as Real;
+            let law = AxialLaw {
+                stiffness: t.axial_stiffness.clone(),
+                damping: t
+                    .axial_damping
+                    .coefficient(l0, &t.axial_stiffness, t.mass_per_length),
+                compression: t.compression,
+            };
+            out.push(SectionProperties {
+                line_type: t.clone(),
+                element_length: l0,
+                area: t.area(),
+                law,
+                inverse_length: 1.0 / l0,
+            });
+            element_section.extend(std::iter::repeat_n(k, *n));
+        }
+        Self {
+            sections: out,
+            element_section,
+        }
+    }
+
+    /// Number of elements N.
+    pub fn elements(&self) -> usize {
+        self.element_section.len()
+    }
+
+    /// The section properties of an element.
+    #[inline]
+    pub fn section(&self, element: usize) -> &SectionProperties {
+        &self.sections[self.element_section[element]]
+    }
+
+    /// Unstretched length of cable node i carries [m]: half of each adjacent element.
+    #[inline]
+    pub fn node_length(&self, node: usize) -> Real {
+        let half = |e: usize| 0.5 * self.section(e).element_length;
+        let n = self.elements();
+        (if node > 0 { half(node - 1) } else { 0.0 }) + (if node < n { half(node) } else { 0.0 })
+    }
+
+    /// Unstretched arc length of node i from end A [m].
+    pub fn arc_length(&self, node: usize) -> Real {
+        self.element_section[..node]
+            .iter()
+            .map(|&s| self.sections[s].element_length)
+            .sum()
+    }
+
+    /// Unstretched length of the line [m].
+    pub fn length(&self) -> Real {
+        self.arc_length(self.elements())
+    }
+
+    /// Shortest element [m].
+    pub fn shortest_element(&self) -> Real {
+        self.sections
+            .iter()
+            .map(|s| s.element_length)
+            .fold(Real::INFINITY, Real::min)
+    }
+
+    /// The axial law of an element.
+    #[inline]
+    pub fn law(&self, element: usize) -> &AxialLaw {
+        &self.section(element).law
+    }
+}
+
+/// The formulation of a line and its own options.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum LineKind {
+    /// Position-vector finite elements (linear, two nodes; [`fe`]).
+    Fe {
+        /// Consistent or lumped mass.
+        mass_matrix: MassMatrix,
+    },
+    /// Cubic Hermite elements with positions and tangents ([`hermite`]).
+    Hermite(HermiteOptions),
+}
+
+impl LineKind {
+    /// Number of 3-vector unknowns of a line of `elements` elements, ends included.
+    pub fn vectors(&self, elements: usize) -> usize {
+        match self {
+            LineKind::Fe { .. } => elements + 1,
+            LineKind::Hermite(_) => 2 * elements + 2,
+        }
+    }
+
+    /// Block bandwidth of the line's matrices.
+    pub fn bandwidth(&self) -> usize {
+        match self {
+            LineKind::Fe { .. } => 1,
+            LineKind::Hermite(_) => 3,
+        }
+    }
+
+    /// Index of node i's position among the line's vectors (N elements).
+    #[inline]
+    pub fn node_vector(&self, node: usize, elements: usize) -> usize {
+        match self {
+            LineKind::Fe { .. } => node,
+            LineKind::Hermite(_) => hermite::vector_index(node, false, elements),
+        }
+    }
+
+    /// Whether vector j is a tangent (dimensionless) rather than a position [m].
+    #[inline]
+    pub fn is_tangent(&self, j: usize, elements: usize) -> bool {
+        match self {
+            LineKind::Fe { .. } => false,
+            LineKind::Hermite(_) => {
+                j != 0 && j != 2 * elements + 1 && (j % 2 == 1 || j == 2 * elements)
+            }
+        }
+    }
+
+    /// Whether the mass couples neighbouring vectors (not lumped).
+    pub fn consistent_mass(&self) -> bool {
+        match self {
+            LineKind::Fe { mass_matrix } => *mass_matrix == MassMatrix::Consistent,
+            LineKind::Hermite(_) => true,
+        }
+    }
+
+    /// Short name as in scenario files.
+    pub fn name(&self) -> &'static str {
+        match self {
+            LineKind::Fe { .. } => "fe",
+            LineKind::Hermite(_) => "hermite",
+        }
+    }
+}
+
+/// Per-element results of a force evaluation.
+#[derive(Clone, Debug)]
+pub struct ElementState {
+    /// Axial tension [N] (with damping): `fe` uniform over the element, `hermite` at its
+    /// midpoint.
+    pub tension: Vec<Real>,
+    /// Axial strain ε = |∂r/∂s| − 1 [-] (at the midpoint for `hermite`).
+    pub strain: Vec<Real>,
+    /// Curvature κ [1/m] at the element midpoint (zero for `fe`).
+    pub curvature: Vec<Real>,
+    /// Bending moment M = EI κ (+ ζ_b κ̇) [N·m] at the element midpoint (zero for `fe`).
+    pub bending_moment: Vec<Real>,
+    /// Shear force magnitude |dM/ds| [N] in the element (zero for `fe`).
+    pub shear_force: Vec<Real>,
+}
+
+impl ElementState {
+    /// Storage for `n` elements.
+    pub fn new(n: usize) -> Self {
+        Self {
+            tension: vec![0.0; n],
+            strain: vec![0.0; n],
+            curvature: vec![0.0; n],
+            bending_moment: vec![0.0; n],
+            shear_force: vec![0.0; n],
+        }
+    }
+}
+
+/// Load scaling for statics continuation (the mass blocks are assembled when the caller
+/// passes them).
+#[derive(Clone, Copy, Debug)]
+pub struct LoadOptions {
+    /// Multiplies the current velocity seen by drag [-].
+    pub current_factor: Real,
+}
+
+/// Evaluates the generalized forces of a line on its vectors (see the module doc) at
+/// coordinates `q` and rates `qdot`, its element results, and, if asked, its mass blocks.
+#[allow(clippy::too_many_arguments)]
+pub fn line_forces(
+    mesh: &Mesh,
+    kind: &LineKind,
+    env: &Environment,
+    time: Real,
+    q: &[Vec3],
+    qdot: &[Vec3],
+    forces: &mut [Vec3],
+    elements: &mut ElementState,
+    blocks: Option<&mut LineBlocks>,
+    options: LoadOptions,
+) {
+    match kind {
+        LineKind::Fe { mass_matrix } => fe::line_forces(
+            mesh,
+            *mass_matrix,
+            env,
+            time,
+            q,
+            qdot,
+            forces,
+            elements,
+            blocks,
+            options,
+        ),
+        LineKind::Hermite(h) => hermite::line_forces(
+            mesh, h, env, time, q, qdot, forces, elements, blocks, options,
+        ),
+    }
+}

@@ -24,6 +24,15 @@
 //! blocks act on the predicted accelerations of the neighbours,
 //! â_i = M₂⁻¹ (F_i(ẽ^{n+1}) − M₁ ã_{i−1} − M₃ ã_{i+1}), and e^{n+1} = (â + C_t1 e^n − C_t0 e^{n−1}) / C_t2.
 //!
+//! **Hermite lines.** The node-by-node corrector is one Jacobi sweep on the mass matrix. For
+//! cubic Hermite elements the coupling of a node's tangent to its neighbours' is strong (the
+//! beam mass matrix's tangent entries 4l² per element against 3l² to the neighbour: a Jacobi
+//! spectral radius near 0.75 where linear elements have 0.5), so one sweep leaves much of the
+//! coupling unresolved. With a `hermite` line in the system both stages therefore solve the
+//! banded mass system exactly, ã = M⁻¹F(e^n) and â = M⁻¹F(ẽ^{n+1}), in O(N) by
+//! [`crate::linalg::CoupledSystem`]: the same time levels and the same predictor–corrector,
+//! with the paper's "inverse matrix method" applied to the whole mass matrix.
+//!
 //! Two choices the paper leaves open, derived here and documented in docs/fe.md:
 //! - the velocities the forces need (drag, damping) are ė^n = (e^n − e^{n−1})/Δt_n + ½Δt_n â^{n−1}
 //!   (the backward difference, a velocity at t_{n−½}, advanced by half a step with the last
@@ -64,6 +73,8 @@ pub struct ThreeLevel {
     /// Per free point: its mass with the line ends' blocks, and its force.
     point_mass: Vec<Mat3>,
     point_force: Vec<Vec3>,
+    /// Whether each stage solves the mass system exactly (a `hermite` line is present).
+    exact_mass: bool,
 }
 
 /// Which accelerations of the neighbours enter a node's equation.
@@ -87,12 +98,40 @@ impl ThreeLevel {
             last_step: 0.0,
             point_mass: vec![Mat3::zeros(); points],
             point_force: vec![Vec3::zeros(); points],
+            exact_mass: system.lines.iter().any(|l| l.kind.bandwidth() > 1),
         }
     }
 
     /// Force evaluations per step.
     pub fn evaluations(&self) -> usize {
         2
+    }
+
+    /// The accelerations of one stage: node by node as the paper does for block-tridiagonal
+    /// lines (`fe`), or by the exact banded mass solve when a line's mass couples more than
+    /// its neighbours (`hermite`, see the module doc).
+    fn stage(&mut self, system: &System, ws: &mut Workspace, stage: Stage) -> Result<(), Location> {
+        if !self.exact_mass {
+            return self.accelerations(system, ws, stage);
+        }
+        ws.coupled
+            .solve(&mut ws.blocks)
+            .map_err(|s| system.singular_location(s))?;
+        let out = match stage {
+            Stage::Predictor => &mut self.predicted,
+            Stage::Corrector => &mut self.accelerations,
+        };
+        for (li, l) in system.lines.iter().enumerate() {
+            let o = system.layout.line_offset[li];
+            for i in 1..l.vectors() - 1 {
+                set3(&mut out[o..], i - 1, &ws.blocks[li].x[i]);
+            }
+        }
+        for (f, &p) in system.free_points.iter().enumerate() {
+            let o = system.layout.point_offset[p].expect("free point");
+            set3(&mut out[o..], 0, &ws.coupled.point_x[f]);
+        }
+        Ok(())
     }
 
     /// Node accelerations from an assembled workspace into `out` (position entries):
@@ -118,7 +157,7 @@ impl ThreeLevel {
         };
         let neighbour = |li: usize, node: usize| -> Vec3 {
             let l = &system.lines[li];
-            let n = l.fe.elements();
+            let n = l.vectors() - 1;
             if node == 0 || node == n {
                 let p = if node == 0 { l.end_a } else { l.end_b };
                 match system.layout.point_offset[p] {
@@ -132,7 +171,7 @@ impl ThreeLevel {
         point_mass.copy_from_slice(&ws.coupled.point_diag);
         point_force.copy_from_slice(&ws.coupled.point_x);
         for (li, l) in system.lines.iter().enumerate() {
-            let n = l.fe.elements();
+            let n = l.vectors() - 1;
             let o = system.layout.line_offset[li];
             let b = &ws.blocks[li];
             let f = &ws.lines[li].force;
@@ -218,7 +257,7 @@ impl ThreeLevel {
     ) -> Result<(), Location> {
         // Level n: forces and masses, predictor accelerations.
         system.assemble(t, y, ws);
-        self.accelerations(system, ws, Stage::Predictor)?;
+        self.stage(system, ws, Stage::Predictor)?;
         if self.last_step == 0.0 {
             // Taylor start: e^{-1} = e^0 − Δt v^0 + ½Δt² a^0, with Δt_0 = Δt.
             self.previous.copy_from_slice(y);
@@ -246,7 +285,7 @@ impl ThreeLevel {
         );
         // Level n+1 predicted: forces there, corrector accelerations.
         system.assemble(t + dt, &self.trial, ws);
-        self.accelerations(system, ws, Stage::Corrector)?;
+        self.stage(system, ws, Stage::Corrector)?;
         Self::advance(
             system,
             (y, &self.previous),

@@ -5,7 +5,7 @@
 //! eliminated by block Thomas; the free points are solved from their Schur complement, a small
 //! dense system; then the interior is back-substituted. Cost O(nodes) + O(points³).
 
-use super::{BlockTridiagonal, DenseLu};
+use super::{BandedLu, BlockTridiagonal, DenseLu};
 use crate::math::{Mat3, Real, Vec3};
 
 /// What an end node of a line is in the coupled system.
@@ -17,7 +17,10 @@ pub enum EndKind {
     Free(usize),
 }
 
-/// The blocks of one line over its nodes 0..=N (N elements).
+/// The blocks of one line over its nodes 0..=N: 3×3 blocks over the line's 3-vector unknowns
+/// ("nodes": positions for `fe`; positions and tangents for `hermite`), banded with block
+/// bandwidth w (1 for `fe`, block-tridiagonal; 3 for `hermite`, whose element couples the four
+/// consecutive vectors r_a, t_a, r_b, t_b). Nodes 0 and N are the ends, owned by points.
 #[derive(Clone, Debug)]
 pub struct LineBlocks {
     /// Diagonal blocks, one per node.
@@ -26,6 +29,10 @@ pub struct LineBlocks {
     pub lower: Vec<Mat3>,
     /// Block (row i, column i+1), one per element.
     pub upper: Vec<Mat3>,
+    /// Bands k = 2..=w below the diagonal: `far_lower[k-2][j]` is block (j + k, j).
+    pub far_lower: Vec<Vec<Mat3>>,
+    /// Bands k = 2..=w above the diagonal: `far_upper[k-2][j]` is block (j, j + k).
+    pub far_upper: Vec<Vec<Mat3>>,
     /// Right-hand side per node on input (known ends: their value); solution on output.
     pub x: Vec<Vec3>,
     /// End A kind.
@@ -35,6 +42,8 @@ pub struct LineBlocks {
     /// Whether `lower`/`upper` hold non-zero blocks (false for a lumped mass matrix).
     pub coupled: bool,
     factor: BlockTridiagonal,
+    banded: BandedLu,
+    column: Vec<Real>,
     response_a: Vec<Mat3>,
     response_b: Vec<Mat3>,
 }
@@ -54,22 +63,133 @@ pub enum Singular {
 }
 
 impl LineBlocks {
-    /// Storage for a line of `elements` elements.
+    /// Storage for a block-tridiagonal line of `elements` elements (nodes 0..=elements).
     pub fn new(elements: usize, end_a: EndKind, end_b: EndKind, coupled: bool) -> Self {
-        let n = elements + 1;
-        let interior = elements.saturating_sub(1);
+        Self::banded(elements + 1, 1, end_a, end_b, coupled)
+    }
+
+    /// Storage for `nodes` 3-vector unknowns (ends included) with block bandwidth `width`.
+    pub fn banded(
+        nodes: usize,
+        width: usize,
+        end_a: EndKind,
+        end_b: EndKind,
+        coupled: bool,
+    ) -> Self {
+        assert!(nodes >= 2 && width >= 1, "a line has two ends and a band");
+        let interior = nodes - 2;
+        let band = |k: usize| vec![Mat3::zeros(); nodes.saturating_sub(k)];
         Self {
-            diag: vec![Mat3::zeros(); n],
-            lower: vec![Mat3::zeros(); elements],
-            upper: vec![Mat3::zeros(); elements],
-            x: vec![Vec3::zeros(); n],
+            diag: vec![Mat3::zeros(); nodes],
+            lower: band(1),
+            upper: band(1),
+            far_lower: (2..=width).map(band).collect(),
+            far_upper: (2..=width).map(band).collect(),
+            x: vec![Vec3::zeros(); nodes],
             end_a,
             end_b,
             coupled,
-            factor: BlockTridiagonal::with_capacity(interior.max(1)),
+            factor: BlockTridiagonal::with_capacity(if width == 1 { interior.max(1) } else { 0 }),
+            banded: if width == 1 {
+                BandedLu::default()
+            } else {
+                BandedLu::new(3 * interior, 3 * width + 2)
+            },
+            column: vec![0.0; if width == 1 { 0 } else { 3 * interior }],
             response_a: vec![Mat3::zeros(); interior],
             response_b: vec![Mat3::zeros(); interior],
         }
+    }
+
+    /// Block bandwidth w.
+    pub fn width(&self) -> usize {
+        self.far_lower.len() + 1
+    }
+
+    /// Block (i, j), zero outside the band.
+    #[inline]
+    pub fn block(&self, i: usize, j: usize) -> Mat3 {
+        match i as isize - j as isize {
+            0 => self.diag[i],
+            1 => self.lower[j],
+            -1 => self.upper[i],
+            d if d > 1 => self
+                .far_lower
+                .get(d as usize - 2)
+                .map_or(Mat3::zeros(), |b| b[j]),
+            d => self
+                .far_upper
+                .get((-d) as usize - 2)
+                .map_or(Mat3::zeros(), |b| b[i]),
+        }
+    }
+
+    /// Mutable block (i, j); |i − j| must be within the band.
+    #[inline]
+    pub fn block_mut(&mut self, i: usize, j: usize) -> &mut Mat3 {
+        match i as isize - j as isize {
+            0 => &mut self.diag[i],
+            1 => &mut self.lower[j],
+            -1 => &mut self.upper[i],
+            d if d > 1 => &mut self.far_lower[d as usize - 2][j],
+            d => &mut self.far_upper[(-d) as usize - 2][i],
+        }
+    }
+
+    /// Σ_j A_ij x_j over row i's band: the product of row i with the current `x`.
+    pub fn row_times_x(&self, i: usize) -> Vec3 {
+        self.row_times(i, &self.x)
+    }
+
+    /// Σ_j A_ij x_j over row i's band for any `x` over the same nodes.
+    pub fn row_times(&self, i: usize, x: &[Vec3]) -> Vec3 {
+        let mut s = Vec3::zeros();
+        for j in self.band_of(i) {
+            s += self.block(i, j) * x[j];
+        }
+        s
+    }
+
+    /// The columns j of row i's band.
+    #[inline]
+    pub fn band_of(&self, i: usize) -> std::ops::RangeInclusive<usize> {
+        let w = self.width();
+        i.saturating_sub(w)..=(i + w).min(self.nodes() - 1)
+    }
+
+    /// The pairs of bands (below, above) at distance k = 1..=w: `below[j]` is block
+    /// (j + k, j) and `above[j]` block (j, j + k).
+    pub fn band_pairs(&self) -> impl Iterator<Item = (&Vec<Mat3>, &Vec<Mat3>)> {
+        std::iter::once((&self.lower, &self.upper))
+            .chain(self.far_lower.iter().zip(self.far_upper.iter()))
+    }
+
+    /// Mutable [`LineBlocks::band_pairs`].
+    pub fn band_pairs_mut(&mut self) -> impl Iterator<Item = (&mut Vec<Mat3>, &mut Vec<Mat3>)> {
+        std::iter::once((&mut self.lower, &mut self.upper))
+            .chain(self.far_lower.iter_mut().zip(self.far_upper.iter_mut()))
+    }
+
+    /// Every stored block (diagonal, then the bands), in a fixed order.
+    pub fn blocks_mut(&mut self) -> impl Iterator<Item = &mut Mat3> {
+        self.diag
+            .iter_mut()
+            .chain(self.lower.iter_mut())
+            .chain(self.upper.iter_mut())
+            .chain(
+                self.far_lower
+                    .iter_mut()
+                    .zip(self.far_upper.iter_mut())
+                    .flat_map(|(l, u)| l.iter_mut().chain(u.iter_mut())),
+            )
+    }
+
+    /// Every stored block in the order of [`LineBlocks::blocks_mut`].
+    pub fn blocks(&self) -> impl Iterator<Item = &Mat3> {
+        self.diag.iter().chain(
+            self.band_pairs()
+                .flat_map(|(l, u)| l.iter().chain(u.iter())),
+        )
     }
 
     /// Number of nodes N + 1.
@@ -83,6 +203,9 @@ impl LineBlocks {
         if self.coupled {
             self.lower.iter_mut().for_each(|m| *m = Mat3::zeros());
             self.upper.iter_mut().for_each(|m| *m = Mat3::zeros());
+            for b in self.far_lower.iter_mut().chain(self.far_upper.iter_mut()) {
+                b.iter_mut().for_each(|m| *m = Mat3::zeros());
+            }
         }
     }
 }
@@ -120,6 +243,131 @@ impl CoupledSystem {
         }
     }
 
+    /// Steps 1 and 2 of [`CoupledSystem::solve`] for a line of block bandwidth w > 1: the
+    /// interior by banded LU, its responses to the free ends, and its contributions to the
+    /// points' Schur complement, S_pp += A_ee − Σ_j A_ej R_j, b_p += x_e − Σ_j A_ej z_j.
+    fn eliminate_banded(&mut self, li: usize, line: &mut LineBlocks) -> Result<(), Singular> {
+        let n = line.nodes() - 1;
+        let w = line.width();
+        let near = |i: usize, node: usize| i.abs_diff(node) <= w;
+        if n > 1 {
+            if line.end_a == EndKind::Known {
+                let xa = line.x[0];
+                for i in 1..n {
+                    if near(i, 0) {
+                        let b = line.block(i, 0);
+                        line.x[i] -= b * xa;
+                    }
+                }
+            }
+            if line.end_b == EndKind::Known {
+                let xb = line.x[n];
+                for i in 1..n {
+                    if near(i, n) {
+                        let b = line.block(i, n);
+                        line.x[i] -= b * xb;
+                    }
+                }
+            }
+            line.banded.clear();
+            for i in 1..n {
+                for j in i.saturating_sub(w).max(1)..=(i + w).min(n - 1) {
+                    let b = line.block(i, j);
+                    for r in 0..3 {
+                        for c in 0..3 {
+                            line.banded.set(3 * (i - 1) + r, 3 * (j - 1) + c, b[(r, c)]);
+                        }
+                    }
+                }
+            }
+            line.banded.factor().map_err(|k| Singular::Line {
+                line: li,
+                node: k / 3 + 1,
+            })?;
+            for i in 1..n {
+                for r in 0..3 {
+                    line.column[3 * (i - 1) + r] = line.x[i][r];
+                }
+            }
+            line.banded.solve(&mut line.column);
+            for i in 1..n {
+                let k = 3 * (i - 1);
+                line.x[i] = Vec3::new(line.column[k], line.column[k + 1], line.column[k + 2]);
+            }
+            for (end, node) in [(line.end_a, 0), (line.end_b, n)] {
+                if !matches!(end, EndKind::Free(_)) {
+                    continue;
+                }
+                for c in 0..3 {
+                    line.column.iter_mut().for_each(|v| *v = 0.0);
+                    for i in 1..n {
+                        if near(i, node) {
+                            let b = line.block(i, node);
+                            for r in 0..3 {
+                                line.column[3 * (i - 1) + r] = b[(r, c)];
+                            }
+                        }
+                    }
+                    line.banded.solve(&mut line.column);
+                    let response = if node == 0 {
+                        &mut line.response_a
+                    } else {
+                        &mut line.response_b
+                    };
+                    for (i, m) in response.iter_mut().enumerate() {
+                        for r in 0..3 {
+                            m[(r, c)] = line.column[3 * i + r];
+                        }
+                    }
+                }
+            }
+        }
+        for (end, node) in [(line.end_a, 0), (line.end_b, n)] {
+            let EndKind::Free(p) = end else { continue };
+            let d = line.diag[node];
+            self.add_block(p, p, &d, 1.0);
+            for k in 0..3 {
+                self.b[3 * p + k] += line.x[node][k];
+            }
+            let (other_node, other) = if node == 0 {
+                (n, line.end_b)
+            } else {
+                (0, line.end_a)
+            };
+            if near(node, other_node) {
+                let c = line.block(node, other_node);
+                match other {
+                    EndKind::Free(q) => self.add_block(p, q, &c, 1.0),
+                    EndKind::Known => {
+                        let v = c * line.x[other_node];
+                        for k in 0..3 {
+                            self.b[3 * p + k] -= v[k];
+                        }
+                    }
+                }
+            }
+            for j in 1..n {
+                if !near(j, node) {
+                    continue;
+                }
+                let c = line.block(node, j);
+                let g = c * line.x[j];
+                for k in 0..3 {
+                    self.b[3 * p + k] -= g[k];
+                }
+                if let EndKind::Free(q) = line.end_a {
+                    let m = c * line.response_a[j - 1];
+                    self.add_block(p, q, &m, -1.0);
+                }
+                if let EndKind::Free(q) = line.end_b {
+                    let m = c * line.response_b[j - 1];
+                    self.add_block(p, q, &m, -1.0);
+                }
+            }
+        }
+        Ok(())
+    }
+
     /// Solves the whole system in place: every line's `x` and `point_x` become the solution.
     pub fn solve(&mut self, lines: &mut [LineBlocks]) -> Result<(), Singular> {
         let np = self.point_diag.len();
@@ -133,6 +381,10 @@ impl CoupledSystem {
         }
         // 1. Eliminate each line's interior.
         for (li, line) in lines.iter_mut().enumerate() {
+            if line.coupled && line.width() > 1 {
+                self.eliminate_banded(li, line)?;
+                continue;
+            }
             let n = line.nodes() - 1; // elements
             let interior = n - 1;
             if interior > 0 {
@@ -271,22 +523,44 @@ mod tests {
     /// Two lines sharing a free point, one end fixed each, compared with a dense solve.
     #[test]
     fn matches_dense_assembly() {
+        check_against_dense(1, &[4, 3, 1]);
+    }
+
+    /// The same with block bandwidth 3 (Hermite lines), including lines short enough for
+    /// their ends to couple directly.
+    #[test]
+    fn banded_matches_dense_assembly() {
+        check_against_dense(3, &[9, 6, 3]);
+        check_against_dense(3, &[4, 2, 2]);
+        check_against_dense(2, &[5, 7, 2]);
+    }
+
+    fn check_against_dense(width: usize, nodes: &[usize]) {
         let f = |i: usize, r: usize, c: usize| ((i * 13 + r * 5 + c * 7) % 17) as f64 / 17.0 - 0.5;
-        let mut lines = vec![
-            LineBlocks::new(4, EndKind::Known, EndKind::Free(0), true),
-            LineBlocks::new(3, EndKind::Free(0), EndKind::Free(1), true),
-            LineBlocks::new(1, EndKind::Free(1), EndKind::Known, true),
+        let ends = [
+            (EndKind::Known, EndKind::Free(0)),
+            (EndKind::Free(0), EndKind::Free(1)),
+            (EndKind::Free(1), EndKind::Known),
         ];
+        let mut lines: Vec<_> = nodes
+            .iter()
+            .zip(ends)
+            .map(|(&m, (a, b))| LineBlocks::banded(m + 1, width, a, b, true))
+            .collect();
         let mut seed = 0;
         for l in lines.iter_mut() {
             for m in l.diag.iter_mut() {
                 seed += 1;
                 *m = Mat3::from_fn(|r, c| f(seed, r, c)) + Mat3::identity() * 5.0;
             }
-            for (lo, up) in l.lower.iter_mut().zip(l.upper.iter_mut()) {
-                seed += 1;
-                *lo = Mat3::from_fn(|r, c| f(seed, r, c));
-                *up = Mat3::from_fn(|r, c| f(seed + 50, r, c));
+            let last = l.nodes() - 1;
+            for i in 0..=last {
+                for j in i.saturating_sub(width)..=(i + width).min(last) {
+                    if i != j {
+                        seed += 1;
+                        *l.block_mut(i, j) = Mat3::from_fn(|r, c| f(seed, r, c)) * 0.5;
+                    }
+                }
             }
             for (i, x) in l.x.iter_mut().enumerate() {
                 *x = Vec3::new(i as f64, 1.0 + seed as f64 * 0.1, -0.3);
@@ -337,11 +611,11 @@ mod tests {
                 for k in 0..3 {
                     b[3 * ri + k] += l.x[i][k];
                 }
-                for (j, m) in [
-                    (i.wrapping_sub(1), i.checked_sub(1).map(|e| l.lower[e])),
-                    (i + 1, (i < n).then(|| l.upper[i])),
-                ] {
-                    let Some(m) = m else { continue };
+                for j in i.saturating_sub(width)..=(i + width).min(n) {
+                    if j == i {
+                        continue;
+                    }
+                    let m = l.block(i, j);
                     match idx.get(j).copied().flatten() {
                         Some(cj) => {
                             let mut blk = a.view_mut((3 * ri, 3 * cj), (3, 3)).clone_owned();

@@ -1,11 +1,13 @@
 //! Structured linear solves: block-tridiagonal lines coupled through shared points; symmetric
 //! generalized eigenproblems (dense, and shift-invert subspace iteration on the block solver).
 
+mod banded;
 mod block_tridiagonal;
 mod coupled;
 mod dense;
 pub mod eigen;
 
+pub use banded::BandedLu;
 pub use block_tridiagonal::BlockTridiagonal;
 pub use coupled::{CoupledSystem, EndKind, LineBlocks, Singular};
 pub use dense::DenseLu;

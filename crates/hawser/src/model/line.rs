@@ -60,6 +60,16 @@ pub enum MassMatrix {
     Lumped,
 }
 
+/// Strain measure of the axial energy.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum StrainMeasure {
+    /// ε = |r'| − 1 (SPEC §1): exact for any stretch.
+    #[default]
+    Exact,
+    /// ε = ½ (r'·r' − 1) (elastic-link paper eq. 12): within ε²/2 of the exact strain.
+    SmallStrain,
+}
+
 /// Cable formulation of a line (SPEC §3).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Formulation {
@@ -67,7 +77,8 @@ pub enum Formulation {
     Fe,
     /// High-order discontinuous Galerkin (issue 3).
     Dg,
-    /// Cubic Hermite elements (issue 4).
+    /// Cubic Hermite elements with positions and tangents (elastic-link paper §4,
+    /// [`crate::formulation::hermite`]).
     Hermite,
 }
 
@@ -90,6 +101,8 @@ pub struct Line {
     pub formulation: Formulation,
     /// Mass matrix (for `fe`).
     pub mass_matrix: MassMatrix,
+    /// Axial strain measure (for `hermite`; `fe` always uses the exact ε = L/L0 − 1).
+    pub strain_measure: StrainMeasure,
     /// Attachment of end A.
     pub end_a: LineEnd,
     /// Attachment of end B.

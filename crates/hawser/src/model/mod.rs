@@ -6,7 +6,7 @@ mod line;
 mod motion;
 mod point;
 
-pub use line::{Formulation, Line, LineEnd, LineType, MassMatrix, Section};
+pub use line::{Formulation, Line, LineEnd, LineType, MassMatrix, Section, StrainMeasure};
 pub use motion::{Motion, ramp};
 pub use point::{Point, PointKind};
 
@@ -180,10 +180,10 @@ impl Model {
                     _ => {}
                 }
             }
-            if l.formulation != Formulation::Fe {
+            if l.formulation == Formulation::Dg {
                 return bad(
                     format!("line {} (#{li})", l.name),
-                    "uses a formulation not implemented yet (only `fe` is available)",
+                    "uses a formulation not implemented yet (`fe` and `hermite` are available)",
                 );
             }
         }

@@ -18,18 +18,33 @@ pub fn relax(system: &System, y: &mut [Real], tol: Real, ws: &mut Workspace) -> 
     let env = &system.environment;
     for (li, l) in system.lines.iter().enumerate() {
         let o = system.layout.line_offset[li] / 3;
-        let n = l.fe.elements();
+        let n = l.mesh.elements();
+        let last = l.vectors() - 1;
+        let hermite = matches!(l.kind, crate::formulation::LineKind::Hermite(_));
         for e in 0..n {
-            let s = &l.fe.sections[l.fe.element_section[e]];
+            let s = l.mesh.section(e);
             let k = s.law.stiffness.max_tangent() / s.element_length
                 + env.seabed.stiffness * s.line_type.diameter * s.element_length;
-            for node in [e, e + 1] {
-                if node >= 1 && node < n {
-                    mass[o + node - 1] += 2.0 * k;
+            // The vectors the element couples; a cubic element's rows sum to about twice a
+            // linear one's, and a tangent's to l² times a position's.
+            let vectors: &[usize] = if hermite {
+                &crate::formulation::hermite::element_vectors(e, n)
+            } else {
+                &[e, e + 1]
+            };
+            for &j in vectors {
+                let m = if hermite { 4.0 * k } else { 2.0 * k }
+                    * if l.is_tangent(j) {
+                        s.element_length * s.element_length
+                    } else {
+                        1.0
+                    };
+                if j >= 1 && j < last {
+                    mass[o + j - 1] += m;
                 } else {
-                    let p = if node == 0 { l.end_a } else { l.end_b };
+                    let p = if j == 0 { l.end_a } else { l.end_b };
                     if let Some(po) = system.layout.point_offset[p] {
-                        mass[po / 3] += 2.0 * k;
+                        mass[po / 3] += m;
                     }
                 }
             }

@@ -55,8 +55,8 @@ fn force_scale(system: &System) -> Real {
     let g = system.environment.gravity.max(1e-3);
     let mut s = 0.0;
     for l in &system.lines {
-        for &k in &l.fe.element_section {
-            let sec = &l.fe.sections[k];
+        for &k in &l.mesh.element_section {
+            let sec = &l.mesh.sections[k];
             s += sec.line_type.mass_per_length * g * sec.element_length;
         }
     }
@@ -96,10 +96,10 @@ pub fn residual(
     for (li, l) in system.lines.iter().enumerate() {
         let lw = &ws.lines[li];
         let o = system.layout.line_offset[li];
-        for i in 1..l.fe.elements() {
+        let n = l.vectors() - 1;
+        for i in 1..n {
             set3(&mut out[o..], i - 1, &lw.force[i]);
         }
-        let n = l.fe.elements();
         for (p, node) in [(l.end_a, 0), (l.end_b, n)] {
             if let Some(o) = system.layout.point_offset[p] {
                 let f = get3(&out[o..], 0) + lw.force[node];
@@ -134,11 +134,11 @@ pub fn catenary_seed(system: &System, y: &mut [Real], ws: &mut Workspace) {
     system.point_kinematics(0.0, y, ws);
     let env = &system.environment;
     for (li, l) in system.lines.iter().enumerate() {
-        let n = l.fe.elements();
-        let length = l.fe.arc_length(n);
+        let n = l.mesh.elements();
+        let length = l.mesh.length();
         let (mut weight, mut ea) = (0.0, 0.0);
-        for &k in &l.fe.element_section {
-            let s = &l.fe.sections[k];
+        for &k in &l.mesh.element_section {
+            let s = &l.mesh.sections[k];
             weight += (s.line_type.mass_per_length - env.water_density * s.area)
                 * env.gravity
                 * s.element_length;
@@ -172,18 +172,22 @@ pub fn catenary_seed(system: &System, y: &mut [Real], ws: &mut Workspace) {
             None
         };
         let o = system.layout.line_offset[li];
-        for i in 1..n {
-            let s_a = l.fe.arc_length(i);
-            let s = if reversed { length - s_a } else { s_a };
-            let p = match &cat {
-                Some(c) => {
-                    let (x, z) = c.position(s);
-                    lo + dir * x + Vec3::z() * (z * w.signum())
+        let shape: Vec<Vec3> = (0..=n)
+            .map(|i| {
+                let s_a = l.mesh.arc_length(i);
+                let s = if reversed { length - s_a } else { s_a };
+                match (&cat, i) {
+                    (_, 0) => pa,
+                    (_, i) if i == n => pb,
+                    (Some(c), _) => {
+                        let (x, z) = c.position(s);
+                        lo + dir * x + Vec3::z() * (z * w.signum())
+                    }
+                    (None, _) => pa + (pb - pa) * (s_a / length),
                 }
-                None => pa + (pb - pa) * (s_a / length),
-            };
-            set3(&mut y[o..], i - 1, &p);
-        }
+            })
+            .collect();
+        l.set_shape(&shape, &mut y[o..]);
     }
 }
 
@@ -197,11 +201,15 @@ fn newton_step(
     delta: &mut [Real],
 ) -> bool {
     for (li, l) in system.lines.iter().enumerate() {
-        let n = l.fe.elements();
+        let n = l.vectors() - 1;
         let o = system.layout.line_offset[li];
         let b = &mut ws.blocks[li];
+        // A tangent moves by about a position's move over an element length: its shift is
+        // the same stiffness per metre times l².
+        let l2 = l.mesh.shortest_element().powi(2);
         for i in 0..=n {
-            b.diag[i] -= Mat3::identity() * shift;
+            let s = if l.is_tangent(i) { shift * l2 } else { shift };
+            b.diag[i] -= Mat3::identity() * s;
         }
         for i in 1..n {
             b.x[i] = -get3(&r[o..], i - 1);
@@ -224,7 +232,7 @@ fn newton_step(
     delta.iter_mut().for_each(|d| *d = 0.0);
     for (li, l) in system.lines.iter().enumerate() {
         let o = system.layout.line_offset[li];
-        for i in 1..l.fe.elements() {
+        for i in 1..l.vectors() - 1 {
             set3(&mut delta[o..], i - 1, &ws.blocks[li].x[i]);
         }
     }
@@ -257,7 +265,7 @@ fn newton(
     let max_step = system
         .lines
         .iter()
-        .map(|l| l.fe.arc_length(l.fe.elements()))
+        .map(|l| l.mesh.length())
         .fold(0.0, Real::max)
         * 0.2;
     // Convergence is judged on the largest nodal imbalance; steps are accepted on the 2-norm,
@@ -402,8 +410,8 @@ fn check_supported(system: &System) -> Result<(), StaticsError> {
             if roots[l.end_a] != root {
                 continue;
             }
-            for &k in &l.fe.element_section {
-                let s = &l.fe.sections[k];
+            for &k in &l.mesh.element_section {
+                let s = &l.mesh.sections[k];
                 net.z -= (s.line_type.mass_per_length - env.water_density * s.area)
                     * g
                     * s.element_length;

@@ -51,6 +51,7 @@ pub fn single_line(
             }],
             formulation: Formulation::Fe,
             mass_matrix: mass,
+            strain_measure: Default::default(),
             end_a: LineEnd::Point(0),
             end_b: LineEnd::Point(1),
         }],
@@ -132,7 +133,7 @@ pub fn fixed_step_settings(dt: Real, scheme: Scheme) -> Settings {
 /// are not supported here and panic).
 pub fn node_state(system: &System, y: &[Real], line: usize, node: usize) -> (Vec3, Vec3) {
     let l = &system.lines[line];
-    let n = l.fe.elements();
+    let n = l.mesh.elements();
     if node == 0 || node == n {
         let p = if node == 0 { l.end_a } else { l.end_b };
         return match system.layout.point_offset[p] {
@@ -167,7 +168,7 @@ pub fn set_node_state(
     velocity: Vec3,
 ) {
     let l = &system.lines[line];
-    let n = l.fe.elements();
+    let n = l.mesh.elements();
     let (po, vo) = if node == 0 || node == n {
         let p = if node == 0 { l.end_a } else { l.end_b };
         let o = system.layout.point_offset[p].expect("set_node_state: end is not a free point");
@@ -185,7 +186,7 @@ pub fn set_node_state(
 
 /// Element strains ε = |r_{i+1} − r_i|/L0 − 1 of line `line` computed from the state alone.
 pub fn strains_from_state(system: &System, y: &[Real], line: usize, out: &mut [Real]) {
-    let fe = &system.lines[line].fe;
+    let fe = &system.lines[line].mesh;
     let mut prev = node_state(system, y, line, 0).0;
     for (e, s) in out.iter_mut().enumerate().take(fe.elements()) {
         let next = node_state(system, y, line, e + 1).0;
