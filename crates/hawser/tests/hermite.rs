@@ -1,0 +1,228 @@
+//! The `hermite` formulation (issue 4 item 1) against closed forms: the elastic catenary
+//! (end tensions and the observed order of the position error), simply supported beam
+//! frequencies from its bending stiffness, and agreement with `fe` on the same scenario.
+
+mod common;
+use common::*;
+use hawser::formulation::hermite::point_on_element;
+use hawser::linalg::eigen::dense_generalized;
+use hawser::linearise::{LinearisationOptions, linearise};
+use hawser::math::{Real, Vec3};
+use hawser::model::{Formulation, MassMatrix, Model};
+use hawser::statics::{StaticOptions, catenary, evaluate, solve};
+use hawser::system::System;
+
+const W_WET: Real = (20.0 - 1025.0 * std::f64::consts::PI * 0.05 * 0.05 / 4.0) * 9.80665;
+
+/// The suspended catenary of tests/catenary.rs (110 m between points 80 m apart and 60 m
+/// up), with `n` elements of `formulation`.
+fn catenary_model(n: usize, formulation: Formulation) -> Model {
+    let mut m = single_line(
+        line_type(0.05, 20.0, 5.0e7),
+        110.0,
+        n,
+        fixed("A", Vec3::new(0.0, 0.0, -500.0)),
+        fixed("B", Vec3::new(80.0, 0.0, -440.0)),
+        MassMatrix::Consistent,
+    );
+    m.lines[0].formulation = formulation;
+    m
+}
+
+/// Position errors [m] of a static solution against the closed form.
+struct PositionErrors {
+    /// Largest error at the nodes.
+    nodes: Real,
+    /// Largest distance from points inside the elements (9 per element, along the Hermite
+    /// interpolation) to the exact curve: the error of the shape.
+    shape: Real,
+    /// Largest error of those points against the exact position of the same material point
+    /// (the same unstretched arc length): shape plus the error along the curve.
+    material: Real,
+}
+
+/// Static end tension errors (relative) and position errors against the closed form.
+fn catenary_errors(n: usize) -> (Real, Real, PositionErrors) {
+    let model = catenary_model(n, Formulation::Hermite);
+    let system = System::new(&model).unwrap();
+    let sol = solve(&system, None, &StaticOptions::default()).expect("statics converges");
+    let mut ws = system.workspace();
+    evaluate(&system, &sol.state, &mut ws);
+    let exact = catenary::solve(80.0, 60.0, 110.0, W_WET, 5.0e7, false).unwrap();
+    let at = |s: Real| {
+        let (x, z) = exact.position(s);
+        Vec3::new(x, 0.0, -500.0 + z)
+    };
+    let ta = system.end_force(&ws, 0, false).norm();
+    let tb = system.end_force(&ws, 0, true).norm();
+    let l = &system.lines[0];
+    let q = &ws.lines[0].position;
+    let mut err = PositionErrors {
+        nodes: 0.0,
+        shape: 0.0,
+        material: 0.0,
+    };
+    for i in 0..=n {
+        let d = q[l.node_vector(i)] - at(l.mesh.arc_length(i));
+        err.nodes = err.nodes.max(d.norm());
+    }
+    for e in 0..n {
+        for k in 1..10 {
+            let xi = k as Real / 10.0;
+            let (r, _) = point_on_element(&l.mesh, q, e, xi);
+            let s = l.mesh.arc_length(e) + xi * l.mesh.section(e).element_length;
+            let d = r - at(s);
+            err.material = err.material.max(d.norm());
+            // Distance to the curve: remove the component along the exact tangent (the
+            // nearest exact point is that far along the curve, to second order).
+            let h = 1e-4;
+            let t = (at(s + h) - at(s - h)).normalize();
+            err.shape = err.shape.max((d - t * d.dot(&t)).norm());
+        }
+    }
+    (
+        (ta - exact.tension_a()).abs() / exact.tension_a(),
+        (tb - exact.tension_b()).abs() / exact.tension_b(),
+        err,
+    )
+}
+
+/// End tensions within 3e-5 with 8 elements (fe needs 100 elements for 3.6e-5), converging
+/// at order 4; nodal positions converge at order 4 (the issue asks 4 for `hermite`
+/// positions): the observed order between halvings from N = 8 on must be at least 3.7
+/// (4 − 0.3, the tolerance the issues give convergence rates) until round-off (1e-9 m).
+///
+/// Inside the elements the error converges at order 3.2 only (measured 3.16 and 3.22), both
+/// the distance to the exact curve and the error of a material point: this nearly
+/// inextensible line (EA/T ≈ 5000) asks |r'| ≈ 1 at every Gauss point, which a curved cubic
+/// can meet only approximately (three-point reduced integration of the axial term measured
+/// the same order, so it is not the quadrature). Reported, and checked at ≥ 2.9; the
+/// nodal values, the end forces and everything computed from them converge at order 4.
+#[test]
+fn catenary_end_tensions_and_fourth_order_positions() {
+    let runs: Vec<_> = [2, 4, 8, 16, 32]
+        .iter()
+        .map(|&n| (n, catenary_errors(n)))
+        .collect();
+    for (n, (ea, eb, e)) in &runs {
+        eprintln!(
+            "N = {n:2}: end tension errors A {ea:.2e}, B {eb:.2e}; position errors nodes \
+             {:.2e} m, shape {:.2e} m, material point {:.2e} m",
+            e.nodes, e.shape, e.material
+        );
+    }
+    let (ea, eb, _) = &runs[2].1;
+    assert!(*ea < 3e-5 && *eb < 3e-5, "{ea:.2e} {eb:.2e}");
+    let order = |a: Real, b: Real| (a / b).log2();
+    for pair in runs.windows(2) {
+        let ((n0, a), (n1, b)) = (&pair[0], &pair[1]);
+        let orders = [
+            ("end tension A", order(a.0, b.0), b.0 * 1e4, 3.7),
+            ("nodes", order(a.2.nodes, b.2.nodes), b.2.nodes, 3.7),
+            ("shape", order(a.2.shape, b.2.shape), b.2.shape, 2.9),
+            (
+                "material point",
+                order(a.2.material, b.2.material),
+                b.2.material,
+                2.9,
+            ),
+        ];
+        for (what, p, size, min) in orders {
+            eprintln!("N = {n0} → {n1}: {what} order {p:.2}");
+            if size > 1e-9 && *n0 >= 8 {
+                assert!(p > min, "{what}: order {p:.2} between N = {n0} and {n1}");
+            }
+        }
+    }
+}
+
+/// A straight beam pinned at both ends (fixed points; the end tangents are free, so the
+/// moments vanish: simply supported), no gravity and no tension: transverse frequencies
+/// ω_n = (nπ/L)² √(EI/γ) (Euler–Bernoulli). Each appears twice (two transverse planes).
+/// Eigenvalues of the linearised K and M (the same force and mass code as the dynamics).
+/// With 12 elements the Hermite beam element's frequency error grows as (n h)⁴ (measured
+/// 4.6e-6, 5.2e-5, 2.6e-4 for n = 1, 2, 3: ratios 11 and 57 against 16 and 81): tolerance
+/// 5e-4 on the lowest three, and 1e-5 on the first.
+#[test]
+fn simply_supported_beam_frequencies() {
+    let (length, gamma, ei) = (10.0, 2.0, 500.0);
+    let mut lt = dry_line_type(0.05, gamma, 1.0e7);
+    lt.bending_stiffness = ei;
+    let mut model = single_line(
+        lt,
+        length,
+        12,
+        fixed("A", Vec3::zeros()),
+        fixed("B", Vec3::new(length, 0.0, 0.0)),
+        MassMatrix::Consistent,
+    );
+    model.environment = vacuum_environment(0.0);
+    model.lines[0].formulation = Formulation::Hermite;
+    let system = System::new(&model).unwrap();
+    let y = system.straight_state();
+    let lin = linearise(&system, &y, LinearisationOptions::default());
+    let k = lin.stiffness.symmetric_part().to_dense(&lin.dofs);
+    let m = lin.mass.to_dense(&lin.dofs);
+    let pairs = dense_generalized(&k, &m).expect("eigen solve");
+    let mut omegas: Vec<Real> = pairs.values.iter().map(|l| l.max(0.0).sqrt()).collect();
+    omegas.sort_by(|a, b| a.partial_cmp(b).unwrap());
+    for n in 1..=3 {
+        let exact = (n as Real * std::f64::consts::PI / length).powi(2) * (ei / gamma).sqrt();
+        for plane in 0..2 {
+            let w = omegas[2 * (n - 1) + plane];
+            let e = (w - exact).abs() / exact;
+            eprintln!("mode {n} plane {plane}: ω = {w:.6} rad/s vs {exact:.6} ({e:.2e})");
+            assert!(
+                e < if n == 1 { 1e-5 } else { 5e-4 },
+                "mode {n}: {w} vs {exact}"
+            );
+        }
+    }
+}
+
+/// The same catenary mooring with the seabed, solved by `fe` and by `hermite`: static end
+/// tensions within 0.1 % (issue 4 item 4) on converged meshes (5 m elements for `hermite`,
+/// 1.25 m for `fe`; the anchor tension converges slowly in both, through the kink of the
+/// shape at the touchdown point: fe 280 → 560 elements and hermite 70 → 140 change it by
+/// 0.1–0.5 %), and both within 0.2 % of the closed form with seabed contact.
+#[test]
+fn fe_and_hermite_agree_on_a_grounded_catenary() {
+    let tensions = |formulation: Formulation, n: usize| {
+        let mut m = single_line(
+            line_type(0.137, 126.0, 5.8e8),
+            700.0,
+            n,
+            fixed("anchor", Vec3::new(-600.0, 0.0, -150.0)),
+            fixed("fairlead", Vec3::new(0.0, 0.0, -15.0)),
+            MassMatrix::Consistent,
+        );
+        m.environment.depth = 150.0;
+        m.environment.seabed.stiffness = 3.0e6;
+        m.lines[0].formulation = formulation;
+        let system = System::new(&m).unwrap();
+        let sol = solve(&system, None, &StaticOptions::default()).expect("statics converges");
+        let mut ws = system.workspace();
+        evaluate(&system, &sol.state, &mut ws);
+        (
+            system.end_force(&ws, 0, false).norm(),
+            system.end_force(&ws, 0, true).norm(),
+        )
+    };
+    let fe = tensions(Formulation::Fe, 560);
+    let he = tensions(Formulation::Hermite, 140);
+    let w = (126.0 - 1025.0 * std::f64::consts::PI * 0.137f64.powi(2) / 4.0) * 9.80665;
+    let exact = catenary::solve(600.0, 135.0, 700.0, w, 5.8e8, true).unwrap();
+    for (what, a, b, c) in [
+        ("anchor", fe.0, he.0, exact.tension_a()),
+        ("fairlead", fe.1, he.1, exact.tension_b()),
+    ] {
+        let e = (a - b).abs() / a;
+        eprintln!(
+            "{what}: fe {a:.2} N, hermite {b:.2} N ({e:.2e}); closed form {c:.2} N (fe {:+.2e}, hermite {:+.2e})",
+            a / c - 1.0,
+            b / c - 1.0
+        );
+        assert!(e < 1e-3, "{what}: fe {a} vs hermite {b}");
+        assert!((a / c - 1.0).abs() < 2e-3 && (b / c - 1.0).abs() < 2e-3);
+    }
+}
