@@ -119,9 +119,15 @@ enum Command {
         /// Time step [s] (default: the scenario's rule).
         #[arg(long)]
         dt: Option<Real>,
-        /// Mass matrix to measure: lumped, consistent or both.
+        /// Mass matrix to measure (`fe` lines): lumped, consistent or both.
         #[arg(long, default_value = "both")]
         mass: String,
+        /// Formulation of every line: as-is (the scenario's), fe or hermite.
+        #[arg(long, default_value = "as-is")]
+        formulation: String,
+        /// Integration scheme: as-is (the scenario's), rk4, ssp-rk3, three-level or all.
+        #[arg(long, default_value = "as-is")]
+        scheme: String,
         /// MoorDyn decks: move every Coupled/Vessel point with this vessel motion (columns t,
         /// x, y, z, roll, pitch, yaw in s, m, deg; its first row is t = 0).
         #[arg(long, value_name = "FILE")]
@@ -159,9 +165,22 @@ fn main() -> ExitCode {
             duration,
             dt,
             mass,
+            formulation,
+            scheme,
             vessel_motion,
             json,
-        } => bench(&file, duration, dt, &mass, vessel_motion, json),
+        } => bench(
+            &file,
+            duration,
+            dt,
+            BenchChoice {
+                mass: &mass,
+                formulation: &formulation,
+                scheme: &scheme,
+            },
+            vessel_motion,
+            json,
+        ),
         Command::Modes(args) => modes::run(&args),
     };
     match result {
@@ -552,14 +571,23 @@ impl Observer for Null {
     fn sample(&mut self, _: &System, _: Real, _: &[Real], _: &Workspace) {}
 }
 
+/// What `hawser bench` varies: mass matrix, formulation, scheme (as given on the command line).
+struct BenchChoice<'a> {
+    mass: &'a str,
+    formulation: &'a str,
+    scheme: &'a str,
+}
+
 fn bench(
     file: &Path,
     duration: Option<Real>,
     dt: Option<Real>,
-    which: &str,
+    choice: BenchChoice,
     vessel_motion: Option<PathBuf>,
     json: bool,
 ) -> Result<ExitCode> {
+    use hawser::model::{Formulation, Scheme};
+    let which = choice.mass;
     let deck = DeckArgs {
         deck_duration: duration,
         vessel_motion,
@@ -576,11 +604,50 @@ fn bench(
             return Ok(ExitCode::from(2));
         }
     };
+    let formulation = match choice.formulation {
+        "as-is" => None,
+        "fe" => Some(Formulation::Fe),
+        "hermite" => Some(Formulation::Hermite),
+        other => {
+            eprintln!("error: --formulation {other}: expected as-is, fe or hermite");
+            return Ok(ExitCode::from(2));
+        }
+    };
+    let schemes: Vec<Option<Scheme>> = match choice.scheme {
+        "as-is" => vec![None],
+        "rk4" => vec![Some(Scheme::Rk4)],
+        "ssp-rk3" => vec![Some(Scheme::SspRk3)],
+        "three-level" => vec![Some(Scheme::ThreeLevel)],
+        "all" => vec![
+            Some(Scheme::Rk4),
+            Some(Scheme::SspRk3),
+            Some(Scheme::ThreeLevel),
+        ],
+        other => {
+            eprintln!("error: --scheme {other}: expected as-is, rk4, ssp-rk3, three-level or all");
+            return Ok(ExitCode::from(2));
+        }
+    };
+    // Hermite lines have one (consistent) mass: measure it once.
+    let masses = if formulation == Some(Formulation::Hermite) {
+        &masses[masses.len() - 1..]
+    } else {
+        masses
+    };
     let mut results = Vec::new();
-    for &mass in masses {
+    for (&mass, scheme) in masses
+        .iter()
+        .flat_map(|m| schemes.iter().map(move |s| (m, *s)))
+    {
         let mut model = loaded.model.clone();
         for l in &mut model.lines {
             l.mass_matrix = mass;
+            if let Some(f) = formulation {
+                l.formulation = f;
+            }
+        }
+        if let Some(s) = scheme {
+            model.settings.scheme = s;
         }
         if let Some(d) = duration {
             model.settings.duration = d;
@@ -606,7 +673,11 @@ fn bench(
         let steps = sim.steps_done();
         let node_steps = nodes as f64 * steps as f64 / wall;
         let evals = node_steps * sim.evaluations_per_step() as f64;
+        let (limit, _) = system.stable_step(model.settings.scheme);
         results.push(serde_json::json!({
+            "formulation": system.lines.first().map_or("fe", |l| l.kind.name()),
+            "scheme": format!("{:?}", model.settings.scheme).to_lowercase(),
+            "stable_step": limit,
             "mass_matrix": format!("{mass:?}").to_lowercase(),
             "nodes": nodes,
             "time_step": sim.step,
@@ -623,9 +694,12 @@ fn bench(
         out!("{}", serde_json::to_string_pretty(&results)?);
     } else {
         out!(
-            "{:<12} {:>6} {:>10} {:>9} {:>9} {:>16} {:>16}",
+            "{:<8} {:<11} {:<12} {:>6} {:>10} {:>10} {:>9} {:>9} {:>16} {:>16}",
+            "form.",
+            "scheme",
             "mass",
             "nodes",
+            "limit [s]",
             "dt [s]",
             "steps",
             "wall [s]",
@@ -634,9 +708,12 @@ fn bench(
         );
         for r in &results {
             out!(
-                "{:<12} {:>6} {:>10.3e} {:>9} {:>9.3} {:>16.3e} {:>16.3e}",
+                "{:<8} {:<11} {:<12} {:>6} {:>10.3e} {:>10.3e} {:>9} {:>9.3} {:>16.3e} {:>16.3e}",
+                r["formulation"].as_str().unwrap_or(""),
+                r["scheme"].as_str().unwrap_or(""),
                 r["mass_matrix"].as_str().unwrap_or(""),
                 r["nodes"],
+                r["stable_step"].as_f64().unwrap_or(0.0),
                 r["time_step"].as_f64().unwrap_or(0.0),
                 r["steps"],
                 r["wall_s"].as_f64().unwrap_or(0.0),

@@ -2591,7 +2591,11 @@ pub fn parse_channel(name: &str, model: &Model) -> Result<Channel, String> {
                     }
                 }
             }
-            [_, el, "strain"] if el.starts_with("element") => {
+            [
+                _,
+                el,
+                quantity @ ("strain" | "curvature" | "bending_moment" | "shear_force"),
+            ] if el.starts_with("element") => {
                 let Ok(k) = el[7..].parse::<usize>() else {
                     return Err(format!("`{el}` is not an element"));
                 };
@@ -2602,9 +2606,12 @@ pub fn parse_channel(name: &str, model: &Model) -> Result<Channel, String> {
                         n.saturating_sub(1)
                     ));
                 }
-                return Ok(Channel::ElementStrain {
-                    line: li,
-                    element: k,
+                let (line, element) = (li, k);
+                return Ok(match *quantity {
+                    "strain" => Channel::ElementStrain { line, element },
+                    "curvature" => Channel::ElementCurvature { line, element },
+                    "bending_moment" => Channel::ElementBendingMoment { line, element },
+                    _ => Channel::ElementShearForce { line, element },
                 });
             }
             _ => {}
