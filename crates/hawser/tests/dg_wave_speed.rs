@@ -67,7 +67,7 @@ fn measure(order: usize) -> Real {
         t += dt;
         times.push(t);
         for (k, s) in stations.iter().enumerate() {
-            disp[k].push(line.position(&state, *s).x - s * (1.0 + pre));
+            disp[k].push(line.position(&state, &ends(t), *s).x - s * (1.0 + pre));
         }
     }
     let t75 = crossing(&times, &disp[0], 0.5 * delta).unwrap();

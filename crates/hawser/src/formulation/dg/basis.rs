@@ -102,6 +102,8 @@ pub struct Basis {
     pub phi: Vec<Real>,
     /// dφ_k/dξ(ξ_q), row-major `[q * (P+1) + k]`.
     pub dphi: Vec<Real>,
+    /// ∫₋₁^ξ_q φ_k dξ, row-major `[q * (P+1) + k]` (positions from q).
+    pub integral: Vec<Real>,
     /// φ_k(−1) = (−1)^k.
     pub left: Vec<Real>,
     /// (2k + 1)/2: the inverse of the reference mass matrix.
@@ -119,12 +121,18 @@ impl Basis {
         let (xi, weight) = gauss_legendre(points);
         let mut phi = vec![0.0; points * n];
         let mut dphi = vec![0.0; points * n];
-        let mut p = vec![0.0; n];
-        let mut dp = vec![0.0; n];
+        let mut integral = vec![0.0; points * n];
+        let mut p = vec![0.0; n + 1];
+        let mut dp = vec![0.0; n + 1];
         for q in 0..points {
-            legendre(order, xi[q], &mut p, &mut dp);
-            phi[q * n..(q + 1) * n].copy_from_slice(&p);
-            dphi[q * n..(q + 1) * n].copy_from_slice(&dp);
+            legendre(order + 1, xi[q], &mut p, &mut dp);
+            phi[q * n..(q + 1) * n].copy_from_slice(&p[..n]);
+            dphi[q * n..(q + 1) * n].copy_from_slice(&dp[..n]);
+            // ∫₋₁^ξ P_0 = ξ + 1, ∫₋₁^ξ P_k = (P_{k+1} − P_{k−1})/(2k + 1).
+            integral[q * n] = xi[q] + 1.0;
+            for k in 1..n {
+                integral[q * n + k] = (p[k + 1] - p[k - 1]) / (2 * k + 1) as Real;
+            }
         }
         Self {
             order,
@@ -133,6 +141,7 @@ impl Basis {
             weight,
             phi,
             dphi,
+            integral,
             left: (0..n)
                 .map(|k| if k % 2 == 0 { 1.0 } else { -1.0 })
                 .collect(),

@@ -331,9 +331,17 @@ impl DgLine {
     }
 
     /// Position [m] at arc length s [m] from the evolved position field r (ṙ = v/γ0).
-    pub fn position(&self, state: &[Real], s: Real) -> Vec3 {
+    /// External loads use [`DgLine::position_from_tangent`] instead (see the module doc).
+    pub fn evolved_position(&self, state: &[Real], s: Real) -> Vec3 {
         let (e, xi) = self.locate(s);
         self.eval_modes(e, self.fields(state, e).2, xi)
+    }
+
+    /// Position [m] at arc length s [m]: r = r_base + ∫₀ˢ q ds with the base of
+    /// [`DgLine::position_base`] (the positions the external loads see).
+    pub fn position(&self, state: &[Real], ends: &[EndState; 2], s: Real) -> Vec3 {
+        let base = self.position_base(state, ends);
+        self.position_from_tangent(state, base, s)
     }
 
     /// Position [m] at arc length s [m] integrated from end A's position `r_a` along q:

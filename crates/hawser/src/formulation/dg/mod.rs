@@ -68,7 +68,7 @@ use crate::math::{Real, Vec3};
 /// Line fields at one arc length, from a state and its last right-hand-side evaluation.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Channels {
-    /// Position r [m] (the evolved position field).
+    /// Position r [m]: r_A + ∫q ds from the base of the last right-hand side.
     pub position: Vec3,
     /// Strain ε = |q| − 1 [-].
     pub strain: Real,
@@ -90,7 +90,7 @@ impl DgLine {
         let sec = self.section(e);
         let el = &self.elements[e];
         let m3 = 3 * sec.basis.modes();
-        let (q, _, r) = self.fields(state, e);
+        let (q, _, _) = self.fields(state, e);
         let q = self.eval_modes(e, q, xi);
         let qdot = self.eval_modes(e, &rate[el.state..el.state + m3], xi);
         let l = q.norm().max(1e-12);
@@ -109,7 +109,7 @@ impl DgLine {
             shear = i.cross(&self.eval_modes(e, &ws.modes_tau[modes], xi)) / l;
         }
         Channels {
-            position: self.eval_modes(e, r, xi),
+            position: self.position_from_tangent(state, ws.base, s),
             strain: l - 1.0,
             tension,
             curvature,

@@ -21,6 +21,8 @@ use crate::physics::hydrodynamics::{added_mass_matrix, drag_force, fluid_inertia
 /// which the channel accessors read.
 #[derive(Clone, Debug)]
 pub struct DgWorkspace {
+    /// Position of end A [m] from which the positions were integrated in the last evaluation.
+    pub(crate) base: Vec3,
     // At quadrature points.
     pub(crate) pos: Vec<Vec3>,
     pub(crate) q: Vec<Vec3>,
@@ -73,6 +75,7 @@ impl DgWorkspace {
         let nm = 3 * line.mode_len();
         let v = |n| vec![Vec3::zeros(); n];
         Self {
+            base: Vec3::zeros(),
             pos: v(np),
             q: v(np),
             nu: v(np),
@@ -174,6 +177,26 @@ fn kinematics(q: &Vec3, qdot: &Vec3) -> (Real, Vec3, Real, Vec3) {
 }
 
 impl DgLine {
+    /// Position of end A [m] from which positions are integrated along q: end A's attachment
+    /// when it imposes velocity; else end B's attachment minus ∫₀ᴸ q when B imposes
+    /// velocity; else (both ends loaded by forces) the evolved position field at s = 0.
+    pub fn position_base(&self, state: &[Real], ends: &[EndState; 2]) -> Vec3 {
+        if self.ends[0].translation == Translation::Velocity {
+            return ends[0].position;
+        }
+        if self.ends[1].translation == Translation::Velocity {
+            let span = self.elements.iter().fold(Vec3::zeros(), |acc, el| {
+                acc + get3(&state[el.state..], 0) * el.length
+            });
+            return ends[1].position - span;
+        }
+        let (_, _, r) = self.fields(state, 0);
+        let m = self.section(0).basis.modes();
+        (0..m).fold(Vec3::zeros(), |acc, k| {
+            acc + get3(r, k) * if k % 2 == 0 { 1.0 } else { -1.0 }
+        })
+    }
+
     /// Axial wave speed λ = √(T'(ε)/γ0) [m/s] at strain ε of element `e` (DG paper eq. 25),
     /// with the tangent of the elastic law taken at max(ε, 0): a slack (or compressed)
     /// interface keeps the taut wave speed, so the Lax–Friedrichs flux stays dissipative in
@@ -201,21 +224,33 @@ impl DgLine {
     ) -> [EndLoad; 2] {
         let n = self.elements.len();
 
-        // 1. q, ν and r at the Gauss points and element ends.
+        // 1. q, ν and r at the Gauss points and element ends; positions r = r_A + ∫q ds.
+        let mut base = self.position_base(state, ends);
+        ws.base = base;
         for (e, el) in self.elements.iter().enumerate() {
             let sec = self.section(e);
             let b = &sec.basis;
+            let m = b.modes();
             let inv_gamma = 1.0 / sec.line_type.mass_per_length;
-            let (q, v, r) = self.fields(state, e);
+            let (q, v, _) = self.fields(state, e);
             let pts = el.point..el.point + b.points;
+            let half = 0.5 * el.length;
+            for (qp, out) in ws.pos[pts.clone()].iter_mut().enumerate() {
+                let row = &b.integral[qp * m..(qp + 1) * m];
+                let mut s = Vec3::zeros();
+                for (k, w) in row.iter().enumerate() {
+                    s += get3(q, k) * *w;
+                }
+                *out = base + s * half;
+            }
+            base += get3(q, 0) * el.length;
             let (l, rr) = eval(b, q, &mut ws.q[pts.clone()]);
             ws.end_q[2 * e] = l;
             ws.end_q[2 * e + 1] = rr;
             let (l, rr) = eval(b, v, &mut ws.nu[pts.clone()]);
             ws.end_nu[2 * e] = l * inv_gamma;
             ws.end_nu[2 * e + 1] = rr * inv_gamma;
-            ws.nu[pts.clone()].iter_mut().for_each(|x| *x *= inv_gamma);
-            eval(b, r, &mut ws.pos[pts]);
+            ws.nu[pts].iter_mut().for_each(|x| *x *= inv_gamma);
         }
 
         // 2. Fluxes of the q equation (F = v/γ0, DG paper eqs. 24–25).
