@@ -58,19 +58,34 @@ fn measured_limit(line: &DgLine, guess: Real, steps: usize) -> Real {
 }
 
 fn ratios(ei: Real, orders: &[usize], steps: usize) -> Vec<(usize, Real)> {
+    ratios_damped(ei, 0.0, 0.0, orders, steps)
+}
+
+/// Ratios estimate / measured limit for a 10 m line of 6 elements, γ0 = 10 kg/m, EA = 0.1 MN,
+/// bending stiffness `ei`, bending damping `zb` and axial damping `c`.
+fn ratios_damped(
+    ei: Real,
+    zb: Real,
+    c: Real,
+    orders: &[usize],
+    steps: usize,
+) -> Vec<(usize, Real)> {
     orders
         .iter()
         .map(|&p| {
-            let ends = if ei > 0.0 {
+            let ends = if ei > 0.0 || zb > 0.0 {
                 [EndCondition::CLAMPED, EndCondition::CLAMPED]
             } else {
                 [EndCondition::PINNED_JOINT, EndCondition::PINNED_JOINT]
             };
-            let line = single(beam_type(10.0, 1.0e5, ei), 10.0, 6, p, ends);
+            let mut lt = beam_type(10.0, 1.0e5, ei);
+            lt.bending_damping = zb;
+            lt.axial_damping = hawser::physics::material::AxialDamping::Coefficient(c);
+            let line = single(lt, 10.0, 6, p, ends);
             let estimate = stable_step(&line, 1.0);
             let limit = measured_limit(&line, estimate, steps);
             println!(
-                "EI {ei:e} P {p}: estimate {estimate:.4e} s, measured limit {limit:.4e} s, ratio {:.3}",
+                "EI {ei:e} ζb {zb:e} c {c:e} P {p}: estimate {estimate:.4e} s, measured limit {limit:.4e} s, ratio {:.3}",
                 estimate / limit
             );
             (p, estimate / limit)
@@ -84,6 +99,11 @@ fn stable_step_is_safe_and_not_too_cautious() {
     for ei in [0.0, 1.0e3, 1.0e5] {
         for (p, r) in ratios(ei, &[1, 2, 3, 4, 5, 6, 8], 1500) {
             all.push((ei, p, r));
+        }
+    }
+    for (zb, c) in [(1.0e2, 0.0), (0.0, 1.0e3)] {
+        for (p, r) in ratios_damped(1.0e3, zb, c, &[1, 2, 4, 6], 1500) {
+            all.push((zb + c, p, r));
         }
     }
     for (ei, p, r) in all {
