@@ -12,25 +12,6 @@ mod dg_common;
 use dg_common::*;
 use hawser::math::Real;
 
-/// Meshes N0, 2N0, 4N0 for order P.
-pub fn meshes(order: usize) -> [usize; 3] {
-    match order {
-        1 => [32, 64, 128],
-        2 => [16, 32, 64],
-        _ => [8, 16, 32],
-    }
-}
-
-/// Errors and rates for order P: (errors, rates).
-pub fn convergence(order: usize) -> (Vec<Real>, Vec<Real>) {
-    let errors: Vec<Real> = meshes(order)
-        .iter()
-        .map(|&n| ring_error(order, n, 0.0).0)
-        .collect();
-    let rates = errors.windows(2).map(|e| (e[0] / e[1]).log2()).collect();
-    (errors, rates)
-}
-
 #[test]
 fn ring_beam_converges_at_optimal_rates() {
     let mut failures = Vec::new();

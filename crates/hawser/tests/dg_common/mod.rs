@@ -124,3 +124,138 @@ pub fn ring_errors(order: usize, elements: usize, beta: Real) -> (Real, Real, us
         out.iterations,
     )
 }
+
+/// The vibrating cantilever of the DG paper (§4.2).
+pub mod cantilever {
+    use super::*;
+
+    /// Roots Ω_i L of 1 + cos x cosh x = 0 (eq. 44).
+    pub const ROOTS: [Real; 5] = [
+        1.875_104_068_711_961,
+        4.694_091_132_974_175,
+        7.854_757_438_237_613,
+        10.995_540_734_875_467,
+        14.137_168_391_046_47,
+    ];
+
+    pub const M: Real = 10.0;
+    pub const EI: Real = 1.0e5;
+    pub const EA: Real = 1.0e5;
+    pub const L: Real = 100.0;
+    pub const A: Real = 1.0e-3;
+
+    /// Mode shape Φ_i and its first three derivatives at s (eqs. 41–42), normalised to Φ(L) = 1.
+    pub fn mode(i: usize, s: Real) -> [Real; 4] {
+        let om = ROOTS[i] / L;
+        let d = (ROOTS[i].cos() + ROOTS[i].cosh()) / (ROOTS[i].sin() + ROOTS[i].sinh());
+        let raw = |s: Real| {
+            let x = om * s;
+            let (c, ch, sn, sh) = (x.cos(), x.cosh(), x.sin(), x.sinh());
+            [
+                0.5 * (c - ch + d * (sh - sn)),
+                0.5 * om * (-sn - sh + d * (ch - c)),
+                0.5 * om * om * (-c - ch + d * (sh + sn)),
+                0.5 * om.powi(3) * (sn - sh + d * (ch + c)),
+            ]
+        };
+        let tip = raw(L)[0];
+        raw(s).map(|v| v / tip)
+    }
+
+    /// Analytic period [s] (eq. 45).
+    pub fn period(i: usize) -> Real {
+        2.0 * std::f64::consts::PI / (ROOTS[i] * ROOTS[i] * (EI / (M * L.powi(4))).sqrt())
+    }
+
+    /// Outcome of [`cantilever`].
+    pub struct Outcome {
+        pub period: Real,
+        pub moment_error: Real,
+        pub shear_error: Real,
+        pub amplitude: Real,
+    }
+
+    /// The cantilever released from mode i: period from tip zero crossings over
+    /// `half_periods`, moment and shear errors at t = 0.
+    pub fn cantilever(i: usize, elements: usize, order: usize, half_periods: usize) -> Outcome {
+        let line = single(
+            beam_type(M, EA, EI),
+            L,
+            elements,
+            order,
+            [EndCondition::CLAMPED, EndCondition::FREE],
+        );
+        let env = vacuum();
+        let mut state = vec![0.0; line.state_len()];
+        line.project(&mut state, |s| {
+            let f = mode(i, s);
+            let q = Vec3::new(1.0, 0.0, A * f[1]);
+            (Vec3::new(s, 0.0, A * f[0]), q / q.norm(), Vec3::zeros())
+        });
+        let ends = fixed_ends(Vec3::zeros(), Vec3::new(L, 0.0, 0.0));
+        let mut ws = DgWorkspace::new(&line);
+        let mut rate = vec![0.0; line.state_len()];
+        line.rhs(&env, 0.0, &state, &ends, &mut rate, &mut ws);
+        // Moment and shear at t = 0 against A EI Φ'' and −A EI Φ''' (y along +z: M = EI y'' ŷ·(−1)
+        // for a deflection in z, see below), relative to their largest values.
+        let (mut em, mut es, mut mmax, mut smax) =
+            (0.0 as Real, 0.0 as Real, 0.0 as Real, 0.0 as Real);
+        for k in 0..=200 {
+            let s = L * k as Real / 200.0;
+            let c = line.channels(&state, &rate, &ws, s);
+            let f = mode(i, s);
+            // î = x̂, κ = y'' ẑ: M = î × EI κ = −EI y'' ŷ; T_s = î × ∂M/∂s = EI y''' ... × = −EI y''' ẑ.
+            let m_exact = -A * EI * f[2];
+            let s_exact = -A * EI * f[3];
+            em = em.max((c.moment.y - m_exact).abs());
+            es = es.max((c.shear.z - s_exact).abs());
+            mmax = mmax.max(m_exact.abs());
+            smax = smax.max(s_exact.abs());
+        }
+        let mut stepper = DgStepper::new(&line);
+        let dt = stable_step(&line, 0.8);
+        let mut t = 0.0;
+        let mut prev = line.position(&state, &ends, L).z;
+        let mut crossings = Vec::new();
+        let mut amplitude: Real = 0.0;
+        while crossings.len() < half_periods + 1 {
+            stepper.step(&line, &env, t, dt, &mut state, &mut ws, |_| ends);
+            t += dt;
+            let z = line.position(&state, &ends, L).z;
+            if (prev > 0.0) != (z > 0.0) {
+                crossings.push(t - dt * z / (z - prev));
+            }
+            if crossings.len() == half_periods {
+                amplitude = amplitude.max(z.abs());
+            }
+            prev = z;
+            assert!(z.is_finite() && t < 10.0 * period(i) * half_periods as Real);
+        }
+        let n = crossings.len() - 1;
+        Outcome {
+            period: 2.0 * (crossings[n] - crossings[0]) / n as Real,
+            moment_error: em / mmax,
+            shear_error: es / smax,
+            amplitude,
+        }
+    }
+}
+
+/// Meshes N0, 2N0, 4N0 for order P.
+pub fn meshes(order: usize) -> [usize; 3] {
+    match order {
+        1 => [32, 64, 128],
+        2 => [16, 32, 64],
+        _ => [8, 16, 32],
+    }
+}
+
+/// Errors and rates for order P: (errors, rates).
+pub fn convergence(order: usize) -> (Vec<Real>, Vec<Real>) {
+    let errors: Vec<Real> = meshes(order)
+        .iter()
+        .map(|&n| ring_error(order, n, 0.0).0)
+        .collect();
+    let rates = errors.windows(2).map(|e| (e[0] / e[1]).log2()).collect();
+    (errors, rates)
+}
