@@ -100,7 +100,11 @@ fn main() {
          (N 10, P 4), 4.9e-5 m (N 20, P 4), 2.2e-5 m (N 10, P 6) |\n\
          | stable step vs measured SSP-RK3 limit | `dg_stable_step` | 0.45–0.90 of the \
          limit, P = 1..8, with and without EI, ζb, c |\n\
-         | allocations in 200 steps | `dg_no_alloc` | 0 |\n"
+         | allocations in 200 steps | `dg_no_alloc` | 0 |\n\
+         | point force at a free end carried to the anchor (Newton) | `dg_end_loads` | \
+         1000.000 N of 1000 N; tip at L(1 + F/EA) |\n\
+         | ring beam: clamp reaction moment, curvature, moment, shear at s = 2 (N 8, P 4) | \
+         `dg_end_loads` | 1.0000084 N·m; κ 1.000014; M 1.000014 N·m; T_s 3.7e-5 N |\n"
     )
     .unwrap();
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../../docs/verification/dg.md");
