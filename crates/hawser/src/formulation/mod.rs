@@ -11,6 +11,7 @@
 //!   (2N + 2 vectors, block bandwidth 3; the last two are swapped so that both end positions
 //!   sit at the ends), see [`hermite::vector_index`].
 
+pub mod dg;
 pub mod fe;
 pub mod hermite;
 

@@ -1,0 +1,117 @@
+//! No allocation in the `dg` time loop: after warm-up, 200 SSP-RK3 steps and 200 right-hand
+//! sides of a two-section line with bending, bending damping, axial damping, drag, added
+//! mass, current, seabed contact and mixed orders allocate nothing.
+
+mod dg_common;
+use dg_common::*;
+use hawser::formulation::dg::*;
+use hawser::math::{Real, Vec3};
+use hawser::physics::environment::{Current, Environment};
+use hawser::physics::hydrodynamics::DragModel;
+use hawser::physics::material::AxialDamping;
+use std::alloc::{GlobalAlloc, Layout, System as SystemAlloc};
+use std::cell::Cell;
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+struct Counting;
+static ALLOCATIONS: AtomicUsize = AtomicUsize::new(0);
+thread_local! {
+    static COUNTING: Cell<bool> = const { Cell::new(false) };
+}
+fn note() {
+    if COUNTING.with(|c| c.get()) {
+        ALLOCATIONS.fetch_add(1, Ordering::Relaxed);
+    }
+}
+unsafe impl GlobalAlloc for Counting {
+    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        note();
+        unsafe { SystemAlloc.alloc(layout) }
+    }
+    unsafe fn alloc_zeroed(&self, layout: Layout) -> *mut u8 {
+        note();
+        unsafe { SystemAlloc.alloc_zeroed(layout) }
+    }
+    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
+        note();
+        unsafe { SystemAlloc.realloc(ptr, layout, new_size) }
+    }
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        unsafe { SystemAlloc.dealloc(ptr, layout) }
+    }
+}
+#[global_allocator]
+static GLOBAL: Counting = Counting;
+
+fn counted(f: impl FnOnce()) -> usize {
+    let before = ALLOCATIONS.load(Ordering::Relaxed);
+    COUNTING.with(|c| c.set(true));
+    f();
+    COUNTING.with(|c| c.set(false));
+    ALLOCATIONS.load(Ordering::Relaxed) - before
+}
+
+#[test]
+fn dg_time_loop_does_not_allocate() {
+    let mut a = beam_type(50.0, 1.0e7, 1.0e3);
+    a.diameter = 0.1;
+    a.bending_damping = 1.0;
+    a.axial_damping = AxialDamping::Coefficient(1.0e4);
+    a.drag = DragModel::Morison {
+        normal: 1.2,
+        tangential: 0.02,
+    };
+    a.normal_added_mass = 1.0;
+    a.tangential_added_mass = 0.1;
+    a.compression = false;
+    let mut b = a.clone();
+    b.mass_per_length = 20.0;
+    let line = DgLine::new(
+        &[
+            DgSectionSpec {
+                line_type: a,
+                length: 60.0,
+                elements: 4,
+                order: 4,
+            },
+            DgSectionSpec {
+                line_type: b,
+                length: 60.0,
+                elements: 3,
+                order: 6,
+            },
+        ],
+        [EndCondition::CLAMPED, EndCondition::PRESCRIBED_PINNED],
+    );
+    let env = Environment {
+        depth: 100.0,
+        current: Current::Uniform(Vec3::new(0.5, 0.0, 0.0)),
+        ..Default::default()
+    };
+    let (pa, pb) = (Vec3::new(0.0, 0.0, -100.0), Vec3::new(100.0, 0.0, -20.0));
+    let mut state = vec![0.0; line.state_len()];
+    line.straight(&mut state, pa, pb);
+    let ends = |t: Real| {
+        let mut e = fixed_ends(pa, pb);
+        e[1].velocity = Vec3::new(0.0, 0.0, 0.5 * t.cos());
+        e
+    };
+    let mut ws = DgWorkspace::new(&line);
+    let mut st = DgStepper::new(&line);
+    let mut rate = vec![0.0; line.state_len()];
+    let dt = stable_step(&line, 0.8);
+    let mut t = 0.0;
+    for _ in 0..5 {
+        st.step(&line, &env, t, dt, &mut state, &mut ws, ends);
+        t += dt;
+    }
+    let n = counted(|| {
+        for _ in 0..200 {
+            st.step(&line, &env, t, dt, &mut state, &mut ws, ends);
+            t += dt;
+            line.rhs(&env, t, &state, &ends(t), &mut rate, &mut ws);
+        }
+    });
+    assert!(state.iter().all(|x| x.is_finite()));
+    assert_eq!(n, 0, "{n} allocations in the dg time loop");
+}
