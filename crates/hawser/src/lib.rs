@@ -22,6 +22,7 @@ pub mod physics;
 pub mod simulation;
 pub mod statics;
 pub mod system;
+pub mod verification;
 
 pub use error::{ModalError, ModelError, SimulationError, StaticsError};
 pub use model::Model;

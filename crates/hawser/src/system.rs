@@ -335,6 +335,100 @@ impl System {
         y
     }
 
+    /// Sets line `line`'s unknowns in `y` from a continuous configuration: `shape(s)` gives the
+    /// position [m] and velocity [m/s] at unstretched arc length s [m] from end A. The ends
+    /// stay with their points (set free points through [`Layout::point_offset`]). This is the
+    /// formulation-neutral way to start a line from a given shape: the nodes take it at their
+    /// arc lengths and [`SystemLine::set_shape`] derives the other unknowns (`hermite`
+    /// tangents and their rates by finite differences, exact for straight lines and linear in
+    /// the shape, so a rigidly moved shape gives rigidly moved unknowns).
+    pub fn set_line_shape(
+        &self,
+        y: &mut [Real],
+        line: usize,
+        shape: impl Fn(Real) -> (Vec3, Vec3),
+    ) {
+        let l = &self.lines[line];
+        let (r, v): (Vec<Vec3>, Vec<Vec3>) =
+            (0..l.nodes()).map(|i| shape(l.mesh.arc_length(i))).unzip();
+        let o = self.layout.line_offset[line];
+        let m = self.layout.line_interior[line];
+        l.set_shape(&r, &mut y[o..o + 3 * m]);
+        l.set_shape(&v, &mut y[o + 3 * m..o + 6 * m]);
+    }
+
+    /// Mechanical energy of the state `y` at time t [J]: kinetic energy ½ q̇ᵀ M q̇ of the lines
+    /// (with the mass matrix of their formulation, without added mass) and of the free points
+    /// (their own mass), the potential of weight in air (γ0 g z integrated along the lines,
+    /// m g z of the points: buoyancy and fluid forces are not conservative in general and are
+    /// left out, so the sum is conserved only in air or vacuum without drag or damping), and
+    /// the strain energy: axial ∫ ∫₀^ε T_e(e) de ds and, for `hermite`, bending ∫ ½ EI |r''|² ds.
+    /// Each integral uses the formulation's own quadrature, so the potential is the one whose
+    /// gradient the formulation's forces are. Fills `ws`'s line vectors and point kinematics.
+    pub fn mechanical_energy(&self, t: Real, y: &[Real], ws: &mut Workspace) -> Energy {
+        self.point_kinematics(t, y, ws);
+        self.gather_lines(y, ws);
+        let g = self.environment.gravity;
+        let mut energy = Energy::default();
+        for (li, l) in self.lines.iter().enumerate() {
+            let (q, qdot) = (&ws.lines[li].position, &ws.lines[li].velocity);
+            let n = l.mesh.elements();
+            for e in 0..n {
+                let s = l.mesh.section(e);
+                let (l0, gamma) = (s.element_length, s.line_type.mass_per_length);
+                let m = gamma * l0;
+                match l.kind {
+                    LineKind::Fe { mass_matrix } => {
+                        let (va, vb) = (qdot[e], qdot[e + 1]);
+                        energy.kinetic += match mass_matrix {
+                            crate::model::MassMatrix::Lumped => {
+                                0.25 * m * (va.norm_squared() + vb.norm_squared())
+                            }
+                            // ½ [va vb] (m/6)[2 1; 1 2] [va vb]ᵀ (position-vector paper eq. 12)
+                            crate::model::MassMatrix::Consistent => {
+                                m / 6.0 * (va.norm_squared() + va.dot(&vb) + vb.norm_squared())
+                            }
+                        };
+                        energy.gravity += m * g * 0.5 * (q[e].z + q[e + 1].z);
+                        let strain = (q[e + 1] - q[e]).norm() / l0 - 1.0;
+                        energy.elastic += l0 * strain_energy_density(&s.law, strain);
+                    }
+                    LineKind::Hermite(options) => {
+                        use crate::formulation::hermite::{GAUSS, element_vectors, shape};
+                        let idx = element_vectors(e, n);
+                        let at = |w: &[Real; 4], v: &[Vec3]| {
+                            idx.iter().zip(w).map(|(&k, &wk)| v[k] * wk).sum::<Vec3>()
+                        };
+                        for (xi, weight) in GAUSS {
+                            let (sh, d1, d2, _) = shape(xi, l0);
+                            let (r, r1, r2) = (at(&sh, q), at(&d1, q), at(&d2, q));
+                            let ds = weight * l0;
+                            energy.kinetic += 0.5 * gamma * at(&sh, qdot).norm_squared() * ds;
+                            energy.gravity += gamma * g * r.z * ds;
+                            let strain = match options.strain {
+                                crate::model::StrainMeasure::Exact => r1.norm() - 1.0,
+                                crate::model::StrainMeasure::SmallStrain => {
+                                    0.5 * (r1.norm_squared() - 1.0)
+                                }
+                            };
+                            energy.elastic += (strain_energy_density(&s.law, strain)
+                                + 0.5 * s.line_type.bending_stiffness * r2.norm_squared())
+                                * ds;
+                        }
+                    }
+                }
+            }
+        }
+        for (p, point) in self.points.iter().enumerate() {
+            if let PointKind::Free { mass, .. } = point.kind {
+                let k = &ws.points[p];
+                energy.kinetic += 0.5 * mass * k.velocity.norm_squared();
+                energy.gravity += mass * g * k.position.z;
+            }
+        }
+        energy
+    }
+
     /// Updates the point kinematics at time t from the state (positions and velocities).
     pub fn point_kinematics(&self, t: Real, y: &[Real], ws: &mut Workspace) {
         for (i, p) in self.points.iter().enumerate() {
@@ -752,6 +846,56 @@ impl System {
             return (Real::INFINITY, culprit);
         }
         (radius / worst, culprit)
+    }
+}
+
+/// Mechanical energy of a state [J] ([`System::mechanical_energy`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Energy {
+    /// Kinetic energy [J].
+    pub kinetic: Real,
+    /// Potential energy of weight in air, relative to z = 0 [J].
+    pub gravity: Real,
+    /// Elastic strain energy [J].
+    pub elastic: Real,
+}
+
+impl Energy {
+    /// The sum [J].
+    pub fn total(&self) -> Real {
+        self.kinetic + self.gravity + self.elastic
+    }
+}
+
+/// Elastic strain energy per unit unstretched length ∫₀^ε T_e(e) de [J/m] of an axial law
+/// (zero in compression unless the law carries it; a table integrates exactly piecewise).
+fn strain_energy_density(law: &crate::physics::material::AxialLaw, strain: Real) -> Real {
+    use crate::physics::material::AxialStiffness;
+    if !(strain > 0.0) {
+        return if law.compression {
+            0.5 * law.stiffness.max_tangent() * strain * strain
+        } else {
+            0.0
+        };
+    }
+    match &law.stiffness {
+        AxialStiffness::Linear(ea) => 0.5 * ea * strain * strain,
+        AxialStiffness::Table { strain: e, .. } => {
+            // Trapezoids between the table's breakpoints below ε, then up to ε.
+            let mut w = 0.0;
+            let mut prev = 0.0;
+            for &ek in e.iter().skip(1).take_while(|&&ek| ek < strain) {
+                w += 0.5
+                    * (law.stiffness.tension_and_tangent(prev).0
+                        + law.stiffness.tension_and_tangent(ek).0)
+                    * (ek - prev);
+                prev = ek;
+            }
+            w + 0.5
+                * (law.stiffness.tension_and_tangent(prev).0
+                    + law.stiffness.tension_and_tangent(strain).0)
+                * (strain - prev)
+        }
     }
 }
 

@@ -22,36 +22,12 @@ mod common;
 use common::*;
 use hawser::math::{Mat3, Real, Vec3};
 use hawser::model::*;
-use hawser::physics::material::AxialDamping;
 use hawser::simulation::Simulation;
 use hawser::system::System;
 
-/// Two free points joined by one line of `n` elements; the points have a little mass, volume
-/// and drag area so that every physics term of a point is exercised.
+/// Two free points joined by one `fe` line of `n` elements (`hawser::verification::free_free`).
 fn free_free(n: usize, mass_matrix: MassMatrix, with_fluid: bool) -> Model {
-    let mut lt = if with_fluid {
-        line_type(0.05, 2.0, 2.0e5)
-    } else {
-        dry_line_type(0.05, 2.0, 2.0e5)
-    };
-    lt.axial_damping = AxialDamping::Coefficient(300.0);
-    let point = |name: &str, x: Real| Point {
-        name: name.into(),
-        position: Vec3::new(x, 0.0, 100.0),
-        kind: PointKind::Free {
-            mass: 3.0,
-            volume: 0.01,
-            drag_area: if with_fluid { 0.05 } else { 0.0 },
-            added_mass_coefficient: 1.0,
-            force: Vec3::zeros(),
-        },
-    };
-    let mut model = single_line(lt, 8.0, n, point("A", 0.0), point("B", 8.0), mass_matrix);
-    model.environment.gravity = 0.0;
-    if !with_fluid {
-        model.environment.air_density = 0.0;
-    }
-    model
+    hawser::verification::free_free(Formulation::Fe, mass_matrix, n, with_fluid)
 }
 
 /// All nodes' positions and velocities (ends included) of line 0.
