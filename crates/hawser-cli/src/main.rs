@@ -17,6 +17,7 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 mod modes;
+mod validate;
 
 /// `println!` that ends the program quietly when stdout is a closed pipe (`hawser ... | head`)
 /// instead of panicking.
@@ -138,6 +139,9 @@ enum Command {
     },
     /// Natural frequencies, mode shapes, connection stiffness and resonance check.
     Modes(modes::ModesArgs),
+    /// Run the verification suite: analytic checks for every formulation, a table, and the
+    /// report docs/verification/report.md with plots; exits 1 when a check fails.
+    Validate(validate::ValidateArgs),
 }
 
 /// Exit codes: 0 success, 1 simulation or statics failure, 2 bad input.
@@ -182,6 +186,7 @@ fn main() -> ExitCode {
             json,
         ),
         Command::Modes(args) => modes::run(&args),
+        Command::Validate(args) => validate::run(&args),
     };
     match result {
         Ok(code) => code,

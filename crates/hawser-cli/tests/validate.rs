@@ -1,0 +1,97 @@
+//! `hawser validate --quick`: the verification suite's CI subset through the binary — every
+//! case runs (or says why it cannot), nothing fails, the report and its plots are written.
+
+use std::process::Command;
+
+#[test]
+fn quick_suite_passes_and_writes_the_report() {
+    let dir = std::env::temp_dir().join(format!("hawser_validate_{}", std::process::id()));
+    let report = dir.join("verification").join("report.md");
+    let out = Command::new(env!("CARGO_BIN_EXE_hawser"))
+        .args(["validate", "--quick", "--report"])
+        .arg(&report)
+        .output()
+        .expect("hawser runs");
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        out.status.success(),
+        "exit {:?}\n{stdout}\n{stderr}",
+        out.status
+    );
+    // One row per case and formulation, with the table's columns.
+    assert!(stdout.starts_with("case"), "{stdout}");
+    for column in [
+        "quantity",
+        "expected",
+        "computed",
+        "error",
+        "tolerance",
+        "result",
+    ] {
+        assert!(stdout.lines().next().unwrap().contains(column), "{stdout}");
+    }
+    for case in [
+        "catenary_suspended",
+        "catenary_seabed",
+        "hanging_mass",
+        "axial_wave_speed",
+        "taut_string",
+        "beam_bending",
+        "rigid_rotation",
+        "energy",
+        "steady_towed_cable",
+        "convergence_order",
+    ] {
+        for formulation in ["fe", "hermite", "dg"] {
+            assert!(
+                stdout
+                    .lines()
+                    .any(|l| l.starts_with(case) && l.contains(&format!(" {formulation} "))),
+                "no row for {case} with {formulation}:\n{stdout}"
+            );
+        }
+    }
+    // fe runs the analytic cases it supports: they pass; bending is not available to it.
+    let fe_passes = stdout
+        .lines()
+        .filter(|l| l.contains(" fe ") && l.ends_with("pass"))
+        .count();
+    assert!(fe_passes >= 25, "{fe_passes} passing fe rows:\n{stdout}");
+    assert!(
+        stdout
+            .lines()
+            .any(|l| l.starts_with("beam_bending") && l.contains(" fe ") && l.contains("n/a")),
+        "{stdout}"
+    );
+    assert!(!stdout.contains("FAIL"), "{stdout}");
+    // The report: the same table in markdown, and the plots it links.
+    let md = std::fs::read_to_string(&report).expect("report written");
+    assert!(md.contains("| case | formulation | quantity |"), "{md}");
+    let images: Vec<&str> = md
+        .lines()
+        .filter_map(|l| l.split("](img/").nth(1))
+        .map(|rest| rest.trim_end_matches(')'))
+        .collect();
+    assert!(images.len() >= 5, "{md}");
+    for img in images {
+        let svg = std::fs::read_to_string(report.parent().unwrap().join("img").join(img))
+            .expect("plot written");
+        assert!(svg.starts_with("<svg"), "{img}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn an_unknown_formulation_is_refused_with_a_non_zero_exit() {
+    let out = Command::new(env!("CARGO_BIN_EXE_hawser"))
+        .args(["validate", "--quick", "--no-report", "--formulation", "fem"])
+        .output()
+        .expect("hawser runs");
+    assert!(!out.status.success());
+    assert!(
+        String::from_utf8_lossy(&out.stderr).contains("unknown formulation `fem`"),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
