@@ -1,6 +1,8 @@
 //! `hawser validate --quick`: the verification suite's CI subset through the binary — every
 //! case runs (or says why it cannot), nothing fails, the report and its plots are written.
 
+use hawser::verification::CASES;
+use hawser_io::verification_report::COLUMNS;
 use std::process::Command;
 
 #[test]
@@ -21,28 +23,11 @@ fn quick_suite_passes_and_writes_the_report() {
     );
     // One row per case and formulation, with the table's columns.
     assert!(stdout.starts_with("case"), "{stdout}");
-    for column in [
-        "quantity",
-        "expected",
-        "computed",
-        "error",
-        "tolerance",
-        "result",
-    ] {
-        assert!(stdout.lines().next().unwrap().contains(column), "{stdout}");
+    let header = stdout.lines().next().unwrap();
+    for column in COLUMNS {
+        assert!(header.contains(column), "{header}");
     }
-    for case in [
-        "catenary_suspended",
-        "catenary_seabed",
-        "hanging_mass",
-        "axial_wave_speed",
-        "taut_string",
-        "beam_bending",
-        "rigid_rotation",
-        "energy",
-        "steady_towed_cable",
-        "convergence_order",
-    ] {
+    for case in CASES.iter().map(|c| c.name) {
         for formulation in ["fe", "hermite", "dg"] {
             assert!(
                 stdout
