@@ -267,7 +267,9 @@ pub fn expected_order(f: Formulation) -> Option<Real> {
 }
 
 /// Observed order of convergence in h on the suspended catenary, whose exact solution (the
-/// closed-form elastic catenary) is smooth: N = 8, 16, 32, 64 (and 128 in the full suite).
+/// closed-form elastic catenary) is smooth: for second order N = 8, 16, 32, 64 (and 128 in
+/// the full suite); for fourth order N = 8, 16, 32, whose errors stay well above the static
+/// solution's 1e-9 (at N = 64 a fourth-order error is there).
 ///
 /// Tolerance ±0.2 on each observed order: in a clean asymptotic regime the higher-order
 /// terms perturb the ratio of successive errors by a few %; an order 1 lower or higher is a
@@ -281,9 +283,13 @@ pub fn catenary_convergence(f: Formulation, fidelity: Fidelity) -> Result<Findin
                 .into(),
         ));
     };
-    let meshes: &[usize] = match fidelity {
-        Fidelity::Quick => &[8, 16, 32, 64],
-        Fidelity::Full => &[8, 16, 32, 64, 128],
+    // Meshes in the asymptotic range and above the static solution's accuracy (1e-9):
+    // second order from N = 8; fourth order is pre-asymptotic below N = 8 (measured orders
+    // 2.9–4.6 for `hermite` at N = 2→4→8) and meets 1e-9 near N = 64.
+    let meshes: &[usize] = match (expected > 3.0, fidelity) {
+        (false, Fidelity::Quick) => &[8, 16, 32, 64],
+        (false, Fidelity::Full) => &[8, 16, 32, 64, 128],
+        (true, _) => &[8, 16, 32],
     };
     let samples = catenary_errors(f, MassMatrix::Consistent, meshes)?;
     let mut checks = Vec::new();

@@ -482,6 +482,13 @@ pub fn fixed_step_settings(dt: Real, scheme: Scheme) -> Settings {
     }
 }
 
+/// `wanted` [s], or `fraction` of the system's RK4 stability limit when that is smaller: a
+/// step chosen for one formulation stays stable, and as far inside RK4's asymptotic range,
+/// for another whose fastest element mode is faster.
+pub fn rk4_step(system: &System, wanted: Real, fraction: Real) -> Real {
+    wanted.min(fraction * system.stable_step(Scheme::Rk4).0)
+}
+
 /// Position [m] of node `node` (0 at end A) of line `line` from a workspace holding an
 /// evaluation at the state of interest.
 pub fn node_position(system: &System, ws: &Workspace, line: usize, node: usize) -> Vec3 {
