@@ -228,6 +228,24 @@ pub fn write_report(results: &[CaseResult], report: &Path, preamble: &str) -> st
     std::fs::write(report, markdown(results, preamble))
 }
 
+/// Tick labels for an axis spanning lo..hi: scientific notation for very small or large
+/// values, otherwise as many decimals as the span needs.
+fn tick_format(lo: f64, hi: f64) -> impl Fn(&f64) -> String {
+    let big = lo.abs().max(hi.abs());
+    let sci = big < 1e-2 || big >= 1e5;
+    let decimals = (2.0 - (hi - lo).log10().floor()).clamp(0.0, 6.0) as usize;
+    let zero = 1e-6 * (hi - lo);
+    move |v: &f64| {
+        if v.abs() < zero {
+            "0".into()
+        } else if sci {
+            format!("{v:.2e}")
+        } else {
+            format!("{v:.decimals$}")
+        }
+    }
+}
+
 /// A plot as an SVG document; logarithmic plots are drawn as log10 of both axes.
 pub fn plot_svg(plot: &Plot, title: &str) -> Result<String, String> {
     let tr = |v: Real| if plot.log { v.log10() } else { v };
@@ -282,10 +300,13 @@ pub fn plot_svg(plot: &Plot, title: &str) -> Result<String, String> {
             .y_label_area_size(80)
             .build_cartesian_2d(x0..x1, y0..y1)
             .map_err(e)?;
+        let (fx, fy) = (tick_format(x0, x1), tick_format(y0, y1));
         chart
             .configure_mesh()
             .x_desc(label(&plot.x_label))
             .y_desc(label(&plot.y_label))
+            .x_label_formatter(&fx)
+            .y_label_formatter(&fy)
             .draw()
             .map_err(e)?;
         for (k, (name, pts, markers)) in series.into_iter().enumerate() {
