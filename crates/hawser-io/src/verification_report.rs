@@ -232,7 +232,7 @@ pub fn write_report(results: &[CaseResult], report: &Path, preamble: &str) -> st
 /// values, otherwise as many decimals as the span needs.
 fn tick_format(lo: f64, hi: f64) -> impl Fn(&f64) -> String {
     let big = lo.abs().max(hi.abs());
-    let sci = big < 1e-2 || big >= 1e5;
+    let sci = !(1e-2..1e5).contains(&big);
     let decimals = (2.0 - (hi - lo).log10().floor()).clamp(0.0, 6.0) as usize;
     let zero = 1e-6 * (hi - lo);
     move |v: &f64| {
