@@ -548,6 +548,8 @@ impl SteadyTow {
         marks.push(length);
         marks.sort_by(Real::total_cmp);
         marks.dedup_by(|a, b| (*a - *b).abs() <= 1e-14 * length);
+        // The body end is recorded before the loop.
+        marks.retain(|&m| m > 0.0);
         let mut y = Y {
             f: -self.body_load(),
             r: Vec3::zeros(),
@@ -758,6 +760,9 @@ mod tests {
         let t = tow(vec![seg.clone()], Vec3::zeros(), body);
         let stations: Vec<Real> = (0..=40).map(|i| 10.0 * i as Real).collect();
         let p = t.solve(&stations).expect("solves");
+        // One station per request, ends included once, in order.
+        let recorded: Vec<Real> = p.stations.iter().map(|s| s.arc_length).collect();
+        assert_eq!(recorded, stations);
         let f0 = p.stations[0].tension;
         let cat = catenary::Catenary {
             horizontal: f0.x,
