@@ -206,6 +206,12 @@ fn largest(d: &[Real]) -> Real {
 ///   next to the 250 N vehicle of system 2, where the tether bends most.
 #[test]
 fn statics_converge_to_the_steady_cable_integration_at_second_order() {
+    // The refinement table of docs/towing.md (`-- --nocapture` shows it).
+    println!(
+        "| case | cable drag | e(N=10) | e(N=20) | e(N=40) | order | C = e(40)·40² | \
+         profile N=40: position, tension |"
+    );
+    println!("|---|---|---|---|---|---|---|---|");
     for c in cases() {
         for c in [c, without_drag(c)] {
             let label = format!("{} (C_dn {})", c.name, c.normal_drag);
@@ -241,6 +247,17 @@ fn statics_converge_to_the_steady_cable_integration_at_second_order() {
                 );
             }
             let order = (e[1] / e[2]).log2();
+            println!(
+                "| {} | {} | {:.2e} | {:.2e} | {:.2e} | {order:.2} | {:.3} | {:.1e}, {:.1e} |",
+                c.name,
+                if c.normal_drag > 0.0 { "yes" } else { "no" },
+                e[0],
+                e[1],
+                e[2],
+                e[2] * 1600.0,
+                profile[1][0],
+                profile[1][1]
+            );
             assert!(
                 e[0] > e[1] && e[1] > e[2] && (1.8..=2.2).contains(&order) && e[2] <= 1e-4,
                 "{label}: differences {e:?}, order {order}"

@@ -35,7 +35,7 @@
 //!   dF/ds0 = −f(F),            dr/ds0 = (1 + T/EA) F/T,                                    (1)
 //!
 //! with T = |F|. Projected on the tangent and the normal they are the classical tension–angle
-//! equations of a steady cable (Ablow & Schechter 1983, Ocean Eng. 10(6), eqs. 1–4 without the
+//! equations of a steady cable (Ablow & Schechter 1983, Ocean Eng. 10(6), 443–457, without the
 //! time derivatives; Pode 1951, DTMB report 687, for the inextensible planar case):
 //!
 //!   dT/ds0 = −f·t,             T dt/ds0 = −(f − (f·t) t)   (T |dt/ds0| = T κ (1+ε): curvature).
