@@ -267,22 +267,25 @@ mod dopri {
             -5103.0 / 18656.0,
             0.0,
         ],
-        [
-            35.0 / 384.0,
-            0.0,
-            500.0 / 1113.0,
-            125.0 / 192.0,
-            -2187.0 / 6784.0,
-            11.0 / 84.0,
-        ],
+        FIFTH_ORDER,
     ];
-    pub const B: [Real; 7] = [
+    /// The fifth-order weights of stages 1–6; the last stage is evaluated at them
+    /// ("first same as last").
+    const FIFTH_ORDER: [Real; 6] = [
         35.0 / 384.0,
         0.0,
         500.0 / 1113.0,
         125.0 / 192.0,
         -2187.0 / 6784.0,
         11.0 / 84.0,
+    ];
+    pub const B: [Real; 7] = [
+        FIFTH_ORDER[0],
+        FIFTH_ORDER[1],
+        FIFTH_ORDER[2],
+        FIFTH_ORDER[3],
+        FIFTH_ORDER[4],
+        FIFTH_ORDER[5],
         0.0,
     ];
     pub const E: [Real; 7] = [
