@@ -82,7 +82,7 @@
 //! shape here).
 
 use crate::math::{Real, Vec3, z_hat};
-use crate::model::{LineEnd, Model, PointKind};
+use crate::model::{Formulation, LineEnd, Model, PointKind, StrainMeasure};
 use crate::physics::environment::Current;
 use crate::physics::hydrodynamics::DragModel;
 use crate::physics::material::AxialStiffness;
@@ -385,11 +385,27 @@ impl SteadyTow {
                 "waves are not supported (steady towing in calm water)",
             ));
         }
+        // The integration has neither bending nor the small-strain measure: a `hermite` line
+        // with either models other physics.
+        if l.formulation == Formulation::Hermite && l.strain_measure != StrainMeasure::Exact {
+            return Err(invalid(
+                format!("line {}", l.name),
+                "uses the small-strain measure; the steady-cable integration uses the exact \
+                 strain ε = |r'| − 1",
+            ));
+        }
         let mut segments = Vec::with_capacity(l.sections.len());
         for s in &l.sections {
             let lt = model.line_types.get(s.line_type).ok_or_else(|| {
                 invalid(format!("line {}", l.name), "refers to a missing line type")
             })?;
+            if l.formulation == Formulation::Hermite && lt.bending_stiffness > 0.0 {
+                return Err(invalid(
+                    format!("line type {}", lt.name),
+                    "has bending stiffness, which a `hermite` line carries and the \
+                     steady-cable integration does not",
+                ));
+            }
             let AxialStiffness::Linear(ea) = lt.axial_stiffness else {
                 return Err(invalid(
                     format!("line type {}", lt.name),
