@@ -385,8 +385,8 @@ impl SteadyTow {
                 "waves are not supported (steady towing in calm water)",
             ));
         }
-        // The integration has neither bending nor the small-strain measure: a `hermite` line
-        // with either models other physics.
+        // The integration has neither bending nor the small-strain measure: a `hermite` or
+        // `dg` line with either models other physics (`fe` ignores bending).
         if l.formulation == Formulation::Hermite && l.strain_measure != StrainMeasure::Exact {
             return Err(invalid(
                 format!("line {}", l.name),
@@ -399,10 +399,10 @@ impl SteadyTow {
             let lt = model.line_types.get(s.line_type).ok_or_else(|| {
                 invalid(format!("line {}", l.name), "refers to a missing line type")
             })?;
-            if l.formulation == Formulation::Hermite && lt.bending_stiffness > 0.0 {
+            if l.formulation != Formulation::Fe && lt.bending_stiffness > 0.0 {
                 return Err(invalid(
                     format!("line type {}", lt.name),
-                    "has bending stiffness, which a `hermite` line carries and the \
+                    "has bending stiffness, which a `hermite` or `dg` line carries and the \
                      steady-cable integration does not",
                 ));
             }
