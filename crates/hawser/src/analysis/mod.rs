@@ -1,8 +1,10 @@
 //! Results analysis: output channels, running statistics, slack intervals and snap events;
-//! natural modes about the static state ([`modes`]) and the resonance report ([`resonance`]).
+//! natural modes about the static state ([`modes`]) and the resonance report ([`resonance`]);
+//! the independent steady-towing reference ([`steady_cable`]).
 
 pub mod modes;
 pub mod resonance;
+pub mod steady_cable;
 
 use crate::math::Real;
 use crate::system::{System, Workspace};

@@ -71,7 +71,7 @@ impl Catenary {
 
     /// Tension [N] at unstretched arc length s from A.
     pub fn tension(&self, s: Real) -> Real {
-        if s <= self.grounded_length {
+        if self.grounded_length > 0.0 && s <= self.grounded_length {
             return self.horizontal;
         }
         let v = if self.grounded_length > 0.0 {
@@ -226,6 +226,15 @@ mod tests {
 }
 #[cfg(test)]
 mod regression {
+    /// A suspended line's tension at end A is √(H² + V_A²), not H (the grounded branch once
+    /// caught s = 0 when nothing was grounded).
+    #[test]
+    fn suspended_tension_at_end_a_includes_its_vertical_part() {
+        let c = super::solve(80.0, 60.0, 110.0, 700.0, 3.84e8, false).expect("converges");
+        assert!(c.vertical_a.abs() > 1.0);
+        assert_eq!(c.tension(0.0), c.tension_a());
+    }
+
     /// A long grounded chain whose first undamped Newton step overshot to V_B = 0.
     #[test]
     fn grounded_mooring_with_long_touchdown_converges() {
