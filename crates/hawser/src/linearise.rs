@@ -525,6 +525,7 @@ pub fn linearise(system: &System, state: &[Real], options: LinearisationOptions)
         1.0,
         &mut ws,
     );
+    constrain_clamps(system, &mut ws.blocks);
     let stiffness = negated(&ws.blocks, &ws.coupled.point_diag);
     let damping = options.damping.then(|| {
         force_jacobian(
@@ -535,6 +536,7 @@ pub fn linearise(system: &System, state: &[Real], options: LinearisationOptions)
             1.0,
             &mut ws,
         );
+        constrain_clamps(system, &mut ws.blocks);
         negated(&ws.blocks, &ws.coupled.point_diag)
     });
     // Mass: the dynamics' own assembly at the static positions, at rest.
@@ -548,11 +550,23 @@ pub fn linearise(system: &System, state: &[Real], options: LinearisationOptions)
     }
 }
 
+/// Clamped end tangents keep only their component along the clamp
+/// ([`crate::system::SystemLine::apply_clamps`]); the constrained normal directions keep a
+/// diagonal entry of the block's own scale, so K and M each carry them as uncoupled rows
+/// (two spurious eigenvalues per clamp at the ratio of those scales, far above the modes of
+/// interest).
+fn constrain_clamps(system: &System, blocks: &mut [LineBlocks]) {
+    for (l, b) in system.lines.iter().zip(blocks.iter_mut()) {
+        l.apply_clamps(b);
+    }
+}
+
 /// The mass matrix [kg] at state `y` (at rest, t = 0), assembled by the dynamics' force code:
 /// line mass blocks with added mass, and the free points' own mass with added mass.
 pub fn mass_matrix(system: &System, y: &[Real]) -> BlockMatrix {
     let mut ws = system.workspace();
     line_forces_at_rest(system, y, 1.0, true, &mut ws);
+    constrain_clamps(system, &mut ws.blocks);
     let points = system
         .free_points
         .iter()

@@ -48,6 +48,8 @@ pub struct SystemLine {
     pub mesh: Mesh,
     /// Formulation and its options.
     pub kind: LineKind,
+    /// Unit directions of the clamped end tangents (A, B), `None` for pinned ends.
+    pub clamp: [Option<Vec3>; 2],
     /// Point index of end A.
     pub end_a: usize,
     /// Point index of end B.
@@ -71,6 +73,42 @@ impl SystemLine {
     #[inline]
     pub fn node_vector(&self, node: usize) -> usize {
         self.kind.node_vector(node, self.mesh.elements())
+    }
+
+    /// The clamped tangents: (vector index, unit direction) of each clamped end.
+    pub fn clamped(&self) -> impl Iterator<Item = (usize, Vec3)> + '_ {
+        let n = self.mesh.elements();
+        self.clamp.iter().enumerate().filter_map(move |(k, d)| {
+            d.map(|d| {
+                let node = if k == 0 { 0 } else { n };
+                (crate::formulation::hermite::vector_index(node, true, n), d)
+            })
+        })
+    }
+
+    /// Constrains each clamped end tangent to its direction in a line's block matrix and
+    /// right-hand side: with P = d dᵀ, Q = I − P, row j becomes P A_j· (and Q x_j = 0), column
+    /// j becomes A_·j P, and the rhs P b_j. The solution's tangent rate then stays along d (the
+    /// stretch at the clamp stays free); the normal part of the row's residual is the clamp's
+    /// reaction moment, which the constraint absorbs.
+    pub fn apply_clamps(&self, blocks: &mut LineBlocks) {
+        for (j, d) in self.clamped() {
+            let p = d * d.transpose();
+            let q = Mat3::identity() - p;
+            for i in blocks.band_of(j) {
+                if i != j {
+                    let c = blocks.block(i, j) * p;
+                    *blocks.block_mut(i, j) = c;
+                    let r = p * blocks.block(j, i);
+                    *blocks.block_mut(j, i) = r;
+                }
+            }
+            let djj = blocks.block(j, j);
+            let scale = djj.trace() / 3.0;
+            let scale = if scale != 0.0 { scale } else { 1.0 };
+            *blocks.block_mut(j, j) = p * djj * p + q * scale;
+            blocks.x[j] = p * blocks.x[j];
+        }
     }
 
     /// Whether vector j is a tangent [-] rather than a position [m].
@@ -109,7 +147,12 @@ impl SystemLine {
                             + (shape[i] - shape[i - 1]) * (h2 * h2))
                             / (h1 * h2 * (h1 + h2))
                     };
-                    set3(y, vector_index(i, true, n) - 1, &t);
+                    let j = vector_index(i, true, n);
+                    let t = match self.clamped().find(|c| c.0 == j) {
+                        Some((_, d)) => d * t.dot(&d).max(Real::EPSILON),
+                        None => t,
+                    };
+                    set3(y, j - 1, &t);
                     if i > 0 && i < n {
                         set3(y, vector_index(i, false, n) - 1, &shape[i]);
                     }
@@ -250,6 +293,7 @@ impl System {
                 name: l.name.clone(),
                 mesh,
                 kind,
+                clamp: l.clamp.map(|d| d.map(|d| d.normalize())),
                 end_a,
                 end_b,
             });
@@ -578,6 +622,7 @@ impl System {
             );
             let n = l.vectors() - 1;
             blocks.x.copy_from_slice(&lw.force);
+            l.apply_clamps(blocks);
             if blocks.end_a == EndKind::Known {
                 blocks.x[0] = ws.points[l.end_a].acceleration;
             }

@@ -290,3 +290,96 @@ fn fe_and_hermite_agree_on_a_moving_fairlead() {
     );
     assert!(e < 1e-2, "RMS difference {e:.3e} of the mean tension");
 }
+
+/// A cantilever clamped horizontally at a wall (`clamp`), its free end on a massless free
+/// point, sagging under its own weight in vacuum: Newton statics with the clamp constraint
+/// against Euler–Bernoulli's tip deflection q L⁴/(8 EI) (small deflection: 1.2e-3 of L) and
+/// tip slope q L³/(6 EI); then 2 s of RK4 dynamics released from the straight line, whose
+/// tip must swing below the static deflection (to about twice it) and keep the clamped
+/// tangent on its direction. Tolerance 1 % (geometric nonlinearity is O((δ/L)²) ≈ 1e-6; the
+/// elements' error O(h⁴)).
+#[test]
+fn clamped_cantilever_sags_as_euler_bernoulli() {
+    use hawser::model::{PointKind, Settings, TimeStep};
+    let (length, gamma, ei) = (10.0, 10.0, 1.0e6);
+    let g = 9.80665;
+    let mut lt = dry_line_type(0.1, gamma, 1.0e9);
+    lt.bending_stiffness = ei;
+    // In air of zero density (z > 0): weight only.
+    let mut tip = fixed("tip", Vec3::new(length, 0.0, 10.0));
+    tip.kind = PointKind::Free {
+        mass: 0.0,
+        volume: 0.0,
+        drag_area: 0.0,
+        added_mass_coefficient: 0.0,
+        force: Vec3::zeros(),
+    };
+    let mut m = single_line(
+        lt,
+        length,
+        8,
+        fixed("wall", Vec3::new(0.0, 0.0, 10.0)),
+        tip,
+        MassMatrix::Consistent,
+    );
+    m.environment = vacuum_environment(g);
+    m.lines[0].formulation = Formulation::Hermite;
+    m.lines[0].clamp[0] = Some(Vec3::x());
+    let system = System::new(&m).unwrap();
+    let sol = solve(&system, None, &StaticOptions::default()).expect("statics");
+    let mut ws = system.workspace();
+    evaluate(&system, &sol.state, &mut ws);
+    eprintln!("statics: {} residual {:.2e}", sol.method, sol.residual);
+    let q = gamma * g;
+    let exact = q * length.powi(4) / (8.0 * ei);
+    let l = &system.lines[0];
+    let tip_z = 10.0 - ws.lines[0].position[l.node_vector(8)].z;
+    let t = ws.lines[0].position[hawser::formulation::hermite::vector_index(8, true, 8)];
+    let slope = -t.z / t.x;
+    let exact_slope = q * length.powi(3) / (6.0 * ei);
+    let clamp = ws.lines[0].position[1];
+    eprintln!(
+        "tip deflection {tip_z:.6e} m vs {exact:.6e}; tip slope {slope:.6e} vs {exact_slope:.6e}; clamp tangent {clamp:?}"
+    );
+    assert!((tip_z / exact - 1.0).abs() < 1e-2, "{tip_z} vs {exact}");
+    assert!(
+        (slope / exact_slope - 1.0).abs() < 1e-2,
+        "{slope} vs {exact_slope}"
+    );
+    assert!(clamp.y.abs() < 1e-12 && clamp.z.abs() < 1e-12, "{clamp:?}");
+
+    let settings = Settings {
+        duration: 2.0,
+        time_step: TimeStep::Auto,
+        output_interval: 0.01,
+        ..Default::default()
+    };
+    let mut sim =
+        hawser::simulation::Simulation::new(&system, &settings, system.straight_state()).unwrap();
+    struct Tip(Real, Vec3);
+    impl hawser::simulation::Observer for Tip {
+        fn sample(&mut self, s: &System, _: Real, _: &[Real], ws: &hawser::system::Workspace) {
+            let l = &s.lines[0];
+            self.0 = self.0.max(10.0 - ws.lines[0].position[l.node_vector(8)].z);
+            let c = ws.lines[0].position[1];
+            self.1 = Vec3::new(0.0, self.1.y.max(c.y.abs()), self.1.z.max(c.z.abs()));
+        }
+    }
+    let mut out = Tip(0.0, Vec3::zeros());
+    sim.run(settings.duration, &mut out).unwrap();
+    eprintln!(
+        "dynamic: largest tip deflection {:.4e} m ({:.3} × static)",
+        out.0,
+        out.0 / exact
+    );
+    assert!(
+        out.0 > 1.5 * exact && out.0 < 2.5 * exact,
+        "{} vs static {exact}",
+        out.0
+    );
+    assert!(
+        out.1.norm() < 1e-12,
+        "clamped tangent left its direction: {:?}",
+        out.1
+    );
+}

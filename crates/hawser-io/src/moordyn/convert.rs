@@ -901,6 +901,8 @@ fn convert_lines(c: &mut Converter, s: &Section, points: &[PointSpec]) -> (Vec<L
             formulation: None,
             mass_matrix: Some(MassMatrixSpec::Lumped),
             strain: None,
+            clamp_a: None,
+            clamp_b: None,
             line_type: Some(spanned(&t[1], t[1].text.clone())),
             length: Some(spanned(&t[4], length.unwrap_or(1.0))),
             elements: Some(spanned(&t[5], segments.unwrap_or(1))),

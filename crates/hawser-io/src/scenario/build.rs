@@ -2341,6 +2341,29 @@ fn build_lines(
                 Some(StrainSpec::SmallStrain) => StrainMeasure::SmallStrain,
                 _ => StrainMeasure::Exact,
             },
+            clamp: [(&l.clamp_a, "clamp_a"), (&l.clamp_b, "clamp_b")].map(|(c, key)| {
+                let c = c.as_ref()?;
+                let d = b.vec3(c, &k(key));
+                let bad = if formulation != Formulation::Hermite {
+                    Some("a clamped end needs end tangents: use `formulation = \"hermite\"`")
+                } else if !(d.norm() > 0.0) {
+                    Some("give the direction of the line's tangent at that end, e.g. [1, 0, 0]")
+                } else {
+                    None
+                };
+                if let Some(hint) = bad {
+                    let diag = b
+                        .diag(
+                            Some(c.span()),
+                            &k(key),
+                            format!("`{key}` cannot be used here"),
+                        )
+                        .expected("a non-zero direction [-] on a `hermite` line")
+                        .hint(hint);
+                    b.push(diag);
+                }
+                Some(d)
+            }),
             end_a: LineEnd::Point(end_a),
             end_b: LineEnd::Point(end_b),
         });

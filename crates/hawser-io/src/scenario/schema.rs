@@ -586,6 +586,16 @@ pub struct LineSpec {
     /// `"exact"` (default) or `"small-strain"` (`hermite`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub strain: Option<StrainSpec>,
+    /// Clamped end A: the direction [-] of the line's tangent there, held fixed (`hermite`);
+    /// default pinned.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<[f64; 3]>")]
+    pub clamp_a: Option<Spanned<[f64; 3]>>,
+    /// Clamped end B: the direction [-] of the line's tangent there (pointing from A toward
+    /// B), held fixed (`hermite`); default pinned.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<[f64; 3]>")]
+    pub clamp_b: Option<Spanned<[f64; 3]>>,
     /// Line type of a single-section line (or give `sections`).
     #[serde(default, rename = "type", skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<String>")]

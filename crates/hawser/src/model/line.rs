@@ -103,6 +103,9 @@ pub struct Line {
     pub mass_matrix: MassMatrix,
     /// Axial strain measure (for `hermite`; `fe` always uses the exact ε = L/L0 − 1).
     pub strain_measure: StrainMeasure,
+    /// Clamped ends (A, B): the direction of the line's tangent ∂r/∂s held fixed in space at
+    /// that end, pointing from A toward B (formulations with bending); `None`: pinned.
+    pub clamp: [Option<crate::math::Vec3>; 2],
     /// Attachment of end A.
     pub end_a: LineEnd,
     /// Attachment of end B.

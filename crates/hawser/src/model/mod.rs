@@ -180,6 +180,20 @@ impl Model {
                     _ => {}
                 }
             }
+            for d in l.clamp.iter().flatten() {
+                if l.formulation != Formulation::Hermite {
+                    return bad(
+                        format!("line {} (#{li}): clamp", l.name),
+                        "needs a formulation with bending and end tangents (`hermite`)",
+                    );
+                }
+                if !(d.norm() > 0.0) || !d.iter().all(|x| x.is_finite()) {
+                    return bad(
+                        format!("line {} (#{li}): clamp", l.name),
+                        "must be a non-zero direction",
+                    );
+                }
+            }
             if l.formulation == Formulation::Dg {
                 return bad(
                     format!("line {} (#{li})", l.name),

@@ -100,6 +100,11 @@ pub fn residual(
         for i in 1..n {
             set3(&mut out[o..], i - 1, &lw.force[i]);
         }
+        // A clamp takes the normal part of its tangent's residual (its reaction moment).
+        for (j, d) in l.clamped() {
+            let f = lw.force[j];
+            set3(&mut out[o..], j - 1, &(d * f.dot(&d)));
+        }
         for (p, node) in [(l.end_a, 0), (l.end_b, n)] {
             if let Some(o) = system.layout.point_offset[p] {
                 let f = get3(&out[o..], 0) + lw.force[node];
@@ -214,6 +219,7 @@ fn newton_step(
         for i in 1..n {
             b.x[i] = -get3(&r[o..], i - 1);
         }
+        l.apply_clamps(b);
         // End rows: a known end does not move; a free end's residual goes in once, with its
         // point, below.
         b.x[0] = Vec3::zeros();

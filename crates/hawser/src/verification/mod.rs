@@ -428,6 +428,7 @@ pub fn single_line(
             formulation,
             mass_matrix,
             strain_measure: Default::default(),
+            clamp: [None; 2],
             end_a: LineEnd::Point(0),
             end_b: LineEnd::Point(1),
         }],
