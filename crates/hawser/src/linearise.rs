@@ -498,6 +498,20 @@ pub struct Linearisation {
     pub state: Vec<Real>,
 }
 
+impl Linearisation {
+    /// All natural angular frequencies ω = √λ [rad/s] of K φ = λ M φ (K symmetrised), sorted
+    /// ascending, by a dense solve: for small systems and checks; [`crate::analysis::modes`]
+    /// gives labelled modes of large ones.
+    pub fn angular_frequencies(&self) -> Result<Vec<Real>, crate::linalg::eigen::EigenFailure> {
+        let k = self.stiffness.symmetric_part().to_dense(&self.dofs);
+        let m = self.mass.to_dense(&self.dofs);
+        let pairs = crate::linalg::eigen::dense_generalized(&k, &m)?;
+        let mut omega: Vec<Real> = pairs.values.iter().map(|l| l.max(0.0).sqrt()).collect();
+        omega.sort_by(|a, b| a.total_cmp(b));
+        Ok(omega)
+    }
+}
+
 /// Negates every block in place (F-Jacobian → stiffness or damping).
 fn negated(lines: &[LineBlocks], points: &[Mat3]) -> BlockMatrix {
     let mut m = BlockMatrix {

@@ -8,6 +8,7 @@
 //! attached to (fixed, prescribed, or free and then in the state).
 
 use crate::error::ModelError;
+pub use crate::formulation::Energy;
 use crate::formulation::{ElementState, LineKind, LoadOptions, Mesh, line_forces};
 use crate::linalg::{CoupledSystem, EndKind, LineBlocks, Singular};
 use crate::math::{Mat3, Real, Vec3, get3, set3};
@@ -416,51 +417,15 @@ impl System {
         let mut energy = Energy::default();
         for (li, l) in self.lines.iter().enumerate() {
             let (q, qdot) = (&ws.lines[li].position, &ws.lines[li].velocity);
-            let n = l.mesh.elements();
-            for e in 0..n {
-                let s = l.mesh.section(e);
-                let (l0, gamma) = (s.element_length, s.line_type.mass_per_length);
-                let m = gamma * l0;
-                match l.kind {
+            for e in 0..l.mesh.elements() {
+                energy += match &l.kind {
                     LineKind::Fe { mass_matrix } => {
-                        let (va, vb) = (qdot[e], qdot[e + 1]);
-                        energy.kinetic += match mass_matrix {
-                            crate::model::MassMatrix::Lumped => {
-                                0.25 * m * (va.norm_squared() + vb.norm_squared())
-                            }
-                            // ½ [va vb] (m/6)[2 1; 1 2] [va vb]ᵀ (position-vector paper eq. 12)
-                            crate::model::MassMatrix::Consistent => {
-                                m / 6.0 * (va.norm_squared() + va.dot(&vb) + vb.norm_squared())
-                            }
-                        };
-                        energy.gravity += m * g * 0.5 * (q[e].z + q[e + 1].z);
-                        let strain = (q[e + 1] - q[e]).norm() / l0 - 1.0;
-                        energy.elastic += l0 * strain_energy_density(&s.law, strain);
+                        crate::formulation::fe::element_energy(&l.mesh, *mass_matrix, g, q, qdot, e)
                     }
                     LineKind::Hermite(options) => {
-                        use crate::formulation::hermite::{GAUSS, element_vectors, shape};
-                        let idx = element_vectors(e, n);
-                        let at = |w: &[Real; 4], v: &[Vec3]| {
-                            idx.iter().zip(w).map(|(&k, &wk)| v[k] * wk).sum::<Vec3>()
-                        };
-                        for (xi, weight) in GAUSS {
-                            let (sh, d1, d2, _) = shape(xi, l0);
-                            let (r, r1, r2) = (at(&sh, q), at(&d1, q), at(&d2, q));
-                            let ds = weight * l0;
-                            energy.kinetic += 0.5 * gamma * at(&sh, qdot).norm_squared() * ds;
-                            energy.gravity += gamma * g * r.z * ds;
-                            let strain = match options.strain {
-                                crate::model::StrainMeasure::Exact => r1.norm() - 1.0,
-                                crate::model::StrainMeasure::SmallStrain => {
-                                    0.5 * (r1.norm_squared() - 1.0)
-                                }
-                            };
-                            energy.elastic += (strain_energy_density(&s.law, strain)
-                                + 0.5 * s.line_type.bending_stiffness * r2.norm_squared())
-                                * ds;
-                        }
+                        crate::formulation::hermite::element_energy(&l.mesh, options, g, q, qdot, e)
                     }
-                }
+                };
             }
         }
         for (p, point) in self.points.iter().enumerate() {
@@ -891,56 +856,6 @@ impl System {
             return (Real::INFINITY, culprit);
         }
         (radius / worst, culprit)
-    }
-}
-
-/// Mechanical energy of a state [J] ([`System::mechanical_energy`]).
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct Energy {
-    /// Kinetic energy [J].
-    pub kinetic: Real,
-    /// Potential energy of weight in air, relative to z = 0 [J].
-    pub gravity: Real,
-    /// Elastic strain energy [J].
-    pub elastic: Real,
-}
-
-impl Energy {
-    /// The sum [J].
-    pub fn total(&self) -> Real {
-        self.kinetic + self.gravity + self.elastic
-    }
-}
-
-/// Elastic strain energy per unit unstretched length ∫₀^ε T_e(e) de [J/m] of an axial law
-/// (zero in compression unless the law carries it; a table integrates exactly piecewise).
-fn strain_energy_density(law: &crate::physics::material::AxialLaw, strain: Real) -> Real {
-    use crate::physics::material::AxialStiffness;
-    if !(strain > 0.0) {
-        return if law.compression {
-            0.5 * law.stiffness.max_tangent() * strain * strain
-        } else {
-            0.0
-        };
-    }
-    match &law.stiffness {
-        AxialStiffness::Linear(ea) => 0.5 * ea * strain * strain,
-        AxialStiffness::Table { strain: e, .. } => {
-            // Trapezoids between the table's breakpoints below ε, then up to ε.
-            let mut w = 0.0;
-            let mut prev = 0.0;
-            for &ek in e.iter().skip(1).take_while(|&&ek| ek < strain) {
-                w += 0.5
-                    * (law.stiffness.tension_and_tangent(prev).0
-                        + law.stiffness.tension_and_tangent(ek).0)
-                    * (ek - prev);
-                prev = ek;
-            }
-            w + 0.5
-                * (law.stiffness.tension_and_tangent(prev).0
-                    + law.stiffness.tension_and_tangent(strain).0)
-                * (strain - prev)
-        }
     }
 }
 

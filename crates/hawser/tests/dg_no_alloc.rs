@@ -2,54 +2,15 @@
 //! sides of a two-section line with bending, bending damping, axial damping, drag, added
 //! mass, current, seabed contact and mixed orders allocate nothing.
 
+mod alloc_count;
 mod dg_common;
+use alloc_count::allocations_in;
 use dg_common::*;
 use hawser::formulation::dg::*;
 use hawser::math::{Real, Vec3};
 use hawser::physics::environment::{Current, Environment};
 use hawser::physics::hydrodynamics::DragModel;
 use hawser::physics::material::AxialDamping;
-use std::alloc::{GlobalAlloc, Layout, System as SystemAlloc};
-use std::cell::Cell;
-use std::sync::atomic::{AtomicUsize, Ordering};
-
-struct Counting;
-static ALLOCATIONS: AtomicUsize = AtomicUsize::new(0);
-thread_local! {
-    static COUNTING: Cell<bool> = const { Cell::new(false) };
-}
-fn note() {
-    if COUNTING.with(|c| c.get()) {
-        ALLOCATIONS.fetch_add(1, Ordering::Relaxed);
-    }
-}
-unsafe impl GlobalAlloc for Counting {
-    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-        note();
-        unsafe { SystemAlloc.alloc(layout) }
-    }
-    unsafe fn alloc_zeroed(&self, layout: Layout) -> *mut u8 {
-        note();
-        unsafe { SystemAlloc.alloc_zeroed(layout) }
-    }
-    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
-        note();
-        unsafe { SystemAlloc.realloc(ptr, layout, new_size) }
-    }
-    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
-        unsafe { SystemAlloc.dealloc(ptr, layout) }
-    }
-}
-#[global_allocator]
-static GLOBAL: Counting = Counting;
-
-fn counted(f: impl FnOnce()) -> usize {
-    let before = ALLOCATIONS.load(Ordering::Relaxed);
-    COUNTING.with(|c| c.set(true));
-    f();
-    COUNTING.with(|c| c.set(false));
-    ALLOCATIONS.load(Ordering::Relaxed) - before
-}
 
 #[test]
 fn dg_time_loop_does_not_allocate() {
@@ -105,7 +66,7 @@ fn dg_time_loop_does_not_allocate() {
         st.step(&line, &env, t, dt, &mut state, &mut ws, ends);
         t += dt;
     }
-    let n = counted(|| {
+    let n = allocations_in(|| {
         for _ in 0..200 {
             st.step(&line, &env, t, dt, &mut state, &mut ws, ends);
             t += dt;

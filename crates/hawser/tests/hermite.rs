@@ -5,7 +5,6 @@
 mod common;
 use common::*;
 use hawser::formulation::hermite::point_on_element;
-use hawser::linalg::eigen::dense_generalized;
 use hawser::linearise::{LinearisationOptions, linearise};
 use hawser::math::{Real, Vec3};
 use hawser::model::{Formulation, MassMatrix, Model};
@@ -160,12 +159,9 @@ fn simply_supported_beam_frequencies() {
     model.lines[0].formulation = Formulation::Hermite;
     let system = System::new(&model).unwrap();
     let y = system.straight_state();
-    let lin = linearise(&system, &y, LinearisationOptions::default());
-    let k = lin.stiffness.symmetric_part().to_dense(&lin.dofs);
-    let m = lin.mass.to_dense(&lin.dofs);
-    let pairs = dense_generalized(&k, &m).expect("eigen solve");
-    let mut omegas: Vec<Real> = pairs.values.iter().map(|l| l.max(0.0).sqrt()).collect();
-    omegas.sort_by(|a, b| a.partial_cmp(b).unwrap());
+    let omegas = linearise(&system, &y, LinearisationOptions::default())
+        .angular_frequencies()
+        .expect("eigen solve");
     for n in 1..=3 {
         let exact = (n as Real * std::f64::consts::PI / length).powi(2) * (ei / gamma).sqrt();
         for plane in 0..2 {
@@ -382,4 +378,48 @@ fn clamped_cantilever_sags_as_euler_bernoulli() {
         "clamped tangent left its direction: {:?}",
         out.1
     );
+}
+
+/// The two strain measures on a line stretched 20 % by a hanging mass (in vacuum, a line of
+/// negligible mass): with the exact strain ε = |r'| − 1 the stretch λ = |r'| is 1 + T/EA.
+/// With the paper's small strain ε = ½(λ² − 1) the energy ½∫EA ε² gives the force along the
+/// line EA ε ∂ε/∂λ = EA ε λ, so T = EA ½(λ² − 1) λ: λ³ − λ − 2T/EA = 0 (λ = 1.1597 against
+/// 1.2). Each within 1e-6 of its own closed form.
+#[test]
+fn strain_measures_give_their_closed_form_stretch() {
+    use hawser::model::StrainMeasure;
+    let (length, ea, mass, g) = (10.0, 1.0e4, 1.0e4 * 0.2 / 9.80665, 9.80665);
+    let stretched = |measure: StrainMeasure| {
+        let top = Vec3::new(0.0, 0.0, 100.0);
+        let mut m = single_line(
+            dry_line_type(0.01, 1.0e-6, ea),
+            length,
+            4,
+            fixed("top", top),
+            free("weight", top - Vec3::new(0.0, 0.0, length), mass, 0.0),
+            MassMatrix::Consistent,
+        );
+        m.environment = vacuum_environment(g);
+        m.lines[0].formulation = Formulation::Hermite;
+        m.lines[0].strain_measure = measure;
+        let system = System::new(&m).unwrap();
+        let sol = solve(&system, None, &StaticOptions::default()).expect("statics");
+        let mut ws = system.workspace();
+        evaluate(&system, &sol.state, &mut ws);
+        top.z - ws.points[1].position.z
+    };
+    let ratio = mass * g / ea;
+    let exact = stretched(StrainMeasure::Exact);
+    let small = stretched(StrainMeasure::SmallStrain);
+    // Newton on λ³ − λ − 2T/EA = 0 from λ = 1 + T/EA.
+    let mut lambda: Real = 1.0 + ratio;
+    for _ in 0..50 {
+        lambda -= (lambda.powi(3) - lambda - 2.0 * ratio) / (3.0 * lambda * lambda - 1.0);
+    }
+    let (e_exact, e_small) = (length * (1.0 + ratio), length * lambda);
+    eprintln!(
+        "exact strain: {exact:.9} m vs {e_exact:.9}; small strain: {small:.9} m vs {e_small:.9}"
+    );
+    assert!((exact / e_exact - 1.0).abs() < 1e-6, "{exact} vs {e_exact}");
+    assert!((small / e_small - 1.0).abs() < 1e-6, "{small} vs {e_small}");
 }

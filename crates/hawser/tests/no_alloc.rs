@@ -6,10 +6,12 @@
 //! calls of `Simulation::step` and 1000 of `Simulation::evaluate` must allocate nothing, for:
 //! a consistent-mass line with a free point mass; the same with lumped mass; and two lines
 //! sharing a free point (the dense shared-point solve) with a prescribed, time-series end, in
-//! water with current, an irregular sea, drag, added mass and seabed contact, under each RK
-//! scheme.
+//! water with current, an irregular sea, drag, added mass and seabed contact, under each
+//! scheme; and the same with one `hermite` line with bending.
 
+mod alloc_count;
 mod common;
+use alloc_count::allocations_in;
 use common::*;
 use hawser::math::Vec3;
 use hawser::model::*;
@@ -17,54 +19,6 @@ use hawser::physics::environment::Current;
 use hawser::physics::waves::{IrregularSea, SeaState, Spectrum, Stretching, WaveSpec, Waves};
 use hawser::simulation::Simulation;
 use hawser::system::System;
-use std::alloc::{GlobalAlloc, Layout, System as SystemAlloc};
-use std::cell::Cell;
-use std::sync::atomic::{AtomicUsize, Ordering};
-
-struct Counting;
-
-static ALLOCATIONS: AtomicUsize = AtomicUsize::new(0);
-
-thread_local! {
-    // `Cell<bool>` needs no destructor, so this thread-local never allocates itself.
-    static COUNTING: Cell<bool> = const { Cell::new(false) };
-}
-
-fn note() {
-    if COUNTING.with(|c| c.get()) {
-        ALLOCATIONS.fetch_add(1, Ordering::Relaxed);
-    }
-}
-
-unsafe impl GlobalAlloc for Counting {
-    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-        note();
-        unsafe { SystemAlloc.alloc(layout) }
-    }
-    unsafe fn alloc_zeroed(&self, layout: Layout) -> *mut u8 {
-        note();
-        unsafe { SystemAlloc.alloc_zeroed(layout) }
-    }
-    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
-        note();
-        unsafe { SystemAlloc.realloc(ptr, layout, new_size) }
-    }
-    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
-        unsafe { SystemAlloc.dealloc(ptr, layout) }
-    }
-}
-
-#[global_allocator]
-static GLOBAL: Counting = Counting;
-
-/// Allocations made by this thread while running `f`.
-fn allocations_in(f: impl FnOnce()) -> usize {
-    let before = ALLOCATIONS.load(Ordering::Relaxed);
-    COUNTING.with(|c| c.set(true));
-    f();
-    COUNTING.with(|c| c.set(false));
-    ALLOCATIONS.load(Ordering::Relaxed) - before
-}
 
 fn check(name: &str, model: &Model, scheme: Scheme) {
     let system = System::new(model).unwrap();
@@ -195,5 +149,13 @@ fn time_loop_does_not_allocate() {
     });
     for scheme in [Scheme::Rk4, Scheme::SspRk3, Scheme::ThreeLevel] {
         check("two lines on a shared buoy", &model, scheme);
+    }
+
+    // The lower line in cubic Hermite elements with bending: the banded solve with a free
+    // end and the three-level scheme's exact mass stages.
+    model.lines[0].formulation = Formulation::Hermite;
+    model.line_types[0].bending_stiffness = 1.0e3;
+    for scheme in [Scheme::Rk4, Scheme::SspRk3, Scheme::ThreeLevel] {
+        check("hermite and fe lines on a shared buoy", &model, scheme);
     }
 }

@@ -14,11 +14,12 @@
 //! including the part of an element below the water surface; seabed contact at the nodes.
 
 use super::{ElementState, LoadOptions, Mesh};
+use crate::formulation::fluid_load;
 use crate::linalg::LineBlocks;
 use crate::math::{Mat3, Real, Vec3};
 use crate::model::MassMatrix;
 use crate::physics::environment::Environment;
-use crate::physics::hydrodynamics::{added_mass_matrix, drag_force, fluid_inertia_force};
+use crate::physics::hydrodynamics::added_mass_matrix;
 
 /// Gauss points on [0, 1] for two-point quadrature (weight ½ each).
 const GAUSS: [Real; 2] = [0.5 - 0.288_675_134_594_812_9, 0.5 + 0.288_675_134_594_812_9];
@@ -84,26 +85,18 @@ pub fn line_forces(
         let w = 0.5 * l0;
         for &xi in &GAUSS {
             let (na, nb) = (1.0 - xi, xi);
-            let zg = ra.z * na + rb.z * nb;
-            let vg = va * na + vb * nb;
-            let rho = env.fluid_density(zg);
-            let mut f;
-            if still_water {
-                f = drag_force(&lt.drag, rho, lt.diameter, root_stretch, &t, &-vg);
-            } else {
-                let rg = ra * na + rb * nb;
-                let relative = env.fluid_velocity(&rg, time) * options.current_factor - vg;
-                f = drag_force(&lt.drag, rho, lt.diameter, root_stretch, &t, &relative);
-                let af = env.fluid_acceleration(&rg, time);
-                f += fluid_inertia_force(
-                    rho,
-                    sec.area,
-                    lt.normal_added_mass,
-                    lt.tangential_added_mass,
-                    &t,
-                    &af,
-                );
-            }
+            let f = fluid_load(
+                env,
+                lt,
+                sec.area,
+                time,
+                &(ra * na + rb * nb),
+                &(va * na + vb * nb),
+                &t,
+                root_stretch,
+                options.current_factor,
+                still_water,
+            );
             forces[e] += f * (w * na);
             forces[e + 1] += f * (w * nb);
         }
@@ -178,6 +171,35 @@ pub fn line_forces(
                 forces[node] += f * (0.5 * l0);
             }
         }
+    }
+}
+
+/// Mechanical energy of element e [J]: kinetic ½ vᵀ M v with the element's structural mass
+/// (consistent, ½ (m/6)[2 1; 1 2] (eq. 12), or lumped), weight γ0 L0 g z̄ and strain energy
+/// L0 W(ε), ε = L/L0 − 1: the potential whose gradient [`line_forces`] evaluates in air.
+pub fn element_energy(
+    mesh: &Mesh,
+    mass_matrix: MassMatrix,
+    gravity: Real,
+    q: &[Vec3],
+    qdot: &[Vec3],
+    e: usize,
+) -> super::Energy {
+    let s = mesh.section(e);
+    let l0 = s.element_length;
+    let m = s.line_type.mass_per_length * l0;
+    let (va, vb) = (qdot[e], qdot[e + 1]);
+    super::Energy {
+        kinetic: match mass_matrix {
+            MassMatrix::Lumped => 0.25 * m * (va.norm_squared() + vb.norm_squared()),
+            MassMatrix::Consistent => {
+                m / 6.0 * (va.norm_squared() + va.dot(&vb) + vb.norm_squared())
+            }
+        },
+        gravity: m * gravity * 0.5 * (q[e].z + q[e + 1].z),
+        elastic: l0
+            * s.law
+                .strain_energy_density((q[e + 1] - q[e]).norm() / l0 - 1.0),
     }
 }
 

@@ -34,11 +34,12 @@
 //! [`vector_index`]), so the line's matrices are block-banded with bandwidth 3.
 
 use super::{ElementState, LoadOptions, Mesh};
+use crate::formulation::fluid_load;
 use crate::linalg::LineBlocks;
 use crate::math::{Mat3, Real, Vec3};
 use crate::model::StrainMeasure;
 use crate::physics::environment::Environment;
-use crate::physics::hydrodynamics::{added_mass_matrix, drag_force, fluid_inertia_force};
+use crate::physics::hydrodynamics::added_mass_matrix;
 
 /// Options of a `hermite` line.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
@@ -119,6 +120,52 @@ fn combine(w: &[Real; 4], v: &[Vec3; 4]) -> Vec3 {
     v[0] * w[0] + v[1] * w[1] + v[2] * w[2] + v[3] * w[3]
 }
 
+/// Axial strain ε, its rate ε̇ and ∂ε/∂r' at a point with r' = `r1` and ṙ' = `v1`: exact,
+/// ε = |r'| − 1, ε̇ = τ·ṙ', ∂ε/∂r' = τ; small strain, ε = ½(r'·r' − 1), ε̇ = r'·ṙ', ∂ε/∂r' = r'.
+#[inline]
+pub fn axial_strain(r1: &Vec3, v1: &Vec3, measure: StrainMeasure) -> (Real, Real, Vec3) {
+    match measure {
+        StrainMeasure::SmallStrain => (0.5 * (r1.norm_squared() - 1.0), r1.dot(v1), *r1),
+        StrainMeasure::Exact => {
+            let stretch = r1.norm();
+            let tau = r1 / stretch;
+            (stretch - 1.0, tau.dot(v1), tau)
+        }
+    }
+}
+
+/// Mechanical energy of element e [J]: kinetic ½∫γ0|ṙ|² ds, weight ∫γ0 g z ds and strain
+/// energy ∫ (W(ε) + ½ EI |r''|²) ds, W the axial law's energy density, by the same four-point
+/// rule as the forces (whose gradient they are).
+pub fn element_energy(
+    mesh: &Mesh,
+    options: &super::HermiteOptions,
+    gravity: Real,
+    q: &[Vec3],
+    qdot: &[Vec3],
+    e: usize,
+) -> super::Energy {
+    let n = mesh.elements();
+    let s = mesh.section(e);
+    let (l, gamma) = (s.element_length, s.line_type.mass_per_length);
+    let idx = element_vectors(e, n);
+    let qe = [q[idx[0]], q[idx[1]], q[idx[2]], q[idx[3]]];
+    let ve = [qdot[idx[0]], qdot[idx[1]], qdot[idx[2]], qdot[idx[3]]];
+    let mut energy = super::Energy::default();
+    for (xi, weight) in GAUSS {
+        let (sh, d1, d2, _) = shape(xi, l);
+        let ds = weight * l;
+        let r2 = combine(&d2, &qe);
+        let (strain, _, _) = axial_strain(&combine(&d1, &qe), &Vec3::zeros(), options.strain);
+        energy.kinetic += 0.5 * gamma * combine(&sh, &ve).norm_squared() * ds;
+        energy.gravity += gamma * gravity * combine(&sh, &qe).z * ds;
+        energy.elastic += (s.law.strain_energy_density(strain)
+            + 0.5 * s.line_type.bending_stiffness * r2.norm_squared())
+            * ds;
+    }
+    energy
+}
+
 /// Position [m] and unit tangent at ξ of element e from the line's vectors `q`.
 pub fn point_on_element(mesh: &Mesh, q: &[Vec3], e: usize, xi: Real) -> (Vec3, Vec3) {
     let n = mesh.elements();
@@ -153,7 +200,6 @@ pub fn line_forces(
     let rho_w = env.water_density;
     let bed_z = env.seabed_z();
     let still_water = env.is_still_water();
-    let small_strain = options.strain == StrainMeasure::SmallStrain;
     let mut blocks = blocks;
     if let Some(b) = blocks.as_deref_mut() {
         b.clear();
@@ -180,11 +226,7 @@ pub fn line_forces(
             let stretch = r1.norm();
             let tau = r1 / stretch;
             // Axial: Q_i −= ∫ T ∂ε/∂r' s_i' ds.
-            let (strain, rate, direction) = if small_strain {
-                (0.5 * (r1.norm_squared() - 1.0), r1.dot(&v1), r1)
-            } else {
-                (stretch - 1.0, tau.dot(&v1), tau)
-            };
+            let (strain, rate, direction) = axial_strain(&r1, &v1, options.strain);
             let tension = sec.law.tension(strain, rate);
             let axial = direction * (tension * w);
             for i in 0..4 {
@@ -203,22 +245,18 @@ pub fn line_forces(
             if r.z < 0.0 {
                 f.z += rho_w * sec.area * g;
             }
-            let root_stretch = stretch.sqrt();
-            if still_water {
-                f += drag_force(&lt.drag, rho, lt.diameter, root_stretch, &tau, &-v);
-            } else {
-                let relative = env.fluid_velocity(&r, time) * load.current_factor - v;
-                f += drag_force(&lt.drag, rho, lt.diameter, root_stretch, &tau, &relative);
-                let af = env.fluid_acceleration(&r, time);
-                f += fluid_inertia_force(
-                    rho,
-                    sec.area,
-                    lt.normal_added_mass,
-                    lt.tangential_added_mass,
-                    &tau,
-                    &af,
-                );
-            }
+            f += fluid_load(
+                env,
+                lt,
+                sec.area,
+                time,
+                &r,
+                &v,
+                &tau,
+                stretch.sqrt(),
+                load.current_factor,
+                still_water,
+            );
             if r.z < bed_z {
                 f += env.seabed.contact_force(
                     bed_z,
@@ -262,12 +300,7 @@ pub fn line_forces(
         let v1 = combine(&d1, &ve);
         let r2 = combine(&d2, &qe);
         let stretch = r1.norm();
-        let tau = r1 / stretch;
-        let (strain, rate) = if small_strain {
-            (0.5 * (r1.norm_squared() - 1.0), r1.dot(&v1))
-        } else {
-            (stretch - 1.0, tau.dot(&v1))
-        };
+        let (strain, rate, _) = axial_strain(&r1, &v1, options.strain);
         elements.strain[e] = strain;
         elements.tension[e] = sec.law.tension(strain, rate);
         elements.curvature[e] = r1.cross(&r2).norm() / (stretch * stretch * stretch);

@@ -19,6 +19,7 @@ use crate::linalg::LineBlocks;
 use crate::math::{Real, Vec3};
 use crate::model::{LineType, MassMatrix};
 use crate::physics::environment::Environment;
+use crate::physics::hydrodynamics::{drag_force, fluid_inertia_force};
 use crate::physics::material::AxialLaw;
 
 pub use crate::model::StrainMeasure;
@@ -39,6 +40,30 @@ pub struct SectionProperties {
     pub inverse_length: Real,
 }
 
+impl SectionProperties {
+    /// The properties of elements of unstretched length `element_length` [m] of line type
+    /// `line_type`: area, and the axial law with its damping resolved for that length (a
+    /// damping ratio is a fraction of one element's critical damping).
+    pub fn new(line_type: &LineType, element_length: Real) -> Self {
+        let t = line_type;
+        Self {
+            line_type: t.clone(),
+            element_length,
+            area: t.area(),
+            law: AxialLaw {
+                stiffness: t.axial_stiffness.clone(),
+                damping: t.axial_damping.coefficient(
+                    element_length,
+                    &t.axial_stiffness,
+                    t.mass_per_length,
+                ),
+                compression: t.compression,
+            },
+            inverse_length: 1.0 / element_length,
+        }
+    }
+}
+
 /// The elements of a line along its unstretched arc length: sections and the section of each
 /// element. Shared by every formulation.
 #[derive(Clone, Debug)]
@@ -55,21 +80,7 @@ impl Mesh {
         let mut out = Vec::new();
         let mut element_section = Vec::new();
         for (k, (t, length, n)) in sections.iter().enumerate() {
-            let l0 = length / *n as Real;
-            let law = AxialLaw {
-                stiffness: t.axial_stiffness.clone(),
-                damping: t
-                    .axial_damping
-                    .coefficient(l0, &t.axial_stiffness, t.mass_per_length),
-                compression: t.compression,
-            };
-            out.push(SectionProperties {
-                line_type: t.clone(),
-                element_length: l0,
-                area: t.area(),
-                law,
-                inverse_length: 1.0 / l0,
-            });
+            out.push(SectionProperties::new(t, length / *n as Real));
             element_section.extend(std::iter::repeat_n(k, *n));
         }
         Self {
@@ -217,6 +228,69 @@ impl ElementState {
             bending_moment: vec![0.0; n],
             shear_force: vec![0.0; n],
         }
+    }
+}
+
+/// Fluid load per unit unstretched length [N/m] at a point of a line at `r` [m] moving at
+/// `v` [m/s], with unit tangent τ and √(1+ε) (SPEC §1): Morison drag on the velocity relative
+/// to the water (the current scaled by `current_factor`), and, in moving water, the
+/// Froude–Krylov and added-mass force of the water's acceleration. `still_water` skips the
+/// fluid kinematics where there is no current and no wave. Shared by every formulation at its
+/// own quadrature points.
+#[allow(clippy::too_many_arguments)]
+#[inline]
+pub fn fluid_load(
+    env: &Environment,
+    line_type: &LineType,
+    area: Real,
+    time: Real,
+    r: &Vec3,
+    v: &Vec3,
+    tau: &Vec3,
+    root_stretch: Real,
+    current_factor: Real,
+    still_water: bool,
+) -> Vec3 {
+    let lt = line_type;
+    let rho = env.fluid_density(r.z);
+    if still_water {
+        return drag_force(&lt.drag, rho, lt.diameter, root_stretch, tau, &-v);
+    }
+    let relative = env.fluid_velocity(r, time) * current_factor - v;
+    drag_force(&lt.drag, rho, lt.diameter, root_stretch, tau, &relative)
+        + fluid_inertia_force(
+            rho,
+            area,
+            lt.normal_added_mass,
+            lt.tangential_added_mass,
+            tau,
+            &env.fluid_acceleration(r, time),
+        )
+}
+
+/// Mechanical energy [J] of an element, a line or a state ([`crate::system::System::mechanical_energy`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Energy {
+    /// Kinetic energy [J].
+    pub kinetic: Real,
+    /// Potential energy of weight in air, relative to z = 0 [J].
+    pub gravity: Real,
+    /// Elastic strain energy [J].
+    pub elastic: Real,
+}
+
+impl Energy {
+    /// The sum [J].
+    pub fn total(&self) -> Real {
+        self.kinetic + self.gravity + self.elastic
+    }
+}
+
+impl std::ops::AddAssign for Energy {
+    fn add_assign(&mut self, o: Energy) {
+        self.kinetic += o.kinetic;
+        self.gravity += o.gravity;
+        self.elastic += o.elastic;
     }
 }
 

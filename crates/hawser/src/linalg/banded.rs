@@ -24,16 +24,6 @@ impl BandedLu {
         }
     }
 
-    /// Dimension n.
-    pub fn dim(&self) -> usize {
-        self.n
-    }
-
-    /// Half-bandwidth.
-    pub fn half_bandwidth(&self) -> usize {
-        self.kd
-    }
-
     /// Sets every entry to zero.
     pub fn clear(&mut self) {
         self.a.iter_mut().for_each(|x| *x = 0.0);

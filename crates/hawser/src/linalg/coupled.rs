@@ -63,11 +63,6 @@ pub enum Singular {
 }
 
 impl LineBlocks {
-    /// Storage for a block-tridiagonal line of `elements` elements (nodes 0..=elements).
-    pub fn new(elements: usize, end_a: EndKind, end_b: EndKind, coupled: bool) -> Self {
-        Self::banded(elements + 1, 1, end_a, end_b, coupled)
-    }
-
     /// Storage for `nodes` 3-vector unknowns (ends included) with block bandwidth `width`.
     pub fn banded(
         nodes: usize,

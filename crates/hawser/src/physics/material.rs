@@ -65,6 +65,38 @@ pub struct AxialLaw {
 }
 
 impl AxialLaw {
+    /// Elastic strain energy per unit unstretched length ∫₀^ε T_e(e) de [J/m] of an axial law
+    /// (zero in compression unless the law carries it; a table integrates exactly piecewise).
+    pub fn strain_energy_density(&self, strain: Real) -> Real {
+        let law = self;
+        if !(strain > 0.0) {
+            return if law.compression {
+                0.5 * law.stiffness.max_tangent() * strain * strain
+            } else {
+                0.0
+            };
+        }
+        match &law.stiffness {
+            AxialStiffness::Linear(ea) => 0.5 * ea * strain * strain,
+            AxialStiffness::Table { strain: e, .. } => {
+                // Trapezoids between the table's breakpoints below ε, then up to ε.
+                let mut w = 0.0;
+                let mut prev = 0.0;
+                for &ek in e.iter().skip(1).take_while(|&&ek| ek < strain) {
+                    w += 0.5
+                        * (law.stiffness.tension_and_tangent(prev).0
+                            + law.stiffness.tension_and_tangent(ek).0)
+                        * (ek - prev);
+                    prev = ek;
+                }
+                w + 0.5
+                    * (law.stiffness.tension_and_tangent(prev).0
+                        + law.stiffness.tension_and_tangent(strain).0)
+                    * (strain - prev)
+            }
+        }
+    }
+
     /// Tension T [N] from strain ε [-] and strain rate ε̇ [1/s] (DG paper eq. 22).
     ///
     /// The damping term acts whatever the strain, as in eq. 22.

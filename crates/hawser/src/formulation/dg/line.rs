@@ -2,9 +2,9 @@
 //! (DG paper Table 1), projections of initial shapes, positions and channels.
 
 use super::basis::{Basis, legendre};
+use crate::formulation::SectionProperties;
 use crate::math::{Real, Vec3, get3, set3};
 use crate::model::LineType;
-use crate::physics::material::AxialLaw;
 
 /// Extra Gauss points beyond P + 1 used by the right-hand side: Q = P + 1 + this = P + 2,
 /// exact for polynomial integrands of degree 2P + 3, which keeps the aliasing of the
@@ -27,14 +27,9 @@ pub struct DgSectionSpec {
 /// A section resolved for computation.
 #[derive(Clone, Debug)]
 pub struct DgSection {
-    /// Line type.
-    pub line_type: LineType,
-    /// Unstretched element length h [m].
-    pub element_length: Real,
-    /// Cross-section area A = π d²/4 [m²].
-    pub area: Real,
-    /// Axial law with the damping coefficient resolved for the element length (DG paper eq. 22).
-    pub law: AxialLaw,
+    /// Line type, element length h, area and the axial law with its damping resolved for h
+    /// (DG paper eq. 22), as every formulation resolves them.
+    pub properties: SectionProperties,
     /// Basis tables of the section's order.
     pub basis: Basis,
     /// Largest axial wave speed √(max T'/γ0) [m/s] (DG paper eq. 25).
@@ -200,13 +195,6 @@ impl DgLine {
             assert!(spec.elements > 0 && spec.length > 0.0);
             let t = &spec.line_type;
             let h = spec.length / spec.elements as Real;
-            let law = AxialLaw {
-                stiffness: t.axial_stiffness.clone(),
-                damping: t
-                    .axial_damping
-                    .coefficient(h, &t.axial_stiffness, t.mass_per_length),
-                compression: t.compression,
-            };
             let basis = Basis::new(spec.order, spec.order + 1 + EXTRA_POINTS);
             let m = basis.modes();
             for _ in 0..spec.elements {
@@ -225,11 +213,8 @@ impl DgLine {
             }
             bending |= t.bending_stiffness > 0.0 || t.bending_damping > 0.0;
             out.push(DgSection {
-                line_type: t.clone(),
-                element_length: h,
-                area: t.area(),
+                properties: SectionProperties::new(t, h),
                 wave_speed: (t.axial_stiffness.max_tangent() / t.mass_per_length).sqrt(),
-                law,
                 basis,
             });
         }
@@ -315,7 +300,8 @@ impl DgLine {
     /// Velocity ν = v/γ0 [m/s] at arc length s [m].
     pub fn velocity(&self, state: &[Real], s: Real) -> Vec3 {
         let (e, xi) = self.locate(s);
-        self.eval_modes(e, self.fields(state, e).1, xi) / self.section(e).line_type.mass_per_length
+        self.eval_modes(e, self.fields(state, e).1, xi)
+            / self.section(e).properties.line_type.mass_per_length
     }
 
     /// Strain ε = |q| − 1 [-] at arc length s [m] (DG paper eq. 7).
@@ -327,7 +313,10 @@ impl DgLine {
     /// [`super::DgWorkspace`]'s channels after a right-hand-side evaluation).
     pub fn elastic_tension(&self, state: &[Real], s: Real) -> Real {
         let (e, _) = self.locate(s);
-        self.section(e).law.tension(self.strain(state, s), 0.0)
+        self.section(e)
+            .properties
+            .law
+            .tension(self.strain(state, s), 0.0)
     }
 
     /// Position [m] at arc length s [m] from the evolved position field r (ṙ = v/γ0).
@@ -382,7 +371,7 @@ impl DgLine {
             let sec = self.section(e);
             let m = sec.basis.modes();
             let fine = Basis::new(m - 1, m + 8);
-            let gamma = sec.line_type.mass_per_length;
+            let gamma = sec.properties.line_type.mass_per_length;
             let o = el.state;
             state[o..o + 9 * m].iter_mut().for_each(|x| *x = 0.0);
             for qp in 0..fine.points {

@@ -95,12 +95,12 @@ impl DgLine {
         let qdot = self.eval_modes(e, &rate[el.state..el.state + m3], xi);
         let l = q.norm().max(1e-12);
         let i = q / l;
-        let tension = sec.law.tension(l - 1.0, i.dot(&qdot));
+        let tension = sec.properties.law.tension(l - 1.0, i.dot(&qdot));
         let (mut curvature, mut moment, mut shear) = (Vec3::zeros(), Vec3::zeros(), Vec3::zeros());
         if self.bending {
             let modes = 3 * el.mode..3 * el.mode + m3;
             curvature = self.eval_modes(e, &ws.modes_kappa[modes.clone()], xi);
-            let lt = &sec.line_type;
+            let lt = &sec.properties.line_type;
             let mut k = curvature * lt.bending_stiffness;
             if lt.bending_damping != 0.0 {
                 k += self.eval_modes(e, &ws.modes_kdot[modes.clone()], xi) * lt.bending_damping;

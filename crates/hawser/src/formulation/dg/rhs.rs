@@ -11,9 +11,10 @@
 
 use super::basis::Basis;
 use super::line::{DgLine, EndLoad, EndState, Rotation, Translation};
+use crate::formulation::fluid_load;
 use crate::math::{Real, Vec3, add3, get3, set3, solve3};
 use crate::physics::environment::Environment;
-use crate::physics::hydrodynamics::{added_mass_matrix, drag_force, fluid_inertia_force};
+use crate::physics::hydrodynamics::added_mass_matrix;
 
 /// Scratch of a line's right-hand side, sized once by [`DgWorkspace::new`]: values at the
 /// quadrature points, at the two ends of every element, at the interfaces, and the modes of
@@ -204,8 +205,13 @@ impl DgLine {
     #[inline]
     fn wave_speed_at(&self, e: usize, strain: Real) -> Real {
         let sec = self.section(e);
-        let k = sec.law.stiffness.tension_and_tangent(strain.max(0.0)).1;
-        (k / sec.line_type.mass_per_length).sqrt()
+        let k = sec
+            .properties
+            .law
+            .stiffness
+            .tension_and_tangent(strain.max(0.0))
+            .1;
+        (k / sec.properties.line_type.mass_per_length).sqrt()
     }
 
     /// Time derivative of the line state and the loads on the end attachments.
@@ -231,7 +237,7 @@ impl DgLine {
             let sec = self.section(e);
             let b = &sec.basis;
             let m = b.modes();
-            let inv_gamma = 1.0 / sec.line_type.mass_per_length;
+            let inv_gamma = 1.0 / sec.properties.line_type.mass_per_length;
             let (q, v, _) = self.fields(state, e);
             let pts = el.point..el.point + b.points;
             let half = 0.5 * el.length;
@@ -261,8 +267,8 @@ impl DgLine {
             let lam_r = self.wave_speed_at(i, qr.norm() - 1.0);
             let lam = lam_l.max(lam_r);
             let (gl, gr) = (
-                self.section(i - 1).line_type.mass_per_length,
-                self.section(i).line_type.mass_per_length,
+                self.section(i - 1).properties.line_type.mass_per_length,
+                self.section(i).properties.line_type.mass_per_length,
             );
             let z = lam * 0.5 * (gl + gr);
             ws.impedance[i] = z;
@@ -275,7 +281,7 @@ impl DgLine {
                 // order (T' = γ0 λ²).
                 let tv = |e: usize, q: Vec3| {
                     let l = q.norm().max(1e-12);
-                    q * (self.section(e).law.tension(l - 1.0, 0.0) / l)
+                    q * (self.section(e).properties.law.tension(l - 1.0, 0.0) / l)
                 };
                 (tv(i, qr) - tv(i - 1, ql)) / z
             };
@@ -283,7 +289,7 @@ impl DgLine {
         }
         for (side, (i, p, e)) in [(0, 0, 0), (n, 2 * n - 1, n - 1)].into_iter().enumerate() {
             let lam = self.wave_speed_at(e, ws.end_q[p].norm() - 1.0);
-            ws.impedance[i] = lam * self.section(e).line_type.mass_per_length;
+            ws.impedance[i] = lam * self.section(e).properties.line_type.mass_per_length;
             ws.flux_q[i] = match self.ends[side].translation {
                 Translation::Velocity => ends[side].velocity,
                 Translation::Force => ws.end_nu[p],
@@ -317,14 +323,14 @@ impl DgLine {
                 ws.stretch[p] = l;
                 ws.ihat[p] = i;
                 ws.idot[p] = idot;
-                ws.tension[p] = sec.law.tension(l - 1.0, rate);
+                ws.tension[p] = sec.properties.law.tension(l - 1.0, rate);
             }
             for p in [2 * e, 2 * e + 1] {
                 let (l, i, rate, idot) = kinematics(&ws.end_q[p], &ws.end_qdot[p]);
                 ws.end_stretch[p] = l;
                 ws.end_ihat[p] = i;
                 ws.end_idot[p] = idot;
-                ws.end_tension[p] = sec.law.tension(l - 1.0, rate);
+                ws.end_tension[p] = sec.properties.law.tension(l - 1.0, rate);
             }
         }
 
@@ -362,7 +368,7 @@ impl DgLine {
         let g = env.gravity;
         for (e, el) in self.elements.iter().enumerate() {
             let sec = self.section(e);
-            let lt = &sec.line_type;
+            let lt = &sec.properties.line_type;
             let b = &sec.basis;
             let m = b.modes();
             let gamma = lt.mass_per_length;
@@ -372,30 +378,25 @@ impl DgLine {
                 let nu = ws.nu[p];
                 let i = ws.ihat[p];
                 let l = ws.stretch[p];
-                let rho = env.fluid_density(r.z);
                 let buoyancy = if r.z < 0.0 {
-                    env.water_density * sec.area * g
+                    env.water_density * sec.properties.area * g
                 } else {
                     0.0
                 };
                 let net_weight = buoyancy - gamma * g;
                 let mut f = Vec3::new(0.0, 0.0, net_weight);
-                let root = l.sqrt();
-                if still {
-                    f += drag_force(&lt.drag, rho, lt.diameter, root, &i, &-nu);
-                } else {
-                    let rel = env.fluid_velocity(&r, time) - nu;
-                    f += drag_force(&lt.drag, rho, lt.diameter, root, &i, &rel);
-                    let af = env.fluid_acceleration(&r, time);
-                    f += fluid_inertia_force(
-                        rho,
-                        sec.area,
-                        lt.normal_added_mass,
-                        lt.tangential_added_mass,
-                        &i,
-                        &af,
-                    );
-                }
+                f += fluid_load(
+                    env,
+                    lt,
+                    sec.properties.area,
+                    time,
+                    &r,
+                    &nu,
+                    &i,
+                    l.sqrt(),
+                    1.0,
+                    still,
+                );
                 if r.z < bed_z + lt.diameter {
                     f += env.seabed.contact_force(
                         bed_z,
@@ -429,7 +430,7 @@ impl DgLine {
                     let rho = env.fluid_density(ws.pos[p].z);
                     let mut mm = added_mass_matrix(
                         rho,
-                        sec.area,
+                        sec.properties.area,
                         lt.normal_added_mass,
                         lt.tangential_added_mass,
                         &ws.ihat[p],
@@ -497,8 +498,8 @@ impl DgLine {
             let sec = self.section(e);
             let b = &sec.basis;
             let (ei, zb) = (
-                sec.line_type.bending_stiffness,
-                sec.line_type.bending_damping,
+                sec.properties.line_type.bending_stiffness,
+                sec.properties.line_type.bending_damping,
             );
             let pts = el.point..el.point + b.points;
             let modes = 3 * el.mode..3 * (el.mode + b.modes());

@@ -46,7 +46,7 @@ pub fn stable_step(line: &DgLine, safety: Real) -> Real {
         let sec = &line.sections[el.section];
         let p = sec.basis.order as Real;
         let h = el.length;
-        let lt = &sec.line_type;
+        let lt = &sec.properties.line_type;
         let gamma = lt.mass_per_length;
         let hp = h / ((p + 1.0) * (p + 1.0));
         // Axial and flexural limits combined in quadrature (1/Δt² adds): both act on the
@@ -60,9 +60,9 @@ pub fn stable_step(line: &DgLine, safety: Real) -> Real {
         }
         // Damping: real-axis limits, whose rates add to the oscillatory one.
         let mut rate = if inv2 > 0.0 { inv2.sqrt() } else { 0.0 };
-        if sec.law.damping > 0.0 {
-            rate +=
-                sec.law.damping * (p + 1.0).powf(3.25) / (AXIAL_DAMPING_COURANT * h * h * gamma);
+        if sec.properties.law.damping > 0.0 {
+            rate += sec.properties.law.damping * (p + 1.0).powf(3.25)
+                / (AXIAL_DAMPING_COURANT * h * h * gamma);
         }
         if lt.bending_damping > 0.0 {
             rate += lt.bending_damping * (p + 1.0).powi(7)
