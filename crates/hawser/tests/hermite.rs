@@ -406,6 +406,14 @@ fn strain_measures_give_their_closed_form_stretch() {
         let sol = solve(&system, None, &StaticOptions::default()).expect("statics");
         let mut ws = system.workspace();
         evaluate(&system, &sol.state, &mut ws);
+        // The element tension channel is the force along the line: the weight it carries.
+        for (e, t) in ws.lines[0].elements.tension.iter().enumerate() {
+            assert!(
+                (t / (mass * g) - 1.0).abs() < 1e-6,
+                "{measure:?}: element {e} tension {t} vs {}",
+                mass * g
+            );
+        }
         top.z - ws.points[1].position.z
     };
     let ratio = mass * g / ea;

@@ -300,9 +300,11 @@ pub fn line_forces(
         let v1 = combine(&d1, &ve);
         let r2 = combine(&d2, &qe);
         let stretch = r1.norm();
-        let (strain, rate, _) = axial_strain(&r1, &v1, options.strain);
+        let (strain, rate, direction) = axial_strain(&r1, &v1, options.strain);
         elements.strain[e] = strain;
-        elements.tension[e] = sec.law.tension(strain, rate);
+        // The force along the line is T ∂ε/∂r' · τ: T for the exact strain, T |r'| for the
+        // small strain (whose energy conjugate T is not the force).
+        elements.tension[e] = sec.law.tension(strain, rate) * direction.dot(&(r1 / stretch));
         elements.curvature[e] = r1.cross(&r2).norm() / (stretch * stretch * stretch);
         elements.bending_moment[e] = (r2 * ei + combine(&d2, &ve) * zeta_b).norm();
         elements.shear_force[e] = (combine(&d3, &qe) * ei + combine(&d3, &ve) * zeta_b).norm();

@@ -66,7 +66,9 @@ pub enum StrainMeasure {
     /// ε = |r'| − 1 (SPEC §1): exact for any stretch.
     #[default]
     Exact,
-    /// ε = ½ (r'·r' − 1) (elastic-link paper eq. 12): within ε²/2 of the exact strain.
+    /// ε = ½ (r'·r' − 1) (elastic-link paper eq. 12): within ε²/2 of the exact strain. Its
+    /// energy ½∫EA ε² makes the force along the line EA ε |r'|, so the same load stretches
+    /// the line less (λ³ − λ = 2T/EA against λ = 1 + T/EA).
     SmallStrain,
 }
 
