@@ -138,8 +138,7 @@ pub fn force_jacobian(
             Variable::Velocity => VELOCITY_STEP,
         };
         // Tangents (dimensionless) take the step per metre of the shortest element.
-        let tangent_scale = 1.0 / l.mesh.shortest_element();
-        let scale = |j: usize| if l.is_tangent(j) { tangent_scale } else { 1.0 };
+        let scale = |j: usize| 1.0 / l.length_scale(j);
         let blocks = &mut ws.blocks[li];
         blocks.coupled = true;
         blocks.clear();

@@ -112,6 +112,18 @@ impl SystemLine {
         }
     }
 
+    /// Length [m] that a unit of vector j moves a point of the line by: 1 for a position, the
+    /// shortest element length for a tangent (a tangent's change δt moves points of its
+    /// element by about l δt). Scales finite-difference steps and regularisation per vector.
+    #[inline]
+    pub fn length_scale(&self, j: usize) -> Real {
+        if self.is_tangent(j) {
+            self.mesh.shortest_element()
+        } else {
+            1.0
+        }
+    }
+
     /// Whether vector j is a tangent [-] rather than a position [m].
     #[inline]
     pub fn is_tangent(&self, j: usize) -> bool {

@@ -209,12 +209,9 @@ fn newton_step(
         let n = l.vectors() - 1;
         let o = system.layout.line_offset[li];
         let b = &mut ws.blocks[li];
-        // A tangent moves by about a position's move over an element length: its shift is
-        // the same stiffness per metre times l².
-        let l2 = l.mesh.shortest_element().powi(2);
+        // The same stiffness per metre of motion at every vector: a tangent's shift is l² μ.
         for i in 0..=n {
-            let s = if l.is_tangent(i) { shift * l2 } else { shift };
-            b.diag[i] -= Mat3::identity() * s;
+            b.diag[i] -= Mat3::identity() * (shift * l.length_scale(i).powi(2));
         }
         for i in 1..n {
             b.x[i] = -get3(&r[o..], i - 1);
