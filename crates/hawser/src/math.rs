@@ -6,6 +6,18 @@ pub type Real = f64;
 pub type Vec3 = nalgebra::Vector3<Real>;
 /// A 3×3 matrix (mass blocks [kg], stiffness blocks [N/m], ...).
 pub type Mat3 = nalgebra::Matrix3<Real>;
+/// A 6-vector of a rigid body: [force; moment], [velocity; angular velocity], ...
+pub type Vec6 = nalgebra::Vector6<Real>;
+/// A 6×6 matrix of a rigid body (mass about a reference point, added mass, ...).
+pub type Mat6 = nalgebra::Matrix6<Real>;
+/// A rotation as a unit quaternion (body axes to global axes).
+pub type Quat = nalgebra::UnitQuaternion<Real>;
+
+/// The cross-product matrix [a]× with [a]× b = a × b.
+#[inline]
+pub fn skew(a: &Vec3) -> Mat3 {
+    Mat3::new(0.0, -a.z, a.y, a.z, 0.0, -a.x, -a.y, a.x, 0.0)
+}
 
 /// Unit vector along global z (up).
 #[inline]

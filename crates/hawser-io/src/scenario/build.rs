@@ -195,6 +195,7 @@ pub fn build_scenario(
         line_types,
         lines,
         points,
+        bodies: Vec::new(),
         settings,
     };
     let channels = build_channels(&mut b, scenario.simulation.as_ref(), &model);

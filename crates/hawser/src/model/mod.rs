@@ -2,13 +2,17 @@
 //! scenario file, validated by [`Model::validate`], then assembled into a
 //! [`crate::system::System`] for time integration and statics.
 
+mod body;
 mod line;
 mod motion;
 mod point;
+mod rigid_motion;
 
+pub use body::{Body, BodyKind, Displacement, Thrust, Wind};
 pub use line::{Formulation, Line, LineEnd, LineType, MassMatrix, Section, StrainMeasure};
 pub use motion::{Motion, ramp};
 pub use point::{Point, PointKind};
+pub use rigid_motion::{RigidKinematics, RigidMotion};
 
 use crate::error::ModelError;
 use crate::math::Real;
@@ -89,8 +93,10 @@ pub struct Model {
     pub line_types: Vec<LineType>,
     /// Lines.
     pub lines: Vec<Line>,
-    /// Connection points: anchors, fairleads, free point masses.
+    /// Connection points: anchors, fairleads, free point masses, points on bodies.
     pub points: Vec<Point>,
+    /// Rigid bodies.
+    pub bodies: Vec<Body>,
     /// Simulation settings.
     pub settings: Settings,
 }
@@ -200,6 +206,12 @@ impl Model {
                     "uses a formulation not implemented yet (`fe` and `hermite` are available)",
                 );
             }
+        }
+        if let Some(b) = self.bodies.first() {
+            return bad(
+                format!("body {}", b.name),
+                "rigid bodies are described but not yet coupled to the lines (issue 6 in progress)",
+            );
         }
         let s = &self.settings;
         if !(s.duration >= 0.0) || !(s.output_interval > 0.0) {

@@ -433,6 +433,7 @@ pub fn single_line(
             end_b: LineEnd::Point(1),
         }],
         points: vec![a, b],
+        bodies: Vec::new(),
         settings: Settings::default(),
     }
 }
