@@ -61,6 +61,10 @@ pub fn run(args: &ModesArgs) -> Result<ExitCode> {
         return Ok(ExitCode::from(2));
     };
     let system = super::system_of(&loaded.model)?;
+    if let Err(e) = hawser::analysis::modes::supported(&system) {
+        eprintln!("error: {e}");
+        return Ok(ExitCode::from(1));
+    }
     let t = Instant::now();
     let sol = match hawser::statics::solve(&system, None, &StaticOptions::default()) {
         Ok(s) => s,

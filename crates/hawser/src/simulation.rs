@@ -85,6 +85,17 @@ impl<'a> Simulation<'a> {
         initial: Vec<Real>,
         check: bool,
     ) -> Result<Self, SimulationError> {
+        if settings.scheme == Scheme::ThreeLevel
+            && let Some(l) = system.lines.iter().find(|l| l.dg.is_some())
+        {
+            return Err(SimulationError::Model(crate::error::ModelError::Invalid {
+                what: format!("line {}", l.name),
+                why: "uses `dg`, a first-order system in q and v, which the three-level scheme \
+                      (for second-order equations in positions) cannot step: use scheme = \
+                      \"ssp-rk3\" (the DG paper's) or \"rk4\""
+                    .into(),
+            }));
+        }
         let (mut limit, mut culprit) = system.stable_step(settings.scheme);
         let stiffness_limit = limit;
         let n = initial.len();

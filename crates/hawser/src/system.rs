@@ -3,12 +3,19 @@
 //!
 //! State layout (one contiguous `Vec<f64>`, see [`Layout`]): for every line, its interior
 //! 3-vector unknowns (positions of interior nodes for `fe`; positions and tangents for
-//! `hermite`, see [`crate::formulation`]) then their rates; then for every free point its
-//! position then its velocity. End nodes are not line state: they belong to the point they are
-//! attached to (fixed, prescribed, or free and then in the state).
+//! `hermite`, see [`crate::formulation`]) then their rates, or, for `dg`, its modal
+//! coefficients ([`DgLine`]'s layout); then for every free point its position then its
+//! velocity. End nodes are not line state: they belong to the point they are attached to
+//! (fixed, prescribed, or free and then in the state). A `dg` line's end is a velocity
+//! condition of its point (DG paper Table 1) and the flux traction is the force on the point;
+//! a massless free point at the end of a single `dg` line is that line's free end (Table 1
+//! row 3, or row 5 with the point's force) and follows the line.
 
 use crate::error::ModelError;
 pub use crate::formulation::Energy;
+use crate::formulation::dg::{
+    DgLine, DgSectionSpec, DgWorkspace, EndCondition, EndState, Translation,
+};
 use crate::formulation::{ElementState, LineKind, LoadOptions, Mesh, line_forces};
 use crate::linalg::{CoupledSystem, EndKind, LineBlocks, Singular};
 use crate::math::{Mat3, Real, Vec3, get3, set3};
@@ -20,8 +27,11 @@ use crate::physics::environment::Environment;
 pub struct Layout {
     /// Offset of each line's block: 3·m coordinates then 3·m rates.
     pub line_offset: Vec<usize>,
-    /// Interior vector count m of each line (`fe`: N − 1 nodes; `hermite`: 2N).
+    /// Interior vector count m of each line (`fe`: N − 1 nodes; `hermite`: 2N; `dg`: 0, its
+    /// block is modal coefficients).
     pub line_interior: Vec<usize>,
+    /// Length of each line's block (6m, or the `dg` line's state length).
+    pub line_len: Vec<usize>,
     /// Offset of each free point's block (position then velocity), `None` otherwise.
     pub point_offset: Vec<Option<usize>>,
     /// Total length.
@@ -29,8 +39,9 @@ pub struct Layout {
 }
 
 impl Layout {
-    /// Every block of the state as (offset, node count): each line's interior nodes, then
-    /// each free point (one node). A block holds 3·count positions then 3·count velocities.
+    /// Every second-order block of the state as (offset, node count): each `fe` or `hermite`
+    /// line's interior nodes, then each free point (one node). A block holds 3·count
+    /// positions then 3·count velocities. `dg` blocks (first order) are not listed.
     pub fn blocks(&self) -> impl Iterator<Item = (usize, usize)> + '_ {
         self.line_offset
             .iter()
@@ -55,6 +66,8 @@ pub struct SystemLine {
     pub end_a: usize,
     /// Point index of end B.
     pub end_b: usize,
+    /// The discontinuous Galerkin discretisation of a `dg` line.
+    pub dg: Option<Box<DgLine>>,
 }
 
 impl SystemLine {
@@ -68,6 +81,13 @@ impl SystemLine {
     #[inline]
     pub fn nodes(&self) -> usize {
         self.mesh.elements() + 1
+    }
+
+    /// Number of vectors of the line's mass blocks: all its vectors, or for `dg` only the two
+    /// ends (which carry the flux tractions to the points and no mass).
+    #[inline]
+    pub fn block_vectors(&self) -> usize {
+        if self.dg.is_some() { 2 } else { self.vectors() }
     }
 
     /// Index of node i's position among the line's vectors (`LineWork::position`).
@@ -142,6 +162,9 @@ impl SystemLine {
                     set3(y, i - 1, r);
                 }
             }
+            LineKind::Dg => {
+                unreachable!("a dg line's state is modal: use System::set_line_shape")
+            }
             LineKind::Hermite(_) => {
                 use crate::formulation::hermite::vector_index;
                 let s: Vec<Real> = (0..=n).map(|i| self.mesh.arc_length(i)).collect();
@@ -186,6 +209,10 @@ pub struct SystemPoint {
     pub kind: PointKind,
     /// Index among free points.
     pub free_index: Option<usize>,
+    /// (line, end: 0 = A, 1 = B) when the point is the free end of a `dg` line: a massless
+    /// free point attached to that line only, which moves with the line end and applies its
+    /// force to it (DG paper Table 1 rows 3 and 5). Not in the state.
+    pub line_end: Option<(usize, usize)>,
     /// Seabed contact of a free point with a volume, fixed at assembly.
     seabed_contact: Option<SphereContact>,
 }
@@ -227,6 +254,9 @@ pub struct LineWork {
     pub force: Vec<Vec3>,
     /// Element tension and strain.
     pub elements: ElementState,
+    /// Tension at the nodes [N] (`dg` only: at the element ends, the mean of the two sides'
+    /// values at an interface).
+    pub node_tension: Vec<Real>,
 }
 
 /// All scratch of the right-hand side, sized once: no allocation in the time loop.
@@ -240,6 +270,8 @@ pub struct Workspace {
     pub points: Vec<PointKinematics>,
     /// Shared-point system.
     pub coupled: CoupledSystem,
+    /// Per line: the `dg` scratch (`None` for other formulations).
+    pub dg: Vec<Option<DgWorkspace>>,
 }
 
 /// Identifies the place in the model a state entry belongs to.
@@ -255,31 +287,22 @@ impl System {
     /// Assembles a validated model.
     pub fn new(model: &Model) -> Result<Self, ModelError> {
         model.validate()?;
-        let mut points = Vec::new();
-        let mut free_points = Vec::new();
-        for (i, p) in model.points.iter().enumerate() {
-            let free_index = if matches!(p.kind, PointKind::Free { .. }) {
-                free_points.push(i);
-                Some(free_points.len() - 1)
-            } else {
-                None
-            };
-            let position = match &p.kind {
-                PointKind::Prescribed(m) => m.initial_position(),
-                _ => p.position,
-            };
-            points.push(SystemPoint {
+        let points = model
+            .points
+            .iter()
+            .map(|p| SystemPoint {
                 name: p.name.clone(),
-                position,
+                position: match &p.kind {
+                    PointKind::Prescribed(m) => m.initial_position(),
+                    _ => p.position,
+                },
                 kind: p.kind.clone(),
-                free_index,
+                free_index: None,
+                line_end: None,
                 seabed_contact: SphereContact::new(&model.environment, &p.kind),
-            });
-        }
+            })
+            .collect();
         let mut lines = Vec::new();
-        let mut line_offset = Vec::new();
-        let mut line_interior = Vec::new();
-        let mut len = 0;
         for l in &model.lines {
             let sections: Vec<_> = l
                 .sections
@@ -294,14 +317,23 @@ impl System {
                 Formulation::Hermite => LineKind::Hermite(crate::formulation::HermiteOptions {
                     strain: l.strain_measure,
                 }),
-                Formulation::Dg => unreachable!("refused by Model::validate"),
+                Formulation::Dg => LineKind::Dg,
             };
+            let dg = (l.formulation == Formulation::Dg).then(|| {
+                let specs: Vec<DgSectionSpec> = l
+                    .sections
+                    .iter()
+                    .map(|s| DgSectionSpec {
+                        line_type: model.line_types[s.line_type].clone(),
+                        length: s.length,
+                        elements: s.elements,
+                        order: s.order,
+                    })
+                    .collect();
+                Box::new(DgLine::new(&specs, [EndCondition::PINNED_JOINT; 2]))
+            });
             let LineEnd::Point(end_a) = l.end_a;
             let LineEnd::Point(end_b) = l.end_b;
-            let interior = kind.vectors(mesh.elements()) - 2;
-            line_offset.push(len);
-            line_interior.push(interior);
-            len += 6 * interior;
             lines.push(SystemLine {
                 name: l.name.clone(),
                 mesh,
@@ -309,7 +341,84 @@ impl System {
                 clamp: l.clamp.map(|d| d.map(|d| d.normalize())),
                 end_a,
                 end_b,
+                dg,
             });
+        }
+        Self::from_parts(model.environment.clone(), lines, points)
+    }
+
+    /// Finishes the assembly from lines and points: free ends of `dg` lines, the `dg` end
+    /// conditions, the free points and the state layout.
+    fn from_parts(
+        environment: Environment,
+        mut lines: Vec<SystemLine>,
+        mut points: Vec<SystemPoint>,
+    ) -> Result<Self, ModelError> {
+        let mut attached = vec![0usize; points.len()];
+        for l in &lines {
+            attached[l.end_a] += 1;
+            attached[l.end_b] += 1;
+        }
+        for (li, l) in lines.iter_mut().enumerate() {
+            let Some(dg) = l.dg.as_mut() else { continue };
+            for (side, p) in [l.end_a, l.end_b].into_iter().enumerate() {
+                let massless = matches!(
+                    points[p].kind,
+                    PointKind::Free { mass, volume, drag_area, .. }
+                        if mass == 0.0 && volume == 0.0 && drag_area == 0.0
+                );
+                dg.ends[side] = if massless && attached[p] == 1 {
+                    points[p].line_end = Some((li, side));
+                    EndCondition::FREE
+                } else if l.clamp[side].is_some() {
+                    EndCondition::CLAMPED
+                } else {
+                    EndCondition::PINNED_JOINT
+                };
+            }
+        }
+        let mut free_points = Vec::new();
+        for (i, p) in points.iter_mut().enumerate() {
+            if matches!(p.kind, PointKind::Free { .. }) && p.line_end.is_none() {
+                free_points.push(i);
+                p.free_index = Some(free_points.len() - 1);
+            }
+        }
+        // A free point held only by `dg` ends has no mass from its lines: it needs its own.
+        for &p in &free_points {
+            let PointKind::Free { mass, .. } = points[p].kind else {
+                continue;
+            };
+            let only_dg = lines
+                .iter()
+                .filter(|l| l.end_a == p || l.end_b == p)
+                .all(|l| l.dg.is_some());
+            if only_dg && !(mass > 0.0) {
+                return Err(ModelError::Invalid {
+                    what: format!("point {}", points[p].name),
+                    why: "is a massless free point joining dg lines, whose ends carry no mass: \
+                          give it a mass (a massless point at the end of a single dg line is \
+                          that line's free end)"
+                        .into(),
+                });
+            }
+        }
+        let mut line_offset = Vec::new();
+        let mut line_interior = Vec::new();
+        let mut line_len = Vec::new();
+        let mut len = 0;
+        for l in &lines {
+            let (interior, block) = match &l.dg {
+                Some(dg) => (0, dg.state_len()),
+                None => {
+                    let m = l.vectors() - 2;
+                    (m, 6 * m)
+                }
+            };
+            line_offset.push(len);
+            line_interior.push(interior);
+            line_len.push(block);
+            len += block;
         }
         let mut point_offset = vec![None; points.len()];
         for &p in &free_points {
@@ -317,17 +426,139 @@ impl System {
             len += 6;
         }
         Ok(Self {
-            environment: model.environment.clone(),
+            environment,
             lines,
             points,
             free_points,
             layout: Layout {
                 line_offset,
                 line_interior,
+                line_len,
                 point_offset,
                 len,
             },
         })
+    }
+
+    /// The system with every `dg` line replaced by a `hermite` line over the same sections,
+    /// with ⌈(P + 1)/2⌉ cubic elements per dg element of order P (about as many unknowns),
+    /// the same ends and clamps: the statics of dg lines are solved on it
+    /// ([`crate::statics::solve`]) and carried over by [`System::state_from_twin`].
+    pub fn statics_twin(&self) -> System {
+        let lines = self
+            .lines
+            .iter()
+            .map(|l| match &l.dg {
+                None => l.clone(),
+                Some(dg) => {
+                    let sections: Vec<_> = dg
+                        .sections
+                        .iter()
+                        .enumerate()
+                        .map(|(k, sec)| {
+                            let count = dg.elements.iter().filter(|e| e.section == k).count();
+                            (
+                                sec.properties.line_type.clone(),
+                                count as Real * sec.properties.element_length,
+                                count * sec.basis.order.div_ceil(2).max(1),
+                            )
+                        })
+                        .collect();
+                    SystemLine {
+                        mesh: Mesh::new(&sections),
+                        kind: LineKind::Hermite(Default::default()),
+                        dg: None,
+                        ..l.clone()
+                    }
+                }
+            })
+            .collect();
+        let points = self
+            .points
+            .iter()
+            .map(|p| SystemPoint {
+                free_index: None,
+                line_end: None,
+                ..p.clone()
+            })
+            .collect();
+        Self::from_parts(self.environment.clone(), lines, points)
+            .expect("a system without dg lines has no dg end to refuse")
+    }
+
+    /// This system's state from a state `y_twin` of its [`System::statics_twin`]: free points
+    /// and `fe`/`hermite` lines copied, each `dg` line the L2 projection of its twin's cubic
+    /// shape (positions and tangents ∂r/∂s, at rest), then, when `refine` and the line has at
+    /// most 3000 modal unknowns, Newton on the dg line's own steady equations with its ends
+    /// held where the twin put them ([`crate::formulation::dg::steady_state`]), so that the
+    /// run starts in the dg discretisation's own equilibrium (a failed refinement keeps the
+    /// projection). The free points keep the twin's equilibrium: their residual is the
+    /// difference of the two discretisations' end forces.
+    pub fn state_from_twin(&self, twin: &System, y_twin: &[Real], refine: bool) -> Vec<Real> {
+        let mut y = vec![0.0; self.layout.len];
+        let mut tws = twin.workspace();
+        twin.point_kinematics(0.0, y_twin, &mut tws);
+        twin.gather_lines(y_twin, &mut tws);
+        for (p, off) in self.layout.point_offset.iter().enumerate() {
+            if let (Some(o), Some(ot)) = (off, twin.layout.point_offset[p]) {
+                y[*o..o + 6].copy_from_slice(&y_twin[ot..ot + 6]);
+            }
+        }
+        for (li, l) in self.lines.iter().enumerate() {
+            let (o, len) = (self.layout.line_offset[li], self.layout.line_len[li]);
+            let Some(dg) = &l.dg else {
+                let ot = twin.layout.line_offset[li];
+                y[o..o + len].copy_from_slice(&y_twin[ot..ot + len]);
+                continue;
+            };
+            let tl = &twin.lines[li];
+            let q = &tws.lines[li].position;
+            let nodes: Vec<Real> = (0..=tl.mesh.elements())
+                .map(|i| tl.mesh.arc_length(i))
+                .collect();
+            let state = &mut y[o..o + len];
+            dg.project(state, |s| {
+                let e = (nodes.partition_point(|&x| x <= s).max(1) - 1).min(nodes.len() - 2);
+                let xi = ((s - nodes[e]) / (nodes[e + 1] - nodes[e])).clamp(0.0, 1.0);
+                let (r, t) = crate::formulation::hermite::point_on_element(&tl.mesh, q, e, xi);
+                (r, t, Vec3::zeros())
+            });
+            if refine && 2 * dg.state_len() / 3 <= 3000 {
+                let end = |side: usize, p: usize| {
+                    let mut end = EndState::fixed(
+                        tws.points[p].position,
+                        l.clamp[side].unwrap_or_else(Vec3::zeros),
+                    );
+                    if let PointKind::Free { force, .. } = &self.points[p].kind
+                        && dg.ends[side].translation == Translation::Force
+                    {
+                        end.force = *force;
+                    }
+                    end
+                };
+                let ends = [end(0, l.end_a), end(1, l.end_b)];
+                let mut trial = state.to_vec();
+                if crate::formulation::dg::steady_state(
+                    dg,
+                    &self.environment,
+                    0.0,
+                    &mut trial,
+                    &ends,
+                    1e-10,
+                    30,
+                )
+                .is_ok()
+                {
+                    state.copy_from_slice(&trial);
+                }
+            }
+        }
+        y
+    }
+
+    /// Whether any line uses the `dg` formulation.
+    pub fn has_dg_lines(&self) -> bool {
+        self.lines.iter().any(|l| l.dg.is_some())
     }
 
     /// Scratch for this system.
@@ -347,6 +578,7 @@ impl System {
                     velocity: vec![Vec3::zeros(); m],
                     force: vec![Vec3::zeros(); m],
                     elements: ElementState::new(n),
+                    node_tension: vec![0.0; if l.dg.is_some() { n + 1 } else { 0 }],
                 }
             })
             .collect();
@@ -355,7 +587,7 @@ impl System {
             .iter()
             .map(|l| {
                 LineBlocks::banded(
-                    l.vectors(),
+                    l.block_vectors(),
                     l.kind.bandwidth(),
                     end_kind(l.end_a),
                     end_kind(l.end_b),
@@ -368,6 +600,11 @@ impl System {
             blocks,
             points: vec![PointKinematics::default(); self.points.len()],
             coupled: CoupledSystem::new(self.free_points.len()),
+            dg: self
+                .lines
+                .iter()
+                .map(|l| l.dg.as_deref().map(DgWorkspace::new))
+                .collect(),
         }
     }
 
@@ -384,6 +621,10 @@ impl System {
             let b = self.points[l.end_b].position;
             let total = l.mesh.length();
             let o = self.layout.line_offset[li];
+            if let Some(dg) = &l.dg {
+                dg.straight(&mut y[o..o + self.layout.line_len[li]], a, b);
+                continue;
+            }
             let shape: Vec<Vec3> = (0..=l.mesh.elements())
                 .map(|i| a + (b - a) * (l.mesh.arc_length(i) / total))
                 .collect();
@@ -398,7 +639,9 @@ impl System {
     /// formulation-neutral way to start a line from a given shape: the nodes take it at their
     /// arc lengths and [`SystemLine::set_shape`] derives the other unknowns (`hermite`
     /// tangents and their rates by finite differences, exact for straight lines and linear in
-    /// the shape, so a rigidly moved shape gives rigidly moved unknowns).
+    /// the shape, so a rigidly moved shape gives rigidly moved unknowns). A `dg` line takes
+    /// the L2 projection of the shape, its tangent ∂r/∂s by central differences over
+    /// 10⁻⁶ of the line's length (error ~10⁻¹² of the curvature terms).
     pub fn set_line_shape(
         &self,
         y: &mut [Real],
@@ -406,6 +649,16 @@ impl System {
         shape: impl Fn(Real) -> (Vec3, Vec3),
     ) {
         let l = &self.lines[line];
+        if let Some(dg) = &l.dg {
+            let o = self.layout.line_offset[line];
+            let h = 1e-6 * dg.length();
+            dg.project(&mut y[o..o + self.layout.line_len[line]], |s| {
+                let (r, v) = shape(s);
+                let q = (shape(s + h).0 - shape(s - h).0) / (2.0 * h);
+                (r, q, v)
+            });
+            return;
+        }
         let (r, v): (Vec<Vec3>, Vec<Vec3>) =
             (0..l.nodes()).map(|i| shape(l.mesh.arc_length(i))).unzip();
         let o = self.layout.line_offset[line];
@@ -428,6 +681,16 @@ impl System {
         let g = self.environment.gravity;
         let mut energy = Energy::default();
         for (li, l) in self.lines.iter().enumerate() {
+            if let Some(dg) = &l.dg {
+                let o = self.layout.line_offset[li];
+                let state = &y[o..o + self.layout.line_len[li]];
+                let ends = [
+                    EndState::fixed(ws.points[l.end_a].position, Vec3::zeros()),
+                    EndState::fixed(ws.points[l.end_b].position, Vec3::zeros()),
+                ];
+                energy += dg.energy(state, dg.position_base(state, &ends), g);
+                continue;
+            }
             let (q, qdot) = (&ws.lines[li].position, &ws.lines[li].velocity);
             for e in 0..l.mesh.elements() {
                 energy += match &l.kind {
@@ -437,6 +700,7 @@ impl System {
                     LineKind::Hermite(options) => {
                         crate::formulation::hermite::element_energy(&l.mesh, options, g, q, qdot, e)
                     }
+                    LineKind::Dg => unreachable!("dg lines are summed above"),
                 };
             }
         }
@@ -451,8 +715,13 @@ impl System {
     }
 
     /// Updates the point kinematics at time t from the state (positions and velocities).
+    /// The free end of a `dg` line keeps the kinematics its line gave it in the last
+    /// evaluation ([`System::evaluate_dg_lines`]).
     pub fn point_kinematics(&self, t: Real, y: &[Real], ws: &mut Workspace) {
         for (i, p) in self.points.iter().enumerate() {
+            if p.line_end.is_some() {
+                continue;
+            }
             ws.points[i] = match &p.kind {
                 PointKind::Fixed => PointKinematics {
                     position: p.position,
@@ -479,8 +748,12 @@ impl System {
     }
 
     /// Fills each line's node positions and velocities from the state and its ends.
+    /// `dg` lines fill theirs in [`System::evaluate_dg_lines`].
     pub fn gather_lines(&self, y: &[Real], ws: &mut Workspace) {
         for (li, l) in self.lines.iter().enumerate() {
+            if l.dg.is_some() {
+                continue;
+            }
             let n = l.vectors() - 1;
             let o = self.layout.line_offset[li];
             let m = self.layout.line_interior[li];
@@ -538,7 +811,9 @@ impl System {
     ///
     /// Lines: M a = F with M block-tridiagonal (consistent) or block-diagonal (lumped); free
     /// points: (m_p + added mass + the line ends' mass) a_p = F_p + Σ line end forces. Solved
-    /// together in O(nodes) by [`CoupledSystem`].
+    /// together in O(nodes) by [`CoupledSystem`]. `dg` lines are evaluated first, with their
+    /// ends' kinematics at t ([`System::evaluate_dg_lines`]): their flux tractions enter the
+    /// points' forces and their ends add no mass (explicit coupling, DG paper §3.3).
     pub fn rhs(
         &self,
         t: Real,
@@ -546,12 +821,19 @@ impl System {
         dydt: &mut [Real],
         ws: &mut Workspace,
     ) -> Result<(), Location> {
+        if !ws.dg.is_empty() && ws.dg.iter().any(Option::is_some) {
+            self.point_kinematics(t, y, ws);
+            self.evaluate_dg_lines(t, y, dydt, ws);
+        }
         self.assemble(t, y, ws);
         ws.coupled
             .solve(&mut ws.blocks)
             .map_err(|s| self.singular_location(s))?;
         // Write dy/dt.
         for (li, l) in self.lines.iter().enumerate() {
+            if l.dg.is_some() {
+                continue;
+            }
             let o = self.layout.line_offset[li];
             let m = self.layout.line_interior[li];
             let lw = &ws.lines[li];
@@ -570,6 +852,68 @@ impl System {
         Ok(())
     }
 
+    /// Evaluates every `dg` line at (t, y) with its ends' kinematics from `ws.points` (filled
+    /// by [`System::point_kinematics`]): writes its state's rate into `dydt`, its end loads
+    /// (the force on each attachment [N]) into `ws.lines[l].force[0]` and `[N]`, its node
+    /// outputs into `ws.lines[l]`, and the kinematics of a free end's point.
+    pub fn evaluate_dg_lines(&self, t: Real, y: &[Real], dydt: &mut [Real], ws: &mut Workspace) {
+        for (li, l) in self.lines.iter().enumerate() {
+            let (Some(dg), Some(dws)) = (&l.dg, ws.dg[li].as_mut()) else {
+                continue;
+            };
+            let range =
+                self.layout.line_offset[li]..self.layout.line_offset[li] + self.layout.line_len[li];
+            let end_state = |side: usize, p: usize| {
+                let k = &ws.points[p];
+                let force = match (&self.points[p].kind, dg.ends[side].translation) {
+                    (PointKind::Free { force, .. }, Translation::Force) => *force,
+                    _ => Vec3::zeros(),
+                };
+                EndState {
+                    position: k.position,
+                    velocity: k.velocity,
+                    acceleration: k.acceleration,
+                    force,
+                    moment: Vec3::zeros(),
+                    direction: l.clamp[side].unwrap_or_else(Vec3::zeros),
+                    direction_rate: Vec3::zeros(),
+                }
+            };
+            let ends = [end_state(0, l.end_a), end_state(1, l.end_b)];
+            let loads = dg.rhs(
+                &self.environment,
+                t,
+                &y[range.clone()],
+                &ends,
+                &mut dydt[range.clone()],
+                dws,
+            );
+            let n = l.mesh.elements();
+            let lw = &mut ws.lines[li];
+            dg.sample(
+                &y[range],
+                dws,
+                &loads,
+                &mut lw.position,
+                &mut lw.velocity,
+                &mut lw.node_tension,
+                &mut lw.elements,
+            );
+            lw.force[0] = loads[0].force;
+            lw.force[n] = loads[1].force;
+            for (side, p) in [(0, l.end_a), (1, l.end_b)] {
+                if self.points[p].line_end.is_some() {
+                    let node = if side == 0 { 0 } else { n };
+                    ws.points[p] = PointKinematics {
+                        position: lw.position[node],
+                        velocity: lw.velocity[node],
+                        acceleration: Vec3::zeros(),
+                    };
+                }
+            }
+        }
+    }
+
     /// The equations of motion at (t, y), assembled but not solved: point kinematics (free
     /// points from the state, others from their motion, with their accelerations), node
     /// positions and velocities, node forces `ws.lines[l].force` and mass blocks
@@ -585,6 +929,19 @@ impl System {
         for (li, l) in self.lines.iter().enumerate() {
             let lw = &mut ws.lines[li];
             let blocks = &mut ws.blocks[li];
+            if l.dg.is_some() {
+                // The end tractions of the last `dg` evaluation, as forces on the points.
+                let n = l.vectors() - 1;
+                blocks.x[0] = match blocks.end_a {
+                    EndKind::Known => ws.points[l.end_a].acceleration,
+                    _ => lw.force[0],
+                };
+                blocks.x[1] = match blocks.end_b {
+                    EndKind::Known => ws.points[l.end_b].acceleration,
+                    _ => lw.force[n],
+                };
+                continue;
+            }
             line_forces(
                 &l.mesh,
                 &l.kind,
@@ -633,6 +990,17 @@ impl System {
         for (li, l) in self.lines.iter().enumerate() {
             let o = self.layout.line_offset[li];
             let m = self.layout.line_interior[li];
+            if let Some(dg) = &l.dg {
+                if index >= o && index < o + self.layout.line_len[li] {
+                    // The element whose coefficients hold the entry, named by its end A node.
+                    let node = dg.elements.partition_point(|el| o + el.state <= index) - 1;
+                    return Location {
+                        object: l.name.clone(),
+                        node,
+                    };
+                }
+                continue;
+            }
             if index >= o && index < o + 6 * m {
                 let node = ((index - o) % (3 * m)) / 3 + 1;
                 return Location {
@@ -661,9 +1029,13 @@ impl System {
     /// Force [N] a line exerts on the attachment of one end (`end_b` false: end A), from the
     /// last right-hand-side evaluation: the end node's share of the line's forces minus the
     /// inertia of its share of the line's mass, F_end − (M_ee a_e + M_en a_n).
+    /// For a `dg` line it is the traction of the numerical flux at that end.
     pub fn end_force(&self, ws: &Workspace, line: usize, end_b: bool) -> Vec3 {
         let lw = &ws.lines[line];
         let n = self.lines[line].vectors() - 1;
+        if self.lines[line].dg.is_some() {
+            return lw.force[if end_b { n } else { 0 }];
+        }
         let b = &ws.blocks[line];
         let node = if end_b { n } else { 0 };
         lw.force[node] - b.row_times_x(node)
@@ -695,8 +1067,13 @@ impl System {
 
     /// Tension [N] at node i of a line: the mean of its elements' tensions at interior nodes
     /// and the magnitude of the end force at the ends.
+    /// `dg` lines give the tension at the element ends (the mean of the two sides at an
+    /// interface).
     pub fn node_tension(&self, ws: &Workspace, line: usize, node: usize) -> Real {
         let n = self.lines[line].mesh.elements();
+        if self.lines[line].dg.is_some() {
+            return ws.lines[line].node_tension[node];
+        }
         let t = &ws.lines[line].elements.tension;
         if node == 0 {
             self.end_force(ws, line, false).norm()
@@ -752,6 +1129,32 @@ impl System {
         let (lambda_axial, lambda_bending) =
             crate::formulation::hermite::element_eigenvalue_bounds();
         for l in &self.lines {
+            if let Some(dg) = &l.dg {
+                // The DG CFL limit (calibrated for SSP-RK3, whose stability region RK4's
+                // contains on both axes, so it serves RK4 too), as a rate for this scheme.
+                let lambda = radius / crate::formulation::dg::stable_step(dg, 1.0);
+                if lambda > worst {
+                    worst = lambda;
+                    culprit = format!(
+                        "the dg CFL limit (axial waves, bending and damping at orders {}) of line {}",
+                        dg.sections
+                            .iter()
+                            .map(|s| s.basis.order.to_string())
+                            .collect::<Vec<_>>()
+                            .join(", "),
+                        l.name
+                    );
+                }
+                // A free point at a dg end feels the flux's axial impedance Z = γ0 c as a
+                // damper (T̂ = T⁺ + Z (ν_point − ν⁺)).
+                let n = dg.elements.len();
+                for (p, e) in [(l.end_a, 0), (l.end_b, n - 1)] {
+                    let sec = dg.section(e);
+                    point_rows[p].axial_damping +=
+                        sec.properties.line_type.mass_per_length * sec.wave_speed;
+                }
+                continue;
+            }
             let n = l.mesh.elements();
             let hermite = matches!(l.kind, LineKind::Hermite(_));
             let mass_factor = if l.kind.consistent_mass() {

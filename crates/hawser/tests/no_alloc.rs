@@ -139,6 +139,7 @@ fn time_loop_does_not_allocate() {
             line_type: 0,
             length: 33.0,
             elements: 10,
+            order: 4,
         }],
         formulation: Formulation::Fe,
         mass_matrix: MassMatrix::Lumped,

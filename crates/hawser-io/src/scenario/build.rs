@@ -59,6 +59,8 @@ struct Check {
 
 const POSITIVE: fn(f64) -> bool = |x| x > 0.0;
 const NON_NEGATIVE: fn(f64) -> bool = |x| x >= 0.0;
+/// Polynomial order of `dg` sections when the file gives none (the DG paper's choice, N = 20, P = 4).
+const DEFAULT_DG_ORDER: usize = 4;
 
 impl<'a> Builder<'a> {
     fn diag(
@@ -2257,6 +2259,7 @@ fn build_lines(
                 line_type: ti,
                 length: len,
                 elements: n.clamp(1, 1_000_000) as usize,
+                order: DEFAULT_DG_ORDER,
             });
         };
         match (&l.line_type, &l.length, &l.elements, l.sections.is_empty()) {

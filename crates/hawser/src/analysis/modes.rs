@@ -184,18 +184,30 @@ pub struct Modes {
     pub fallback: Option<String>,
 }
 
+/// Whether the modes of this system can be computed and labelled: every line `fe` (the
+/// labels and the linearisation's degrees of freedom are node positions; `hermite` tangents
+/// and `dg` modal coefficients are not labelled yet). Call it before linearising.
+pub fn supported(system: &System) -> Result<(), ModalError> {
+    match system
+        .lines
+        .iter()
+        .find(|l| l.kind.bandwidth() > 1 || l.dg.is_some())
+    {
+        Some(l) => Err(ModalError::Unsupported {
+            line: l.name.clone(),
+            formulation: l.kind.name(),
+        }),
+        None => Ok(()),
+    }
+}
+
 /// The lowest `options.count` natural modes of the linearised system, labelled.
 pub fn natural_modes(
     system: &System,
     lin: &Linearisation,
     options: &ModalOptions,
 ) -> Result<Modes, ModalError> {
-    if let Some(l) = system.lines.iter().find(|l| l.kind.bandwidth() > 1) {
-        return Err(ModalError::Unsupported {
-            line: l.name.clone(),
-            formulation: l.kind.name(),
-        });
-    }
+    supported(system)?;
     let n = lin.dofs.len();
     if n == 0 {
         return Err(ModalError::NoDegreesOfFreedom);

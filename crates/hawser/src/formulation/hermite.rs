@@ -166,14 +166,14 @@ pub fn element_energy(
     energy
 }
 
-/// Position [m] and unit tangent at ξ of element e from the line's vectors `q`.
+/// Position r [m] and tangent vector ∂r/∂s [-] (its norm is the stretch 1 + ε) at ξ of
+/// element e from the line's vectors `q`.
 pub fn point_on_element(mesh: &Mesh, q: &[Vec3], e: usize, xi: Real) -> (Vec3, Vec3) {
     let n = mesh.elements();
     let idx = element_vectors(e, n);
     let qe = [q[idx[0]], q[idx[1]], q[idx[2]], q[idx[3]]];
     let (s, d1, _, _) = shape(xi, mesh.section(e).element_length);
-    let r1 = combine(&d1, &qe);
-    (combine(&s, &qe), r1 / r1.norm())
+    (combine(&s, &qe), combine(&d1, &qe))
 }
 
 /// Evaluates the generalized forces [N on positions, N·m on tangents] of a `hermite` line at

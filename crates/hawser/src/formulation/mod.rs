@@ -146,13 +146,18 @@ pub enum LineKind {
     },
     /// Cubic Hermite elements with positions and tangents ([`hermite`]).
     Hermite(HermiteOptions),
+    /// High-order discontinuous Galerkin ([`dg`]). Its unknowns are modal coefficients held
+    /// by the line's [`dg::DgLine`], not 3-vectors; as a `LineKind` it describes the line's
+    /// outputs (positions at the N + 1 element ends) and its two end attachments, which
+    /// receive the flux tractions as forces and no mass.
+    Dg,
 }
 
 impl LineKind {
     /// Number of 3-vector unknowns of a line of `elements` elements, ends included.
     pub fn vectors(&self, elements: usize) -> usize {
         match self {
-            LineKind::Fe { .. } => elements + 1,
+            LineKind::Fe { .. } | LineKind::Dg => elements + 1,
             LineKind::Hermite(_) => 2 * elements + 2,
         }
     }
@@ -160,7 +165,7 @@ impl LineKind {
     /// Block bandwidth of the line's matrices.
     pub fn bandwidth(&self) -> usize {
         match self {
-            LineKind::Fe { .. } => 1,
+            LineKind::Fe { .. } | LineKind::Dg => 1,
             LineKind::Hermite(_) => 3,
         }
     }
@@ -169,7 +174,7 @@ impl LineKind {
     #[inline]
     pub fn node_vector(&self, node: usize, elements: usize) -> usize {
         match self {
-            LineKind::Fe { .. } => node,
+            LineKind::Fe { .. } | LineKind::Dg => node,
             LineKind::Hermite(_) => hermite::vector_index(node, false, elements),
         }
     }
@@ -178,7 +183,7 @@ impl LineKind {
     #[inline]
     pub fn is_tangent(&self, j: usize, elements: usize) -> bool {
         match self {
-            LineKind::Fe { .. } => false,
+            LineKind::Fe { .. } | LineKind::Dg => false,
             LineKind::Hermite(_) => {
                 j != 0 && j != 2 * elements + 1 && (j % 2 == 1 || j == 2 * elements)
             }
@@ -190,6 +195,7 @@ impl LineKind {
         match self {
             LineKind::Fe { mass_matrix } => *mass_matrix == MassMatrix::Consistent,
             LineKind::Hermite(_) => true,
+            LineKind::Dg => false,
         }
     }
 
@@ -198,6 +204,7 @@ impl LineKind {
         match self {
             LineKind::Fe { .. } => "fe",
             LineKind::Hermite(_) => "hermite",
+            LineKind::Dg => "dg",
         }
     }
 }
@@ -333,5 +340,6 @@ pub fn line_forces(
         LineKind::Hermite(h) => hermite::line_forces(
             mesh, h, env, time, q, qdot, forces, elements, blocks, options,
         ),
+        LineKind::Dg => unreachable!("dg lines are evaluated by System::rhs through DgLine::rhs"),
     }
 }

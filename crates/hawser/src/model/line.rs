@@ -47,6 +47,9 @@ pub struct Section {
     pub length: Real,
     /// Number of equal elements.
     pub elements: usize,
+    /// Polynomial order P of the Legendre basis of a `dg` line in this section (1 to
+    /// [`crate::formulation::dg::basis::MAX_ORDER`]); ignored by `fe` and `hermite`.
+    pub order: usize,
 }
 
 /// Mass matrix of the `fe` formulation.
@@ -77,7 +80,8 @@ pub enum StrainMeasure {
 pub enum Formulation {
     /// Position-vector finite elements.
     Fe,
-    /// High-order discontinuous Galerkin (issue 3).
+    /// High-order discontinuous Galerkin with bending (DG paper,
+    /// [`crate::formulation::dg`]).
     Dg,
     /// Cubic Hermite elements with positions and tangents (elastic-link paper §4,
     /// [`crate::formulation::hermite`]).

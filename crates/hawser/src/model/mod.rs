@@ -187,10 +187,10 @@ impl Model {
                 }
             }
             for d in l.clamp.iter().flatten() {
-                if l.formulation != Formulation::Hermite {
+                if l.formulation == Formulation::Fe {
                     return bad(
                         format!("line {} (#{li}): clamp", l.name),
-                        "needs a formulation with bending and end tangents (`hermite`)",
+                        "needs a formulation with bending and end tangents (`hermite` or `dg`)",
                     );
                 }
                 if !(d.norm() > 0.0) || !d.iter().all(|x| x.is_finite()) {
@@ -201,10 +201,16 @@ impl Model {
                 }
             }
             if l.formulation == Formulation::Dg {
-                return bad(
-                    format!("line {} (#{li})", l.name),
-                    "uses a formulation not implemented yet (`fe` and `hermite` are available)",
-                );
+                let max = crate::formulation::dg::basis::MAX_ORDER;
+                if let Some(s) = l.sections.iter().find(|s| !(1..=max).contains(&s.order)) {
+                    return bad(
+                        format!("line {} (#{li}): section order", l.name),
+                        &format!(
+                            "is {}; a dg section needs an order P from 1 to {max}",
+                            s.order
+                        ),
+                    );
+                }
             }
         }
         if let Some(b) = self.bodies.first() {

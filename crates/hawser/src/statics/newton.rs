@@ -438,12 +438,25 @@ fn check_supported(system: &System) -> Result<(), StaticsError> {
 }
 
 /// Finds the static equilibrium of the system with prescribed points at their t = 0
-/// positions, starting from `initial` (or a catenary seed when `None`).
+/// positions, starting from `initial` (or a catenary seed when `None`). A system with `dg`
+/// lines is solved on its `hermite` twin from a catenary seed (`initial` is not used) and
+/// carried over by [`System::state_from_twin`].
 pub fn solve(
     system: &System,
     initial: Option<&[Real]>,
     options: &StaticOptions,
 ) -> Result<StaticSolution, StaticsError> {
+    if system.has_dg_lines() {
+        // dg lines: solve the hermite twin, then project and refine (System::state_from_twin).
+        let twin = system.statics_twin();
+        let sol = solve(&twin, None, options)?;
+        return Ok(StaticSolution {
+            state: system.state_from_twin(&twin, &sol.state, true),
+            iterations: sol.iterations,
+            residual: sol.residual,
+            method: "hermite twin projected onto dg",
+        });
+    }
     check_supported(system)?;
     let mut ws = system.workspace();
     let mut y = match initial {

@@ -424,6 +424,7 @@ pub fn single_line(
                 line_type: 0,
                 length,
                 elements,
+                order: 4,
             }],
             formulation,
             mass_matrix,

@@ -118,3 +118,94 @@ impl DgLine {
         }
     }
 }
+
+impl DgLine {
+    /// Mechanical energy of the line [J] at `state`, positions integrated from end A at
+    /// `r_a` (see [`DgLine::position_from_tangent`]): kinetic ½∫|v|²/γ0 ds, the potential of
+    /// weight in air ∫γ0 g z ds, and the strain energy ∫W(ε) ds + ½∫EI|∂î/∂s|² ds, by Gauss
+    /// quadrature with P + 3 points per element. Allocates (diagnostics, not the time loop).
+    pub fn energy(&self, state: &[Real], r_a: Vec3, gravity: Real) -> crate::formulation::Energy {
+        let mut energy = crate::formulation::Energy::default();
+        let mut base = r_a;
+        for (e, el) in self.elements.iter().enumerate() {
+            let sec = self.section(e);
+            let lt = &sec.properties.line_type;
+            let m = sec.basis.modes();
+            let quad = basis::Basis::new(m - 1, m + 2);
+            let (q, v, _) = self.fields(state, e);
+            let half = 0.5 * el.length;
+            for k in 0..quad.points {
+                let row = k * m..(k + 1) * m;
+                let (mut qs, mut dq, mut vs, mut rs) =
+                    (Vec3::zeros(), Vec3::zeros(), Vec3::zeros(), Vec3::zeros());
+                for (j, ((p, dp), int)) in quad.phi[row.clone()]
+                    .iter()
+                    .zip(&quad.dphi[row.clone()])
+                    .zip(&quad.integral[row])
+                    .enumerate()
+                {
+                    let (qj, vj) = (crate::math::get3(q, j), crate::math::get3(v, j));
+                    qs += qj * *p;
+                    dq += qj * (*dp / half);
+                    vs += vj * *p;
+                    rs += qj * (*int * half);
+                }
+                let ds = quad.weight[k] * half;
+                let l = qs.norm().max(1e-12);
+                let i = qs / l;
+                let kappa = (dq - i * i.dot(&dq)) / l;
+                energy.kinetic += 0.5 * vs.norm_squared() / lt.mass_per_length * ds;
+                energy.gravity += lt.mass_per_length * gravity * (base + rs).z * ds;
+                energy.elastic += (sec.properties.law.strain_energy_density(l - 1.0)
+                    + 0.5 * lt.bending_stiffness * kappa.norm_squared())
+                    * ds;
+            }
+            base += crate::math::get3(q, 0) * el.length;
+        }
+        energy
+    }
+
+    /// Fills the line's node outputs after [`DgLine::rhs`] evaluated `state` with `ws`:
+    /// positions at the N + 1 element ends (r_A + ∫q, the positions the loads saw), velocities
+    /// there (the mean of the two sides' ν at an interface), the tension at each node (the
+    /// mean of the two sides, the end loads' magnitudes at the ends), and per element the
+    /// mean of its two end values of tension, strain, curvature |κ|, bending moment
+    /// |M| = l_ε² |M*| and shear force |T_s|. Allocation-free, O(N).
+    pub fn sample(
+        &self,
+        state: &[Real],
+        ws: &DgWorkspace,
+        loads: &[EndLoad; 2],
+        positions: &mut [Vec3],
+        velocities: &mut [Vec3],
+        node_tension: &mut [Real],
+        elements: &mut crate::formulation::ElementState,
+    ) {
+        let n = self.elements.len();
+        let mut r = ws.base;
+        positions[0] = r;
+        for (e, el) in self.elements.iter().enumerate() {
+            r += crate::math::get3(&state[el.state..], 0) * el.length;
+            positions[e + 1] = r;
+        }
+        velocities[0] = ws.end_nu[0];
+        velocities[n] = ws.end_nu[2 * n - 1];
+        node_tension[0] = loads[0].force.norm();
+        node_tension[n] = loads[1].force.norm();
+        for i in 1..n {
+            velocities[i] = (ws.end_nu[2 * i - 1] + ws.end_nu[2 * i]) * 0.5;
+            node_tension[i] = 0.5 * (ws.end_tension[2 * i - 1] + ws.end_tension[2 * i]);
+        }
+        for e in 0..n {
+            let (a, b) = (2 * e, 2 * e + 1);
+            elements.tension[e] = 0.5 * (ws.end_tension[a] + ws.end_tension[b]);
+            elements.strain[e] = 0.5 * (ws.end_stretch[a] + ws.end_stretch[b]) - 1.0;
+            if self.bending {
+                let moment = |p: usize| ws.end_mstar[p].norm() * ws.end_stretch[p].powi(2);
+                elements.curvature[e] = 0.5 * (ws.end_kappa[a].norm() + ws.end_kappa[b].norm());
+                elements.bending_moment[e] = 0.5 * (moment(a) + moment(b));
+                elements.shear_force[e] = 0.5 * (ws.end_shear[a].norm() + ws.end_shear[b].norm());
+            }
+        }
+    }
+}
