@@ -528,7 +528,16 @@ fn negated(lines: &[LineBlocks], points: &[Mat3]) -> BlockMatrix {
 /// Linearises `system` about the static state `state` (as found by
 /// [`crate::statics::solve`]): velocities are taken as zero and prescribed points sit at their
 /// t = 0 positions.
+///
+/// # Panics
+///
+/// With `dg` lines (modal unknowns, not linearised): check with
+/// [`crate::analysis::modes::supported`] first.
 pub fn linearise(system: &System, state: &[Real], options: LinearisationOptions) -> Linearisation {
+    assert!(
+        !system.has_dg_lines(),
+        "linearise: dg lines are not linearised (check analysis::modes::supported first)"
+    );
     let mut ws = system.workspace();
     force_jacobian(
         system,

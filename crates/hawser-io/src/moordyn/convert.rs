@@ -906,6 +906,7 @@ fn convert_lines(c: &mut Converter, s: &Section, points: &[PointSpec]) -> (Vec<L
             line_type: Some(spanned(&t[1], t[1].text.clone())),
             length: Some(spanned(&t[4], length.unwrap_or(1.0))),
             elements: Some(spanned(&t[5], segments.unwrap_or(1))),
+            order: None,
             sections: Vec::new(),
         });
     }

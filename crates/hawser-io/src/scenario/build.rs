@@ -2199,11 +2199,17 @@ fn build_lines(
                 .hint("attach end B to another point");
             b.push(d);
         }
+        let formulation = match l.formulation.as_ref().map(|f| *f.get_ref()) {
+            None | Some(FormulationSpec::Fe) => Formulation::Fe,
+            Some(FormulationSpec::Hermite) => Formulation::Hermite,
+            Some(FormulationSpec::Dg) => Formulation::Dg,
+        };
         let mut sections = Vec::new();
         let mut section = |b: &mut Builder,
                            t: &Spanned<String>,
                            length: &Spanned<f64>,
                            elements: &Spanned<i64>,
+                           order: &Option<Spanned<i64>>,
                            key: &dyn Fn(&str) -> String| {
             let ti = match types.get(t.get_ref()) {
                 Some(&ti) => ti,
@@ -2255,19 +2261,49 @@ fn build_lines(
                     .hint("10–100 elements per line is usual");
                 b.push(d);
             }
+            let max = hawser::formulation::dg::basis::MAX_ORDER as i64;
+            let order = match order {
+                None => DEFAULT_DG_ORDER,
+                Some(o) if formulation != Formulation::Dg => {
+                    let d = b
+                        .diag(
+                            Some(o.span()),
+                            &key("order"),
+                            "`order` applies to `dg` lines only",
+                        )
+                        .expected("no `order` on an `fe` or `hermite` line")
+                        .hint("set `formulation = \"dg\"` on the line, or remove `order`");
+                    b.push(d);
+                    DEFAULT_DG_ORDER
+                }
+                Some(o) => {
+                    if !(1..=max).contains(o.get_ref()) {
+                        let d = b
+                            .diag(
+                                Some(o.span()),
+                                &key("order"),
+                                "the polynomial order is out of range",
+                            )
+                            .expected(format!("an integer from 1 to {max}"))
+                            .hint("the DG paper uses P = 4; P = 2–6 is usual, cost grows like P²");
+                        b.push(d);
+                    }
+                    (*o.get_ref()).clamp(1, max) as usize
+                }
+            };
             sections.push(Section {
                 line_type: ti,
                 length: len,
                 elements: n.clamp(1, 1_000_000) as usize,
-                order: DEFAULT_DG_ORDER,
+                order,
             });
         };
         match (&l.line_type, &l.length, &l.elements, l.sections.is_empty()) {
-            (Some(t), Some(len), Some(n), true) => section(b, t, len, n, &k),
+            (Some(t), Some(len), Some(n), true) => section(b, t, len, n, &l.order, &k),
             (None, None, None, false) => {
                 for (j, s) in l.sections.iter().enumerate() {
                     let key = |x: &str| format!("lines[{i}].sections[{j}].{x}");
-                    section(b, &s.line_type, &s.length, &s.elements, &key);
+                    section(b, &s.line_type, &s.length, &s.elements, &s.order, &key);
                 }
             }
             (None, None, None, true) => {
@@ -2314,25 +2350,6 @@ fn build_lines(
                 b.push(d);
             }
         }
-        let formulation = match l.formulation.as_ref().map(|f| (*f.get_ref(), f.span())) {
-            None | Some((FormulationSpec::Fe, _)) => Formulation::Fe,
-            Some((FormulationSpec::Hermite, _)) => Formulation::Hermite,
-            Some((f, span)) => {
-                let d = b
-                    .diag(
-                        Some(span),
-                        &k("formulation"),
-                        format!(
-                            "the `{}` formulation is not available in this version",
-                            format!("{f:?}").to_lowercase()
-                        ),
-                    )
-                    .expected("`fe` or `hermite`")
-                    .hint("use `formulation = \"fe\"` or `\"hermite\"`; `dg` is coming");
-                b.push(d);
-                Formulation::Fe
-            }
-        };
         out.push(Line {
             name,
             sections,
@@ -2348,8 +2365,8 @@ fn build_lines(
             clamp: [(&l.clamp_a, "clamp_a"), (&l.clamp_b, "clamp_b")].map(|(c, key)| {
                 let c = c.as_ref()?;
                 let d = b.vec3(c, &k(key));
-                let bad = if formulation != Formulation::Hermite {
-                    Some("a clamped end needs end tangents: use `formulation = \"hermite\"`")
+                let bad = if formulation == Formulation::Fe {
+                    Some("a clamped end needs bending: use `formulation = \"hermite\"` or `\"dg\"`")
                 } else if !(d.norm() > 0.0) {
                     Some("give the direction of the line's tangent at that end, e.g. [1, 0, 0]")
                 } else {
@@ -2362,7 +2379,7 @@ fn build_lines(
                             &k(key),
                             format!("`{key}` cannot be used here"),
                         )
-                        .expected("a non-zero direction [-] on a `hermite` line")
+                        .expected("a non-zero direction [-] on a `hermite` or `dg` line")
                         .hint(hint);
                     b.push(diag);
                 }

@@ -521,7 +521,7 @@ pub struct MotionSpec {
 pub enum FormulationSpec {
     /// Position-vector finite elements.
     Fe,
-    /// Discontinuous Galerkin (not yet available).
+    /// High-order discontinuous Galerkin (bending; snap loads).
     Dg,
     /// Cubic Hermite elements (positions and tangents; bending).
     Hermite,
@@ -561,6 +561,10 @@ pub struct SectionSpec {
     /// Number of elements.
     #[schemars(with = "i64")]
     pub elements: Spanned<i64>,
+    /// Polynomial order P of the elements (`dg`), 1 to 16; default 4.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<i64>")]
+    pub order: Option<Spanned<i64>>,
 }
 
 /// `[[lines]]`.
@@ -608,6 +612,10 @@ pub struct LineSpec {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<i64>")]
     pub elements: Option<Spanned<i64>>,
+    /// Polynomial order P of a single-section `dg` line, 1 to 16; default 4.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<i64>")]
+    pub order: Option<Spanned<i64>>,
     /// Sections from end A to end B.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub sections: Vec<SectionSpec>,

@@ -555,7 +555,34 @@ pub fn zero_velocities(system: &System, y: &mut [Real]) {
 /// Evaluates the static forces at `y` into `ws` (zero velocities, prescribed points at their
 /// t = 0 positions) so that [`System::end_force`] and [`System::node_tension`] give the static
 /// end forces and tensions. Returns the largest residual [N].
+///
+/// With `dg` lines the forces are the dynamics' own at rest ([`System::rhs`] at t = 0): the
+/// end forces are the flux tractions, and the residual is the largest of the free points'
+/// net forces and the dg elements' mean momentum rates times their lengths [N].
 pub fn evaluate(system: &System, y: &[Real], ws: &mut Workspace) -> Real {
+    if system.has_dg_lines() {
+        let mut rate = vec![0.0; y.len()];
+        if system.rhs(0.0, y, &mut rate, ws).is_err() {
+            return Real::INFINITY;
+        }
+        let mut norm: Real = 0.0;
+        for (li, l) in system.lines.iter().enumerate() {
+            if let Some(dg) = &l.dg {
+                let o = system.layout.line_offset[li];
+                for (e, el) in dg.elements.iter().enumerate() {
+                    let m3 = 3 * dg.section(e).basis.modes();
+                    let v = o + el.state + m3;
+                    norm = norm.max(crate::math::get3(&rate[v..], 0).norm() * el.length);
+                }
+            }
+        }
+        for &p in &system.free_points {
+            let o = system.layout.point_offset[p].expect("free point");
+            let (_, mass) = system.point_own_load(p, &ws.points[p], 0.0, 1.0);
+            norm = norm.max((mass * crate::math::get3(&rate[o..], 1)).norm());
+        }
+        return norm;
+    }
     let mut r = vec![0.0; y.len()];
     let (norm, _) = residual(system, y, 1.0, ws, &mut r);
     for b in ws.blocks.iter_mut() {

@@ -20,8 +20,8 @@ mod vibration;
 mod wave_speed;
 
 pub use catenary::{
-    ConvergenceSample, catenary_convergence, catenary_errors, expected_order, grounded_catenary,
-    grounded_chain, suspended_catenary, suspended_line,
+    ConvergenceSample, DG_ORDER, catenary_convergence, catenary_errors, catenary_errors_of_order,
+    expected_order, grounded_catenary, grounded_chain, suspended_catenary, suspended_line,
 };
 pub use conservation::{
     EnergyRun, ObjectivityRun, energy, energy_drift, free_free, pendulum, rigid_motion_objectivity,
