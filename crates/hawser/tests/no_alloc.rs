@@ -7,7 +7,7 @@
 //! a consistent-mass line with a free point mass; the same with lumped mass; and two lines
 //! sharing a free point (the dense shared-point solve) with a prescribed, time-series end, in
 //! water with current, an irregular sea, drag, added mass and seabed contact, under each
-//! scheme; and the same with one `hermite` line with bending.
+//! scheme; and the same with one `hermite` line with bending, and with one `dg` line.
 
 mod alloc_count;
 mod common;
@@ -158,5 +158,13 @@ fn time_loop_does_not_allocate() {
     model.line_types[0].bending_stiffness = 1.0e3;
     for scheme in [Scheme::Rk4, Scheme::SspRk3, Scheme::ThreeLevel] {
         check("hermite and fe lines on a shared buoy", &model, scheme);
+    }
+
+    // The lower line in discontinuous Galerkin (P = 4) with bending: its end traction on
+    // the shared buoy (explicit coupling) and the outputs it fills. Runge–Kutta only (the
+    // three-level scheme refuses dg).
+    model.lines[0].formulation = Formulation::Dg;
+    for scheme in [Scheme::Rk4, Scheme::SspRk3] {
+        check("dg and fe lines on a shared buoy", &model, scheme);
     }
 }
