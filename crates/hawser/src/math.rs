@@ -10,6 +10,8 @@ pub type Mat3 = nalgebra::Matrix3<Real>;
 pub type Vec6 = nalgebra::Vector6<Real>;
 /// A 6×6 matrix of a rigid body (mass about a reference point, added mass, ...).
 pub type Mat6 = nalgebra::Matrix6<Real>;
+/// A 3×6 matrix (the map from a rigid body's 6 accelerations to a body point's 3).
+pub type Mat3x6 = nalgebra::Matrix3x6<Real>;
 /// A rotation as a unit quaternion (body axes to global axes).
 pub type Quat = nalgebra::UnitQuaternion<Real>;
 

@@ -1,19 +1,31 @@
-//! Lines (block-tridiagonal over their nodes) coupled through shared free points.
+//! Lines (block-tridiagonal over their nodes) coupled through shared free points and free
+//! rigid bodies.
 //!
 //! One solver serves the consistent mass matrix of the dynamics (symmetric blocks) and the
 //! stiffness Jacobian of Newton statics (non-symmetric blocks). Each line's interior is
-//! eliminated by block Thomas; the free points are solved from their Schur complement, a small
-//! dense system; then the interior is back-substituted. Cost O(nodes) + O(points³).
+//! eliminated by block Thomas; the free points and bodies are solved from their Schur
+//! complement, a small dense system; then the interior is back-substituted. Cost O(nodes) +
+//! O((3 points + 6 bodies)³).
+//!
+//! A line end is a *slot*: a free point (its 3 accelerations are unknowns), or a point fixed on
+//! a free body, whose acceleration is a = J u + c with u = [a_o; α] the body's 6 unknowns
+//! (acceleration of its origin and angular acceleration), J = [I, −[ρ]×] (ρ the point's offset
+//! from the origin in global axes) and c = ω × (ω × ρ). The end's row of a line, Σ_q A_pq a_q =
+//! b_p, then enters the body's equations as Jₚᵀ (Σ_q A_pq (J_q u_q + c_q) − b_p): the line's
+//! end force acts on the body as a force and the moment ρ × F about its origin, and the
+//! line's end mass adds Jᵀ A J to the body's 6×6 mass.
 
 use super::{BandedLu, BlockTridiagonal, DenseLu};
-use crate::math::{Mat3, Real, Vec3};
+use crate::math::Mat3x6 as Matrix3x6;
+use crate::math::{Mat3, Mat6, Real, Vec3, Vec6, skew};
 
 /// What an end node of a line is in the coupled system.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum EndKind {
     /// Its unknown is known (fixed or prescribed end): the caller puts the value in `x`.
     Known,
-    /// It is the free point with this index in [`CoupledSystem`].
+    /// It is the slot with this index in [`CoupledSystem`]: a free point (indices below the
+    /// free-point count) or a point on a free body (above, see [`CoupledSystem::body_slots`]).
     Free(usize),
 }
 
@@ -205,36 +217,122 @@ impl LineBlocks {
     }
 }
 
-/// The shared-point part: per free point a diagonal block and right-hand side, and the dense
-/// Schur-complement system.
+/// A point fixed on a free body that line ends attach to (a slot after the free points).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct BodySlot {
+    /// Index of the body among the free bodies.
+    pub body: usize,
+    /// Offset ρ of the point from the body origin, in global axes [m].
+    pub offset: Vec3,
+    /// Centripetal acceleration c = ω × (ω × ρ) of the point [m/s²] (zero in statics).
+    pub bias: Vec3,
+}
+
+/// The shared part: per free point a diagonal block and right-hand side, per free body a 6×6
+/// block and right-hand side, and the dense Schur-complement system.
 #[derive(Clone, Debug)]
 pub struct CoupledSystem {
     /// The points' own diagonal blocks (point mass, or the point's own stiffness).
     pub point_diag: Vec<Mat3>,
     /// The points' own right-hand sides on input; their solution on output.
     pub point_x: Vec<Vec3>,
+    /// The bodies' own 6×6 blocks (mass about the origin in global axes).
+    pub body_diag: Vec<Mat6>,
+    /// The bodies' own right-hand sides [force; moment about the origin] on input; their
+    /// solution [a_o; α] on output.
+    pub body_x: Vec<Vec6>,
+    /// The body-point slots, numbered after the free points; set offsets and biases before
+    /// each solve.
+    pub body_slots: Vec<BodySlot>,
+    /// Acceleration of every slot after a solve (free points, then body points).
+    pub slot_x: Vec<Vec3>,
     lu: DenseLu,
     b: Vec<Real>,
     tmp: Vec<Real>,
 }
 
 impl CoupledSystem {
-    /// Storage for `points` free points.
+    /// Storage for `points` free points (and no bodies).
     pub fn new(points: usize) -> Self {
+        Self::with_bodies(points, 0, 0)
+    }
+
+    /// Storage for `points` free points, `bodies` free bodies and `slots` points on them.
+    pub fn with_bodies(points: usize, bodies: usize, slots: usize) -> Self {
+        let n = 3 * points + 6 * bodies;
         Self {
             point_diag: vec![Mat3::zeros(); points],
             point_x: vec![Vec3::zeros(); points],
-            lu: DenseLu::new(3 * points),
-            b: vec![0.0; 3 * points],
-            tmp: vec![0.0; 3 * points],
+            body_diag: vec![Mat6::zeros(); bodies],
+            body_x: vec![Vec6::zeros(); bodies],
+            body_slots: vec![BodySlot::default(); slots],
+            slot_x: vec![Vec3::zeros(); points + slots],
+            lu: DenseLu::new(n),
+            b: vec![0.0; n],
+            tmp: vec![0.0; n],
         }
     }
 
+    /// Row offset of body k's unknowns.
+    #[inline]
+    fn body_row(&self, k: usize) -> usize {
+        3 * self.point_diag.len() + 6 * k
+    }
+
+    /// J of slot s as a 3×6 map and its row offset and width: [I 0] for a free point (width
+    /// 3), [I, −[ρ]×] for a body point (width 6).
+    #[inline]
+    fn slot_map(&self, s: usize) -> (usize, usize, Matrix3x6, Vec3) {
+        let np = self.point_diag.len();
+        let mut j = Matrix3x6::zeros();
+        j.fixed_view_mut::<3, 3>(0, 0).copy_from(&Mat3::identity());
+        if s < np {
+            return (3 * s, 3, j, Vec3::zeros());
+        }
+        let slot = &self.body_slots[s - np];
+        j.fixed_view_mut::<3, 3>(0, 3)
+            .copy_from(&(-skew(&slot.offset)));
+        (self.body_row(slot.body), 6, j, slot.bias)
+    }
+
+    /// Adds `sign`·m as the coefficient of slot q's acceleration in slot p's row.
     fn add_block(&mut self, p: usize, q: usize, m: &Mat3, sign: Real) {
-        for r in 0..3 {
-            for c in 0..3 {
-                self.lu.add(3 * p + r, 3 * q + c, sign * m[(r, c)]);
+        let np = self.point_diag.len();
+        if p < np && q < np {
+            for r in 0..3 {
+                for c in 0..3 {
+                    self.lu.add(3 * p + r, 3 * q + c, sign * m[(r, c)]);
+                }
             }
+            return;
+        }
+        let (op, wp, jp, _) = self.slot_map(p);
+        let (oq, wq, jq, cq) = self.slot_map(q);
+        let full = jp.transpose() * m * jq;
+        for r in 0..wp {
+            for c in 0..wq {
+                self.lu.add(op + r, oq + c, sign * full[(r, c)]);
+            }
+        }
+        // The known part of a_q = J_q u + c_q moves to the right-hand side.
+        let known = jp.transpose() * (m * cq) * sign;
+        for r in 0..wp {
+            self.b[op + r] -= known[r];
+        }
+    }
+
+    /// Adds `v` (a force-like right-hand side at slot p) into p's rows: Jₚᵀ v.
+    fn add_rhs(&mut self, p: usize, v: &Vec3) {
+        if p < self.point_diag.len() {
+            for k in 0..3 {
+                self.b[3 * p + k] += v[k];
+            }
+            return;
+        }
+        let (op, wp, jp, _) = self.slot_map(p);
+        let g = jp.transpose() * v;
+        for r in 0..wp {
+            self.b[op + r] += g[r];
         }
     }
 
@@ -321,9 +419,8 @@ impl CoupledSystem {
             let EndKind::Free(p) = end else { continue };
             let d = line.diag[node];
             self.add_block(p, p, &d, 1.0);
-            for k in 0..3 {
-                self.b[3 * p + k] += line.x[node][k];
-            }
+            let v = line.x[node];
+            self.add_rhs(p, &v);
             let (other_node, other) = if node == 0 {
                 (n, line.end_b)
             } else {
@@ -334,10 +431,8 @@ impl CoupledSystem {
                 match other {
                     EndKind::Free(q) => self.add_block(p, q, &c, 1.0),
                     EndKind::Known => {
-                        let v = c * line.x[other_node];
-                        for k in 0..3 {
-                            self.b[3 * p + k] -= v[k];
-                        }
+                        let v = -(c * line.x[other_node]);
+                        self.add_rhs(p, &v);
                     }
                 }
             }
@@ -346,10 +441,8 @@ impl CoupledSystem {
                     continue;
                 }
                 let c = line.block(node, j);
-                let g = c * line.x[j];
-                for k in 0..3 {
-                    self.b[3 * p + k] -= g[k];
-                }
+                let g = -(c * line.x[j]);
+                self.add_rhs(p, &g);
                 if let EndKind::Free(q) = line.end_a {
                     let m = c * line.response_a[j - 1];
                     self.add_block(p, q, &m, -1.0);
@@ -372,6 +465,15 @@ impl CoupledSystem {
             self.add_block(p, p, &d, 1.0);
             for k in 0..3 {
                 self.b[3 * p + k] = self.point_x[p][k];
+            }
+        }
+        for k in 0..self.body_diag.len() {
+            let o = self.body_row(k);
+            for r in 0..6 {
+                for c in 0..6 {
+                    self.lu.add(o + r, o + c, self.body_diag[k][(r, c)]);
+                }
+                self.b[o + r] = self.body_x[k][r];
             }
         }
         // 1. Eliminate each line's interior.
@@ -426,9 +528,8 @@ impl CoupledSystem {
                 let EndKind::Free(p) = end else { continue };
                 let d = line.diag[node];
                 self.add_block(p, p, &d, 1.0);
-                for k in 0..3 {
-                    self.b[3 * p + k] += line.x[node][k];
-                }
+                let v = line.x[node];
+                self.add_rhs(p, &v);
                 // Coupling block from the neighbouring node into this end's row.
                 let c = if node == 0 {
                     line.upper[0]
@@ -444,19 +545,15 @@ impl CoupledSystem {
                     match other {
                         EndKind::Free(q) => self.add_block(p, q, &c, 1.0),
                         EndKind::Known => {
-                            let xo = c * line.x[next];
-                            for k in 0..3 {
-                                self.b[3 * p + k] -= xo[k];
-                            }
+                            let xo = -(c * line.x[next]);
+                            self.add_rhs(p, &xo);
                         }
                     }
                     continue;
                 }
                 let j = next - 1; // interior index of the neighbour
-                let g = c * line.x[next];
-                for k in 0..3 {
-                    self.b[3 * p + k] -= g[k];
-                }
+                let g = -(c * line.x[next]);
+                self.add_rhs(p, &g);
                 if let EndKind::Free(q) = line.end_a {
                     let m = c * line.response_a[j];
                     self.add_block(p, q, &m, -1.0);
@@ -467,12 +564,26 @@ impl CoupledSystem {
                 }
             }
         }
-        // 3. Solve the points.
-        if np > 0 {
-            self.lu.factor().map_err(|k| Singular::Point(k / 3))?;
+        // 3. Solve the points and bodies.
+        if !self.b.is_empty() {
+            self.lu
+                .factor()
+                .map_err(|k| Singular::Point((k / 3).min(np)))?;
             self.lu.solve(&mut self.b, &mut self.tmp);
             for p in 0..np {
                 self.point_x[p] = Vec3::new(self.b[3 * p], self.b[3 * p + 1], self.b[3 * p + 2]);
+                self.slot_x[p] = self.point_x[p];
+            }
+            for k in 0..self.body_diag.len() {
+                let o = self.body_row(k);
+                self.body_x[k] = Vec6::from_fn(|r, _| self.b[o + r]);
+            }
+            for s in 0..self.body_slots.len() {
+                let slot = self.body_slots[s];
+                let u = self.body_x[slot.body];
+                let a = Vec3::new(u[0], u[1], u[2]);
+                let alpha = Vec3::new(u[3], u[4], u[5]);
+                self.slot_x[np + s] = a + alpha.cross(&slot.offset) + slot.bias;
             }
         }
         // 4. Back-substitute the interiors and set the free ends.
@@ -480,11 +591,11 @@ impl CoupledSystem {
             let n = line.nodes() - 1;
             let interior = n - 1;
             let xa = match line.end_a {
-                EndKind::Free(p) => Some(self.point_x[p]),
+                EndKind::Free(p) => Some(self.slot_x[p]),
                 EndKind::Known => None,
             };
             let xb = match line.end_b {
-                EndKind::Free(p) => Some(self.point_x[p]),
+                EndKind::Free(p) => Some(self.slot_x[p]),
                 EndKind::Known => None,
             };
             if line.coupled && interior > 0 {
@@ -528,6 +639,180 @@ mod tests {
         check_against_dense(3, &[9, 6, 3]);
         check_against_dense(3, &[4, 2, 2]);
         check_against_dense(2, &[5, 7, 2]);
+    }
+
+    /// Lines on points of a free rigid body (and a free point), bandwidths 1 and 3, against a
+    /// dense assembly of Σ Tᵀ (A (T z + t) − x) + own = 0, with T mapping the unknowns z
+    /// (interior nodes, the point, the body's [a_o; α]) to every node's acceleration and t
+    /// the known parts (fixed ends, centripetal terms).
+    #[test]
+    fn body_slots_match_dense_assembly() {
+        for width in [1, 3] {
+            check_bodies_against_dense(width);
+        }
+    }
+
+    fn check_bodies_against_dense(width: usize) {
+        let f = |i: usize, r: usize, c: usize| ((i * 13 + r * 5 + c * 7) % 17) as f64 / 17.0 - 0.5;
+        // Slots: 0 is the free point; 1 and 2 are points on body 0.
+        let ends = [
+            (EndKind::Known, EndKind::Free(1)),
+            (EndKind::Free(0), EndKind::Free(2)),
+            (EndKind::Free(2), EndKind::Known),
+            (EndKind::Free(1), EndKind::Free(2)),
+        ];
+        let nodes = [5usize, 4, 3, 1];
+        let mut lines: Vec<_> = nodes
+            .iter()
+            .zip(ends)
+            .map(|(&m, (a, b))| {
+                LineBlocks::banded(if width > 1 { 2 * m + 2 } else { m + 1 }, width, a, b, true)
+            })
+            .collect();
+        let mut seed = 0;
+        for l in lines.iter_mut() {
+            for m in l.diag.iter_mut() {
+                seed += 1;
+                *m = Mat3::from_fn(|r, c| f(seed, r, c)) + Mat3::identity() * 5.0;
+            }
+            let last = l.nodes() - 1;
+            for i in 0..=last {
+                for j in i.saturating_sub(width)..=(i + width).min(last) {
+                    if i != j {
+                        seed += 1;
+                        *l.block_mut(i, j) = Mat3::from_fn(|r, c| f(seed, r, c)) * 0.5;
+                    }
+                }
+            }
+            for (i, x) in l.x.iter_mut().enumerate() {
+                *x = Vec3::new(i as f64, 1.0 + seed as f64 * 0.1, -0.3);
+            }
+        }
+        let mut sys = CoupledSystem::with_bodies(1, 1, 2);
+        sys.point_diag = vec![Mat3::identity() * 2.0];
+        sys.point_x = vec![Vec3::new(1.0, 2.0, 3.0)];
+        sys.body_diag = vec![Mat6::from_fn(|r, c| {
+            if r == c { 40.0 } else { f(r + 6 * c, r, c) }
+        })];
+        sys.body_diag[0] = (sys.body_diag[0] + sys.body_diag[0].transpose()) * 0.5;
+        sys.body_x = vec![Vec6::new(1.0, -2.0, 0.5, 0.3, -0.1, 0.2)];
+        sys.body_slots = vec![
+            BodySlot {
+                body: 0,
+                offset: Vec3::new(1.0, 0.5, -0.2),
+                bias: Vec3::new(0.1, 0.0, -0.3),
+            },
+            BodySlot {
+                body: 0,
+                offset: Vec3::new(-0.7, 0.2, 0.9),
+                bias: Vec3::new(0.0, 0.2, 0.1),
+            },
+        ];
+        // Unknowns: interior nodes, then the point (3), then the body (6).
+        let mut interior = vec![];
+        let mut count = 0;
+        for l in &lines {
+            let n = l.nodes() - 1;
+            interior.push(count);
+            count += n - 1;
+        }
+        let (pz, bz) = (3 * count, 3 * count + 3);
+        let dim = bz + 6;
+        let mut g = DMatrix::<f64>::zeros(dim, dim);
+        let mut rhs = DVector::<f64>::zeros(dim);
+        for (li, l) in lines.iter().enumerate() {
+            let n = l.nodes() - 1;
+            let rows = 3 * (n + 1);
+            let mut t = DMatrix::<f64>::zeros(rows, dim);
+            let mut t0 = DVector::<f64>::zeros(rows);
+            let mut equation = vec![true; n + 1];
+            for i in 0..=n {
+                let end = if i == 0 {
+                    Some(l.end_a)
+                } else if i == n {
+                    Some(l.end_b)
+                } else {
+                    None
+                };
+                match end {
+                    None => {
+                        let c = 3 * (interior[li] + i - 1);
+                        t.view_mut((3 * i, c), (3, 3)).copy_from(&Mat3::identity());
+                    }
+                    Some(EndKind::Known) => {
+                        equation[i] = false;
+                        for k in 0..3 {
+                            t0[3 * i + k] = l.x[i][k];
+                        }
+                    }
+                    Some(EndKind::Free(0)) => {
+                        t.view_mut((3 * i, pz), (3, 3)).copy_from(&Mat3::identity());
+                    }
+                    Some(EndKind::Free(s)) => {
+                        let slot = sys.body_slots[s - 1];
+                        t.view_mut((3 * i, bz), (3, 3)).copy_from(&Mat3::identity());
+                        t.view_mut((3 * i, bz + 3), (3, 3))
+                            .copy_from(&(-skew(&slot.offset)));
+                        for k in 0..3 {
+                            t0[3 * i + k] = slot.bias[k];
+                        }
+                    }
+                }
+            }
+            let mut a = DMatrix::<f64>::zeros(rows, rows);
+            let mut x = DVector::<f64>::zeros(rows);
+            for i in 0..=n {
+                for k in 0..3 {
+                    x[3 * i + k] = l.x[i][k];
+                }
+                for j in i.saturating_sub(width)..=(i + width).min(n) {
+                    a.view_mut((3 * i, 3 * j), (3, 3)).copy_from(&l.block(i, j));
+                }
+            }
+            for i in (0..=n).filter(|&i| !equation[i]) {
+                a.view_mut((3 * i, 0), (3, rows)).fill(0.0);
+                x.view_mut((3 * i, 0), (3, 1)).fill(0.0);
+            }
+            g += t.transpose() * &a * &t;
+            rhs += t.transpose() * (x - &a * t0);
+        }
+        let own = g.view((pz, pz), (3, 3)) + sys.point_diag[0];
+        g.view_mut((pz, pz), (3, 3)).copy_from(&own);
+        let own = g.view((bz, bz), (6, 6)) + sys.body_diag[0];
+        g.view_mut((bz, bz), (6, 6)).copy_from(&own);
+        for k in 0..3 {
+            rhs[pz + k] += sys.point_x[0][k];
+        }
+        for k in 0..6 {
+            rhs[bz + k] += sys.body_x[0][k];
+        }
+        let z = g.lu().solve(&rhs).unwrap();
+        sys.solve(&mut lines).unwrap();
+        for k in 0..6 {
+            assert!(
+                (sys.body_x[0][k] - z[bz + k]).abs() < 1e-10,
+                "body {k}: {} vs {}",
+                sys.body_x[0][k],
+                z[bz + k]
+            );
+        }
+        for k in 0..3 {
+            assert!((sys.point_x[0][k] - z[pz + k]).abs() < 1e-10);
+        }
+        for (li, l) in lines.iter().enumerate() {
+            let n = l.nodes() - 1;
+            for i in 1..n {
+                for k in 0..3 {
+                    let r = 3 * (interior[li] + i - 1) + k;
+                    assert!(
+                        (l.x[i][k] - z[r]).abs() < 1e-10,
+                        "line {li} node {i}: {} vs {}",
+                        l.x[i][k],
+                        z[r]
+                    );
+                }
+            }
+        }
     }
 
     fn check_against_dense(width: usize, nodes: &[usize]) {
