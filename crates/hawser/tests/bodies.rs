@@ -722,3 +722,96 @@ fn loads_allocate_nothing() {
     });
     assert_eq!(n, 0);
 }
+
+/// `Model::validate` refuses bodies outside their physical ranges, naming the field, before
+/// it refuses bodies as not yet coupled.
+#[test]
+fn validate_checks_the_physical_ranges_of_bodies() {
+    use hawser::model::Model;
+    let good = {
+        let mut b = body(1000.0, Mat3::from_diagonal(&Vec3::new(100.0, 200.0, 300.0)));
+        b.displacement = Displacement::Box {
+            length: 2.0,
+            breadth: 1.0,
+            height: 1.0,
+        };
+        b
+    };
+    let message = |b: Body| {
+        let model = Model {
+            bodies: vec![b],
+            ..Default::default()
+        };
+        model.validate().unwrap_err().to_string()
+    };
+    assert!(message(good.clone()).contains("not yet coupled"));
+    let cases: Vec<(&str, Box<dyn Fn(&mut Body)>)> = vec![
+        ("mass", Box::new(|b| b.mass = 0.0)),
+        ("mass", Box::new(|b| b.mass = Real::NAN)),
+        ("inertia", Box::new(|b| b.inertia[(0, 1)] = 5.0)),
+        (
+            "inertia",
+            Box::new(|b| b.inertia = Mat3::from_diagonal(&Vec3::new(1.0, -1.0, 1.0))),
+        ),
+        ("inertia", Box::new(|b| b.inertia = Mat3::zeros())),
+        (
+            "displacement",
+            Box::new(|b| b.displacement = Displacement::Submerged { volume: -1.0 }),
+        ),
+        (
+            "displacement",
+            Box::new(|b| {
+                b.displacement = Displacement::Cylinder {
+                    radius: 0.0,
+                    height: 1.0,
+                }
+            }),
+        ),
+        ("added_mass", Box::new(|b| b.added_mass[4] = -1.0)),
+        ("linear_drag", Box::new(|b| b.linear_drag[0] = -1.0)),
+        (
+            "quadratic_drag",
+            Box::new(|b| b.quadratic_drag[5] = Real::INFINITY),
+        ),
+        (
+            "thrust",
+            Box::new(|b| {
+                b.thrust = Thrust::Schedule {
+                    times: vec![0.0, 0.0],
+                    forces: vec![Vec3::zeros(); 2],
+                    moments: vec![Vec3::zeros(); 2],
+                }
+            }),
+        ),
+        (
+            "wind",
+            Box::new(|b| {
+                b.wind = Some(Wind {
+                    velocity: Vec3::x(),
+                    drag_area: -2.0,
+                    centre: Vec3::zeros(),
+                })
+            }),
+        ),
+    ];
+    for (field, spoil) in cases {
+        let mut b = good.clone();
+        spoil(&mut b);
+        let m = message(b);
+        assert!(
+            m.contains(field) && !m.contains("not yet coupled"),
+            "{field}: {m}"
+        );
+    }
+    let model = Model {
+        bodies: vec![good.clone(), good],
+        ..Default::default()
+    };
+    assert!(
+        model
+            .validate()
+            .unwrap_err()
+            .to_string()
+            .contains("another body")
+    );
+}

@@ -181,3 +181,133 @@ pub struct Body {
     /// Wind force, for vessels.
     pub wind: Option<Wind>,
 }
+
+impl Body {
+    /// Checks the physical ranges: a positive finite mass, an inertia tensor that is finite,
+    /// symmetric (to 1e-9 of its largest entry) and positive definite, a finite pose and
+    /// centres, a shape with positive dimensions (a volume ≥ 0), added mass and drag
+    /// coefficients ≥ 0, a thrust schedule with strictly increasing times and as many forces
+    /// and moments as times, a wind with a drag area ≥ 0. The error names the field and says
+    /// why. [`super::Model::validate`] calls it.
+    pub fn check(&self) -> Result<(), (&'static str, String)> {
+        let finite3 = |v: &Vec3| v.iter().all(|x| x.is_finite());
+        if !(self.mass > 0.0) || !self.mass.is_finite() {
+            return Err((
+                "mass",
+                format!("must be > 0 kg and finite, not {}", self.mass),
+            ));
+        }
+        let i = &self.inertia;
+        let scale = i.abs().max();
+        if !i.iter().all(|x| x.is_finite()) {
+            return Err(("inertia", "must be finite".into()));
+        }
+        if (i - i.transpose()).abs().max() > 1e-9 * scale {
+            return Err(("inertia", "must be symmetric (I_xy = I_yx, ...)".into()));
+        }
+        if i.cholesky().is_none() || !(scale > 0.0) {
+            return Err((
+                "inertia",
+                "must be positive definite (every principal moment > 0 kg·m²)".into(),
+            ));
+        }
+        let q = &self.orientation;
+        if !finite3(&self.position) || !(q.w.is_finite() && finite3(&q.imag())) {
+            return Err(("position", "pose must be finite".into()));
+        }
+        if !finite3(&self.centre_of_gravity) {
+            return Err(("centre_of_gravity", "must be finite".into()));
+        }
+        if !finite3(&self.centre_of_buoyancy) {
+            return Err(("centre_of_buoyancy", "must be finite".into()));
+        }
+        let positive = |x: Real| x > 0.0 && x.is_finite();
+        match self.displacement {
+            Displacement::None => {}
+            Displacement::Submerged { volume } => {
+                if !(volume >= 0.0) || !volume.is_finite() {
+                    return Err(("displacement", "volume must be ≥ 0 m³".into()));
+                }
+            }
+            Displacement::Cylinder { radius, height } => {
+                if !positive(radius) || !positive(height) {
+                    return Err((
+                        "displacement",
+                        "cylinder radius and height must be > 0 m".into(),
+                    ));
+                }
+            }
+            Displacement::Box {
+                length,
+                breadth,
+                height,
+            } => {
+                if !positive(length) || !positive(breadth) || !positive(height) {
+                    return Err((
+                        "displacement",
+                        "box length, breadth and height must be > 0 m".into(),
+                    ));
+                }
+            }
+        }
+        let non_negative = |v: &Vec6| v.iter().all(|x| *x >= 0.0 && x.is_finite());
+        if !non_negative(&self.added_mass) {
+            return Err(("added_mass", "must be ≥ 0 (kg, kg·m²) and finite".into()));
+        }
+        if !non_negative(&self.linear_drag) {
+            return Err((
+                "linear_drag",
+                "must be ≥ 0 (N·s/m, N·m·s/rad) and finite".into(),
+            ));
+        }
+        if !non_negative(&self.quadratic_drag) {
+            return Err(("quadratic_drag", "must be ≥ 0 (m², m⁵) and finite".into()));
+        }
+        match &self.thrust {
+            Thrust::None => {}
+            Thrust::Constant { force, moment } => {
+                if !finite3(force) || !finite3(moment) {
+                    return Err(("thrust", "force and moment must be finite".into()));
+                }
+            }
+            Thrust::Schedule {
+                times,
+                forces,
+                moments,
+            } => {
+                if times.is_empty() || forces.len() != times.len() || moments.len() != times.len() {
+                    return Err((
+                        "thrust",
+                        "the schedule needs at least one time and a force and a moment per time"
+                            .into(),
+                    ));
+                }
+                if !times.iter().all(|t| t.is_finite()) || times.windows(2).any(|w| !(w[1] > w[0]))
+                {
+                    return Err((
+                        "thrust",
+                        "schedule times must be finite and strictly increasing".into(),
+                    ));
+                }
+                if !forces.iter().chain(moments).all(finite3) {
+                    return Err((
+                        "thrust",
+                        "schedule forces and moments must be finite".into(),
+                    ));
+                }
+            }
+        }
+        if let Some(w) = &self.wind
+            && (!finite3(&w.velocity)
+                || !finite3(&w.centre)
+                || !(w.drag_area >= 0.0)
+                || !w.drag_area.is_finite())
+        {
+            return Err((
+                "wind",
+                "velocity and centre must be finite and drag_area ≥ 0 m²".into(),
+            ));
+        }
+        Ok(())
+    }
+}
