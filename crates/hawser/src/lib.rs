@@ -11,6 +11,7 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 pub mod analysis;
+pub mod bodies;
 pub mod error;
 pub mod formulation;
 pub mod integrate;

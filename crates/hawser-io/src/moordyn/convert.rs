@@ -355,6 +355,7 @@ pub fn convert(
             line_types,
             points,
             lines,
+            bodies: Vec::new(),
         },
         notes: c.notes,
         key_names: c.key_names,

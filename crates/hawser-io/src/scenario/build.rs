@@ -20,6 +20,9 @@ use std::ops::Range;
 use std::path::Path;
 use toml::Spanned;
 
+mod bodies;
+pub use bodies::orientation_from_degrees;
+
 /// A scenario read from a file: the model, its output channels and where things are.
 #[derive(Clone, Debug)]
 pub struct LoadedScenario {
@@ -191,13 +194,25 @@ pub fn build_scenario(
             b.push(d);
         }
     }
+    let taken: HashMap<String, &str> = scenario
+        .points
+        .iter()
+        .map(|p| (p.name.get_ref().clone(), "point"))
+        .chain(
+            scenario
+                .lines
+                .iter()
+                .map(|l| (l.name.get_ref().clone(), "line")),
+        )
+        .collect();
+    let bodies = bodies::build_bodies(&mut b, &scenario.bodies, &taken);
     let (settings, time_step_span) = build_settings(&mut b, scenario.simulation.as_ref());
     let mut model = Model {
         environment,
         line_types,
         lines,
         points,
-        bodies: Vec::new(),
+        bodies,
         settings,
     };
     let channels = build_channels(&mut b, scenario.simulation.as_ref(), &model);
@@ -245,6 +260,7 @@ fn schema_errors(file: &Path, source: &str, first: &toml::de::Error) -> Scenario
                     "line_types" => LineTypeSpec::deserialize(de()).err(),
                     "points" => PointSpec::deserialize(de()).err(),
                     "lines" => LineSpec::deserialize(de()).err(),
+                    "bodies" => BodySpec::deserialize(de()).err(),
                     _ => None,
                 };
                 let Some(e) = e else { continue };
@@ -329,6 +345,8 @@ fn toml_error(file: &Path, source: &str, e: &toml::de::Error) -> Diagnostic {
     } else if !syntax && !message.starts_with("unknown variant") {
         let wanted = if message.contains("untagged enum ScalarOrVec3") {
             "a number or [x, y, z]"
+        } else if message.contains("untagged enum InertiaSpec") {
+            "[Ixx, Iyy, Izz] or a 3×3 matrix [[Ixx, Ixy, Ixz], [Ixy, Iyy, Iyz], [Ixz, Iyz, Izz]]"
         } else if message.contains("untagged enum TimeStepSpec") {
             "\"auto\" or a number"
         } else {

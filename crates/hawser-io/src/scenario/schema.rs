@@ -56,6 +56,9 @@ pub struct Scenario {
     /// Lines between points.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub lines: Vec<LineSpec>,
+    /// Rigid bodies (described and checked; not yet coupled to the lines).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub bodies: Vec<BodySpec>,
 }
 
 /// Integration scheme.
@@ -619,4 +622,174 @@ pub struct LineSpec {
     /// Sections from end A to end B.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub sections: Vec<SectionSpec>,
+}
+
+/// How a body moves.
+#[derive(Clone, Copy, Debug, Deserialize, Serialize, JsonSchema, PartialEq, Eq)]
+#[serde(rename_all = "kebab-case")]
+pub enum BodyKindSpec {
+    /// Six degrees of freedom, integrated with the lines.
+    Free,
+    /// Held at its `position` and `orientation`.
+    Fixed,
+}
+
+/// An inertia tensor: principal moments or a full matrix.
+#[derive(Clone, Debug, Deserialize, Serialize, JsonSchema, PartialEq)]
+#[serde(untagged)]
+pub enum InertiaSpec {
+    /// [I_xx, I_yy, I_zz] about body axes through the centre of gravity.
+    Principal([f64; 3]),
+    /// The full symmetric tensor [[I_xx, I_xy, I_xz], [I_xy, I_yy, I_yz], [I_xz, I_yz, I_zz]]
+    /// with I_xy = −∫ x y dm (the tensor, not the products of inertia).
+    Matrix([[f64; 3]; 3]),
+}
+
+/// Shape of the volume a body displaces.
+#[derive(Clone, Copy, Debug, Deserialize, Serialize, JsonSchema, PartialEq, Eq)]
+#[serde(rename_all = "kebab-case")]
+pub enum DisplacementKind {
+    /// Always fully submerged: buoyancy ρ g V at the centre of buoyancy.
+    Submerged,
+    /// A circular cylinder along body z, centred at the centre of buoyancy, submerged below
+    /// the local free surface.
+    Cylinder,
+    /// A box along the body axes, centred at the centre of buoyancy, submerged below the local
+    /// free surface.
+    Box,
+}
+
+/// `[bodies.displacement]`.
+#[derive(Debug, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct DisplacementSpec {
+    /// `"submerged"`, `"cylinder"` or `"box"`.
+    #[serde(rename = "type")]
+    #[schemars(with = "DisplacementKind")]
+    pub kind: Spanned<DisplacementKind>,
+    /// Displaced volume [m³] (`submerged`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub volume: Option<Spanned<f64>>,
+    /// Radius [m] (`cylinder`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub radius: Option<Spanned<f64>>,
+    /// Height along body z [m] (`cylinder`, `box`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub height: Option<Spanned<f64>>,
+    /// Length along body x [m] (`box`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub length: Option<Spanned<f64>>,
+    /// Breadth along body y [m] (`box`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub breadth: Option<Spanned<f64>>,
+}
+
+/// `[bodies.thrust]`: a constant force and moment, or a schedule.
+#[derive(Debug, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct ThrustSpec {
+    /// Constant force in body axes [N], applied at the body origin; default 0.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<[f64; 3]>")]
+    pub force: Option<Spanned<[f64; 3]>>,
+    /// Constant moment in body axes [N·m]; default 0.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<[f64; 3]>")]
+    pub moment: Option<Spanned<[f64; 3]>>,
+    /// Schedule rows `[t, Fx, Fy, Fz, Mx, My, Mz]` [s, N, N·m] in body axes, t strictly
+    /// increasing; interpolated linearly, held outside (instead of `force`/`moment`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<Vec<[f64; 7]>>")]
+    pub table: Option<Spanned<Vec<[f64; 7]>>>,
+}
+
+/// `[bodies.wind]`.
+#[derive(Debug, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct WindSpec {
+    /// Wind velocity in global axes [m/s] (uniform, constant).
+    #[schemars(with = "[f64; 3]")]
+    pub velocity: Spanned<[f64; 3]>,
+    /// Drag coefficient times area C_d·A of the superstructure [m²].
+    #[schemars(with = "f64")]
+    pub drag_area: Spanned<f64>,
+    /// Centre of wind pressure in body axes [m]; default the body origin.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<[f64; 3]>")]
+    pub centre: Option<Spanned<[f64; 3]>>,
+}
+
+/// `[[bodies]]`.
+#[derive(Debug, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct BodySpec {
+    /// Name, used for channels and results.
+    #[schemars(with = "String")]
+    pub name: Spanned<String>,
+    /// `"free"` or `"fixed"`.
+    #[serde(rename = "type")]
+    #[schemars(with = "BodyKindSpec")]
+    pub kind: Spanned<BodyKindSpec>,
+    /// Position of the body origin [m] (at t = 0 for free bodies).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<[f64; 3]>")]
+    pub position: Option<Spanned<[f64; 3]>>,
+    /// Orientation [roll, pitch, yaw] [deg]: R = Rz(yaw)·Ry(pitch)·Rx(roll), body to global;
+    /// default [0, 0, 0].
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<[f64; 3]>")]
+    pub orientation: Option<Spanned<[f64; 3]>>,
+    /// Mass [kg].
+    #[schemars(with = "f64")]
+    pub mass: Spanned<f64>,
+    /// Centre of gravity in body axes [m]; default the origin.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<[f64; 3]>")]
+    pub centre_of_gravity: Option<Spanned<[f64; 3]>>,
+    /// Inertia about the centre of gravity in body axes [kg·m²]: [Ixx, Iyy, Izz] or a full
+    /// symmetric 3×3 tensor.
+    #[schemars(with = "InertiaSpec")]
+    pub inertia: Spanned<InertiaSpec>,
+    /// Displaced volume; none by default (no buoyancy).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub displacement: Option<DisplacementSpec>,
+    /// Centre of buoyancy in body axes [m]: the centre of a cylinder or box; default the
+    /// origin.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<[f64; 3]>")]
+    pub centre_of_buoyancy: Option<Spanned<[f64; 3]>>,
+    /// Added mass per body axis [kg, kg, kg, kg·m², kg·m², kg·m²] (surge, sway, heave, roll,
+    /// pitch, yaw) of the fully submerged shape; default 0.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<[f64; 6]>")]
+    pub added_mass: Option<Spanned<[f64; 6]>>,
+    /// Linear drag per body axis [N·s/m ×3, N·m·s/rad ×3]; default 0.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<[f64; 6]>")]
+    pub linear_drag: Option<Spanned<[f64; 6]>>,
+    /// Quadratic drag per body axis: C·A [m²] for surge, sway, heave and C·A·L³ [m⁵] for
+    /// roll, pitch, yaw; default 0.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<[f64; 6]>")]
+    pub quadratic_drag: Option<Spanned<[f64; 6]>>,
+    /// Drag coefficients [-] along body x, y, z, with `drag_areas` (instead of
+    /// `quadratic_drag`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<[f64; 3]>")]
+    pub drag_coefficients: Option<Spanned<[f64; 3]>>,
+    /// Reference areas [m²] of `drag_coefficients` along body x, y, z.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<[f64; 3]>")]
+    pub drag_areas: Option<Spanned<[f64; 3]>>,
+    /// Thrust or control force; none by default.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub thrust: Option<ThrustSpec>,
+    /// Wind on a vessel's superstructure; none by default.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub wind: Option<WindSpec>,
 }

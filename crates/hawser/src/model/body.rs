@@ -29,16 +29,18 @@ pub enum Displacement {
         /// Displaced volume V [m³].
         volume: Real,
     },
-    /// A vertical cylinder in body axes (spar, buoy, cage): radius, height and the body-frame
-    /// centre of its volume; the submerged part is taken below the instantaneous free surface
-    /// at the body, so it floats, surfaces and sinks.
+    /// A circular cylinder with its axis along body z (spar, buoy, cage), centred at the
+    /// body's `centre_of_buoyancy`; the submerged part is taken below the instantaneous free
+    /// surface at the body, so it floats, surfaces and sinks, upright or tilted
+    /// ([`crate::bodies::wetted_prism`]).
     Cylinder {
         /// Radius [m].
         radius: Real,
         /// Height along body z [m].
         height: Real,
     },
-    /// A box in body axes (barge, vessel hull idealised as wall-sided).
+    /// A box with its edges along the body axes, centred at the body's `centre_of_buoyancy`
+    /// (barge, vessel hull idealised as wall-sided); submerged part as for `Cylinder`.
     Box {
         /// Length along body x [m].
         length: Real,
@@ -47,6 +49,24 @@ pub enum Displacement {
         /// Height along body z [m].
         height: Real,
     },
+}
+
+impl Displacement {
+    /// Volume of the whole shape [m³]: V, π r² h or l b h; 0 for `None`.
+    pub fn volume(&self) -> Real {
+        match *self {
+            Displacement::None => 0.0,
+            Displacement::Submerged { volume } => volume,
+            Displacement::Cylinder { radius, height } => {
+                std::f64::consts::PI * radius * radius * height
+            }
+            Displacement::Box {
+                length,
+                breadth,
+                height,
+            } => length * breadth * height,
+        }
+    }
 }
 
 /// A body's thrust or control force, in body axes.
@@ -71,6 +91,40 @@ pub enum Thrust {
         /// Moment at each time [N·m].
         moments: Vec<Vec3>,
     },
+}
+
+impl Thrust {
+    /// Force [N] and moment [N·m] in body axes at time t [s]: constant, or interpolated
+    /// linearly in the schedule (binary search; no allocation) and held at the end values
+    /// outside it.
+    pub fn at(&self, t: Real) -> (Vec3, Vec3) {
+        match self {
+            Thrust::None => (Vec3::zeros(), Vec3::zeros()),
+            Thrust::Constant { force, moment } => (*force, *moment),
+            Thrust::Schedule {
+                times,
+                forces,
+                moments,
+            } => {
+                let n = times.len();
+                if n == 0 {
+                    return (Vec3::zeros(), Vec3::zeros());
+                }
+                if t <= times[0] {
+                    return (forces[0], moments[0]);
+                }
+                if t >= times[n - 1] {
+                    return (forces[n - 1], moments[n - 1]);
+                }
+                let j = times.partition_point(|&tj| tj <= t).clamp(1, n - 1);
+                let s = (t - times[j - 1]) / (times[j] - times[j - 1]);
+                (
+                    forces[j - 1] * (1.0 - s) + forces[j] * s,
+                    moments[j - 1] * (1.0 - s) + moments[j] * s,
+                )
+            }
+        }
+    }
 }
 
 /// Wind on a vessel's superstructure: F = ½ ρ_air C_d A |u|² in the direction of u, u the wind
@@ -104,19 +158,156 @@ pub struct Body {
     pub inertia: Mat3,
     /// Displaced volume.
     pub displacement: Displacement,
-    /// Centre of the displaced volume (of the whole shape) in body axes [m].
+    /// Centre of the displaced volume (of the whole shape) in body axes [m]: the centre of a
+    /// `Cylinder` or `Box`, the point where the buoyancy of `Submerged` acts, and the
+    /// hydrodynamic centre of `None`.
     pub centre_of_buoyancy: Vec3,
     /// Added mass in body axes, per axis (surge, sway, heave [kg]; roll, pitch, yaw [kg·m²]),
-    /// about the centre of buoyancy.
+    /// of the whole shape fully submerged, about the hydrodynamic centre: the centre of
+    /// buoyancy when fully submerged, the centroid of the submerged volume of a partly
+    /// submerged `Cylinder` or `Box`, whose coefficients are scaled by the submerged fraction
+    /// V_s / V (so give the fully submerged shape's values).
     pub added_mass: Vec6,
     /// Linear drag per axis in body axes (N·s/m for the translations, N·m·s/rad for the
-    /// rotations), on the velocity relative to the water at the centre of buoyancy.
+    /// rotations), on the velocity relative to the water at the hydrodynamic centre and on
+    /// the angular velocity; scaled by the submerged fraction like `added_mass`.
     pub linear_drag: Vec6,
     /// Quadratic drag per axis in body axes, F_i = −½ ρ C_i A_i |u_i| u_i: the products
-    /// C_i·A_i [m²] for the translations and C_i·A_i·L_i³ [m⁵] for the rotations.
+    /// C_i·A_i [m²] for the translations and C_i·A_i·L_i³ [m⁵] for the rotations (moment
+    /// −½ ρ C A L³ |Ω_i| Ω_i); scaled by the submerged fraction like `added_mass`.
     pub quadratic_drag: Vec6,
     /// Thrust or control force.
     pub thrust: Thrust,
     /// Wind force, for vessels.
     pub wind: Option<Wind>,
+}
+
+impl Body {
+    /// Checks the physical ranges: a positive finite mass, an inertia tensor that is finite,
+    /// symmetric (to 1e-9 of its largest entry) and positive definite, a finite pose and
+    /// centres, a shape with positive dimensions (a volume ≥ 0), added mass and drag
+    /// coefficients ≥ 0, a thrust schedule with strictly increasing times and as many forces
+    /// and moments as times, a wind with a drag area ≥ 0. The error names the field and says
+    /// why. [`super::Model::validate`] calls it.
+    pub fn check(&self) -> Result<(), (&'static str, String)> {
+        let finite3 = |v: &Vec3| v.iter().all(|x| x.is_finite());
+        if !(self.mass > 0.0) || !self.mass.is_finite() {
+            return Err((
+                "mass",
+                format!("must be > 0 kg and finite, not {}", self.mass),
+            ));
+        }
+        let i = &self.inertia;
+        let scale = i.abs().max();
+        if !i.iter().all(|x| x.is_finite()) {
+            return Err(("inertia", "must be finite".into()));
+        }
+        if (i - i.transpose()).abs().max() > 1e-9 * scale {
+            return Err(("inertia", "must be symmetric (I_xy = I_yx, ...)".into()));
+        }
+        if i.cholesky().is_none() || !(scale > 0.0) {
+            return Err((
+                "inertia",
+                "must be positive definite (every principal moment > 0 kg·m²)".into(),
+            ));
+        }
+        let q = &self.orientation;
+        if !finite3(&self.position) || !(q.w.is_finite() && finite3(&q.imag())) {
+            return Err(("position", "pose must be finite".into()));
+        }
+        if !finite3(&self.centre_of_gravity) {
+            return Err(("centre_of_gravity", "must be finite".into()));
+        }
+        if !finite3(&self.centre_of_buoyancy) {
+            return Err(("centre_of_buoyancy", "must be finite".into()));
+        }
+        let positive = |x: Real| x > 0.0 && x.is_finite();
+        match self.displacement {
+            Displacement::None => {}
+            Displacement::Submerged { volume } => {
+                if !(volume >= 0.0) || !volume.is_finite() {
+                    return Err(("displacement", "volume must be ≥ 0 m³".into()));
+                }
+            }
+            Displacement::Cylinder { radius, height } => {
+                if !positive(radius) || !positive(height) {
+                    return Err((
+                        "displacement",
+                        "cylinder radius and height must be > 0 m".into(),
+                    ));
+                }
+            }
+            Displacement::Box {
+                length,
+                breadth,
+                height,
+            } => {
+                if !positive(length) || !positive(breadth) || !positive(height) {
+                    return Err((
+                        "displacement",
+                        "box length, breadth and height must be > 0 m".into(),
+                    ));
+                }
+            }
+        }
+        let non_negative = |v: &Vec6| v.iter().all(|x| *x >= 0.0 && x.is_finite());
+        if !non_negative(&self.added_mass) {
+            return Err(("added_mass", "must be ≥ 0 (kg, kg·m²) and finite".into()));
+        }
+        if !non_negative(&self.linear_drag) {
+            return Err((
+                "linear_drag",
+                "must be ≥ 0 (N·s/m, N·m·s/rad) and finite".into(),
+            ));
+        }
+        if !non_negative(&self.quadratic_drag) {
+            return Err(("quadratic_drag", "must be ≥ 0 (m², m⁵) and finite".into()));
+        }
+        match &self.thrust {
+            Thrust::None => {}
+            Thrust::Constant { force, moment } => {
+                if !finite3(force) || !finite3(moment) {
+                    return Err(("thrust", "force and moment must be finite".into()));
+                }
+            }
+            Thrust::Schedule {
+                times,
+                forces,
+                moments,
+            } => {
+                if times.is_empty() || forces.len() != times.len() || moments.len() != times.len() {
+                    return Err((
+                        "thrust",
+                        "the schedule needs at least one time and a force and a moment per time"
+                            .into(),
+                    ));
+                }
+                if !times.iter().all(|t| t.is_finite()) || times.windows(2).any(|w| !(w[1] > w[0]))
+                {
+                    return Err((
+                        "thrust",
+                        "schedule times must be finite and strictly increasing".into(),
+                    ));
+                }
+                if !forces.iter().chain(moments).all(finite3) {
+                    return Err((
+                        "thrust",
+                        "schedule forces and moments must be finite".into(),
+                    ));
+                }
+            }
+        }
+        if let Some(w) = &self.wind
+            && (!finite3(&w.velocity)
+                || !finite3(&w.centre)
+                || !(w.drag_area >= 0.0)
+                || !w.drag_area.is_finite())
+        {
+            return Err((
+                "wind",
+                "velocity and centre must be finite and drag_area ≥ 0 m²".into(),
+            ));
+        }
+        Ok(())
+    }
 }

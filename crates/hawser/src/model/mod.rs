@@ -213,6 +213,15 @@ impl Model {
                 }
             }
         }
+        for (bi, b) in self.bodies.iter().enumerate() {
+            let name = |what: &str| format!("body {} (#{bi}): {what}", b.name);
+            if let Err((what, why)) = b.check() {
+                return bad(name(what), &why);
+            }
+            if self.bodies[..bi].iter().any(|o| o.name == b.name) {
+                return bad(name("name"), "is used by another body");
+            }
+        }
         if let Some(b) = self.bodies.first() {
             return bad(
                 format!("body {}", b.name),

@@ -1,0 +1,95 @@
+//! The physics of one rigid body: its state in the flat state vector, and the loads and mass
+//! matrix of its equations of motion (docs/bodies.md).
+//!
+//! # State
+//!
+//! A free body owns [`STATE_LEN`] = 13 numbers of the state vector:
+//!
+//! | index | quantity | unit |
+//! |---|---|---|
+//! | 0..3 | position of the body origin r_o, global axes | m |
+//! | 3..7 | unit quaternion q = (w, i, j, k), body axes → global axes | - |
+//! | 7..10 | velocity of the body origin v_o, global axes | m/s |
+//! | 10..13 | angular velocity ω, **global** axes | rad/s |
+//!
+//! and their rates are ṙ_o = v_o, q̇ = ½ (0, ω) ⊗ q (ω in global axes, so it multiplies from
+//! the left), v̇_o = a_o, ω̇ = α. The quaternion in the state drifts from unit norm by the
+//! integrator's error only: [`read_state`] normalises it, and the rate keeps |q| constant in
+//! exact arithmetic (q̇ ⊥ q).
+//!
+//! # Equations of motion
+//!
+//! [`Body::loads`](crate::model::Body::loads) returns, in global axes and about the body
+//! origin, the 6×6 mass matrix M and the loads [F; M_o] such that the body alone obeys
+//!
+//! ```text
+//! M [a_o; α] = [F; M_o]
+//! ```
+//!
+//! Attached lines add their end forces (and the moments of those forces about the origin) to
+//! the right-hand side, and their end masses to M.
+
+mod hydrostatics;
+mod loads;
+
+pub use hydrostatics::{CYLINDER_SIDES, Section, Wetted, wetted_prism};
+pub use loads::BodyLoads;
+
+use crate::math::{Quat, Real, Vec3};
+use crate::model::RigidKinematics;
+
+/// Number of state entries of a free body: position (3), quaternion (4), velocity (3),
+/// angular velocity (3).
+pub const STATE_LEN: usize = 13;
+
+/// The body's kinematics from its [`STATE_LEN`] state entries `y` (layout in the module
+/// docs). The quaternion is normalised (a zero quaternion gives NaN, which the driver's
+/// finiteness check reports); the accelerations are zero.
+#[inline]
+pub fn read_state(y: &[Real]) -> RigidKinematics {
+    let q = nalgebra::Quaternion::new(y[3], y[4], y[5], y[6]);
+    RigidKinematics {
+        position: Vec3::new(y[0], y[1], y[2]),
+        orientation: Quat::from_quaternion(q),
+        velocity: Vec3::new(y[7], y[8], y[9]),
+        angular_velocity: Vec3::new(y[10], y[11], y[12]),
+        acceleration: Vec3::zeros(),
+        angular_acceleration: Vec3::zeros(),
+    }
+}
+
+/// Writes the pose and velocities of `k` into the [`STATE_LEN`] entries `y`.
+#[inline]
+pub fn write_state(k: &RigidKinematics, y: &mut [Real]) {
+    let q = k.orientation;
+    y[0..3].copy_from_slice(k.position.as_slice());
+    y[3] = q.w;
+    y[4] = q.i;
+    y[5] = q.j;
+    y[6] = q.k;
+    y[7..10].copy_from_slice(k.velocity.as_slice());
+    y[10..13].copy_from_slice(k.angular_velocity.as_slice());
+}
+
+/// Writes the time derivative of the [`STATE_LEN`] entries into `dy`: ṙ_o = v_o,
+/// q̇ = ½ (0, ω) ⊗ q = ½ (−ω·v, w ω + ω × v) for q = (w, v) and ω in global axes,
+/// v̇_o = `acceleration` [m/s²], ω̇ = `angular_acceleration` [rad/s²] (both in global axes).
+#[inline]
+pub fn write_rate(
+    k: &RigidKinematics,
+    acceleration: &Vec3,
+    angular_acceleration: &Vec3,
+    dy: &mut [Real],
+) {
+    let q = k.orientation;
+    let w = k.angular_velocity;
+    let v = Vec3::new(q.i, q.j, q.k);
+    let dv = 0.5 * (q.w * w + w.cross(&v));
+    dy[0..3].copy_from_slice(k.velocity.as_slice());
+    dy[3] = -0.5 * w.dot(&v);
+    dy[4] = dv.x;
+    dy[5] = dv.y;
+    dy[6] = dv.z;
+    dy[7..10].copy_from_slice(acceleration.as_slice());
+    dy[10..13].copy_from_slice(angular_acceleration.as_slice());
+}
