@@ -167,6 +167,7 @@ fn point_kind(system: &System, p: usize) -> &'static str {
         PointKind::Fixed => "fixed",
         PointKind::Prescribed(_) => "prescribed",
         PointKind::Free { .. } => "free",
+        PointKind::Body { .. } => "on a body",
     }
 }
 

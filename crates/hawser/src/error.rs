@@ -112,6 +112,16 @@ pub enum ModalError {
         /// Formulation name.
         formulation: &'static str,
     },
+    /// A free rigid body (its six degrees of freedom are not linearised yet).
+    #[error(
+        "body `{body}` is free; natural modes with free rigid bodies are not available in this \
+         version; hint: make the body prescribed (type = \"fixed\") to get the lines' modes \
+         with the body held"
+    )]
+    FreeBody {
+        /// Body name.
+        body: String,
+    },
     /// Nothing can move: every line end is fixed or prescribed and no line has interior nodes.
     #[error(
         "the system has no degrees of freedom (no interior line nodes and no free points); \

@@ -96,6 +96,14 @@ impl<'a> Simulation<'a> {
                     .into(),
             }));
         }
+        if settings.scheme == Scheme::ThreeLevel && !system.free_bodies.is_empty() {
+            return Err(SimulationError::Model(crate::error::ModelError::Invalid {
+                what: format!("body {}", system.bodies[system.free_bodies[0]].body.name),
+                why: "is free: the three-level scheme does not integrate rigid bodies yet; use \
+                      scheme = \"rk4\" or \"ssp-rk3\""
+                    .into(),
+            }));
+        }
         let (mut limit, mut culprit) = system.stable_step(settings.scheme);
         let stiffness_limit = limit;
         let n = initial.len();

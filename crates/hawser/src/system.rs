@@ -34,6 +34,9 @@ pub struct Layout {
     pub line_len: Vec<usize>,
     /// Offset of each free point's block (position then velocity), `None` otherwise.
     pub point_offset: Vec<Option<usize>>,
+    /// Offset of each free body's block ([`crate::bodies::STATE_LEN`] entries: position,
+    /// quaternion, velocity, angular velocity), `None` otherwise.
+    pub body_offset: Vec<Option<usize>>,
     /// Total length.
     pub len: usize,
 }
@@ -228,8 +231,37 @@ pub struct System {
     pub points: Vec<SystemPoint>,
     /// Indices of the free points.
     pub free_points: Vec<usize>,
+    /// Rigid bodies.
+    pub bodies: Vec<SystemBody>,
+    /// Indices of the free bodies.
+    pub free_bodies: Vec<usize>,
+    /// Per point: its slot in the coupled system when it is on a free body (numbered after
+    /// the free points, see [`crate::linalg::CoupledSystem`]).
+    pub point_slot: Vec<Option<usize>>,
     /// State layout.
     pub layout: Layout,
+}
+
+/// A rigid body of the system.
+#[derive(Clone, Debug)]
+pub struct SystemBody {
+    /// The body's description.
+    pub body: crate::model::Body,
+    /// Index among free bodies.
+    pub free_index: Option<usize>,
+}
+
+impl SystemBody {
+    /// Kinematics at t = 0: a free body at rest at its initial pose, a prescribed body on its
+    /// motion.
+    pub fn initial_kinematics(&self) -> crate::model::RigidKinematics {
+        match &self.body.kind {
+            crate::model::BodyKind::Free => {
+                crate::model::RigidKinematics::at_rest(self.body.position, self.body.orientation)
+            }
+            crate::model::BodyKind::Prescribed(m) => m.kinematics(0.0),
+        }
+    }
 }
 
 /// Kinematics of a point at one instant.
@@ -272,6 +304,11 @@ pub struct Workspace {
     pub coupled: CoupledSystem,
     /// Per line: the `dg` scratch (`None` for other formulations).
     pub dg: Vec<Option<DgWorkspace>>,
+    /// Per body: its kinematics (free bodies: accelerations solved by the last evaluation).
+    pub bodies: Vec<crate::model::RigidKinematics>,
+    /// Per body: the loads of its own physics (weight, buoyancy, fluid, thrust, wind; about
+    /// its origin, global axes) in the last evaluation.
+    pub body_loads: Vec<crate::bodies::BodyLoads>,
 }
 
 /// Identifies the place in the model a state entry belongs to.
@@ -287,6 +324,14 @@ impl System {
     /// Assembles a validated model.
     pub fn new(model: &Model) -> Result<Self, ModelError> {
         model.validate()?;
+        let bodies: Vec<SystemBody> = model
+            .bodies
+            .iter()
+            .map(|b| SystemBody {
+                body: b.clone(),
+                free_index: None,
+            })
+            .collect();
         let points = model
             .points
             .iter()
@@ -294,6 +339,9 @@ impl System {
                 name: p.name.clone(),
                 position: match &p.kind {
                     PointKind::Prescribed(m) => m.initial_position(),
+                    PointKind::Body { body, offset } => {
+                        bodies[*body].initial_kinematics().point(offset).0
+                    }
                     _ => p.position,
                 },
                 kind: p.kind.clone(),
@@ -344,7 +392,7 @@ impl System {
                 dg,
             });
         }
-        Self::from_parts(model.environment.clone(), lines, points)
+        Self::from_parts(model.environment.clone(), lines, points, bodies)
     }
 
     /// Finishes the assembly from lines and points: free ends of `dg` lines, the `dg` end
@@ -353,6 +401,7 @@ impl System {
         environment: Environment,
         mut lines: Vec<SystemLine>,
         mut points: Vec<SystemPoint>,
+        mut bodies: Vec<SystemBody>,
     ) -> Result<Self, ModelError> {
         let mut attached = vec![0usize; points.len()];
         for l in &lines {
@@ -425,16 +474,41 @@ impl System {
             point_offset[p] = Some(len);
             len += 6;
         }
+        let mut free_bodies = Vec::new();
+        let mut body_offset = vec![None; bodies.len()];
+        for (i, b) in bodies.iter_mut().enumerate() {
+            if b.body.kind == crate::model::BodyKind::Free {
+                b.free_index = Some(free_bodies.len());
+                free_bodies.push(i);
+                body_offset[i] = Some(len);
+                len += crate::bodies::STATE_LEN;
+            }
+        }
+        let mut slots = 0;
+        let point_slot = points
+            .iter()
+            .map(|p| match p.kind {
+                PointKind::Body { body, .. } if bodies[body].free_index.is_some() => {
+                    slots += 1;
+                    Some(free_points.len() + slots - 1)
+                }
+                _ => None,
+            })
+            .collect();
         Ok(Self {
             environment,
             lines,
             points,
             free_points,
+            bodies,
+            free_bodies,
+            point_slot,
             layout: Layout {
                 line_offset,
                 line_interior,
                 line_len,
                 point_offset,
+                body_offset,
                 len,
             },
         })
@@ -442,8 +516,9 @@ impl System {
 
     /// The system with every `dg` line replaced by a `hermite` line over the same sections,
     /// with ⌈(P + 1)/2⌉ cubic elements per dg element of order P (about as many unknowns),
-    /// the same ends and clamps: the statics of dg lines are solved on it
-    /// ([`crate::statics::solve`]) and carried over by [`System::state_from_twin`].
+    /// the same ends and clamps, and every free body held at its initial pose: the statics of
+    /// such systems are solved on it ([`crate::statics::solve`]) and carried over by
+    /// [`System::state_from_twin`] (free bodies start at their initial pose, at rest).
     pub fn statics_twin(&self) -> System {
         let lines = self
             .lines
@@ -482,7 +557,24 @@ impl System {
                 ..p.clone()
             })
             .collect();
-        Self::from_parts(self.environment.clone(), lines, points)
+        // Free bodies are held at their initial pose.
+        let bodies = self
+            .bodies
+            .iter()
+            .map(|b| {
+                let k = b.initial_kinematics();
+                let mut body = b.body.clone();
+                body.kind = crate::model::BodyKind::Prescribed(crate::model::RigidMotion::Fixed {
+                    position: k.position,
+                    orientation: k.orientation,
+                });
+                SystemBody {
+                    body,
+                    free_index: None,
+                }
+            })
+            .collect();
+        Self::from_parts(self.environment.clone(), lines, points, bodies)
             .expect("a system without dg lines has no dg end to refuse")
     }
 
@@ -502,6 +594,12 @@ impl System {
         for (p, off) in self.layout.point_offset.iter().enumerate() {
             if let (Some(o), Some(ot)) = (off, twin.layout.point_offset[p]) {
                 y[*o..o + 6].copy_from_slice(&y_twin[ot..ot + 6]);
+            }
+        }
+        for (b, off) in self.layout.body_offset.iter().enumerate() {
+            if let Some(o) = off {
+                let k = self.bodies[b].initial_kinematics();
+                crate::bodies::write_state(&k, &mut y[*o..o + crate::bodies::STATE_LEN]);
             }
         }
         for (li, l) in self.lines.iter().enumerate() {
@@ -561,11 +659,18 @@ impl System {
         self.lines.iter().any(|l| l.dg.is_some())
     }
 
+    /// Whether the statics must go through [`System::statics_twin`]: `dg` lines or free
+    /// bodies.
+    pub fn needs_statics_twin(&self) -> bool {
+        self.has_dg_lines() || !self.free_bodies.is_empty()
+    }
+
     /// Scratch for this system.
     pub fn workspace(&self) -> Workspace {
-        let end_kind = |p: usize| match self.points[p].free_index {
-            Some(f) => EndKind::Free(f),
-            None => EndKind::Known,
+        let end_kind = |p: usize| match (self.points[p].free_index, self.point_slot[p]) {
+            (Some(f), _) => EndKind::Free(f),
+            (None, Some(s)) => EndKind::Free(s),
+            (None, None) => EndKind::Known,
         };
         let lines = self
             .lines
@@ -599,12 +704,18 @@ impl System {
             lines,
             blocks,
             points: vec![PointKinematics::default(); self.points.len()],
-            coupled: CoupledSystem::new(self.free_points.len()),
+            coupled: CoupledSystem::with_bodies(
+                self.free_points.len(),
+                self.free_bodies.len(),
+                self.point_slot.iter().flatten().count(),
+            ),
             dg: self
                 .lines
                 .iter()
                 .map(|l| l.dg.as_deref().map(DgWorkspace::new))
                 .collect(),
+            bodies: self.bodies.iter().map(|b| b.initial_kinematics()).collect(),
+            body_loads: vec![crate::bodies::BodyLoads::default(); self.bodies.len()],
         }
     }
 
@@ -671,7 +782,7 @@ impl System {
 
     /// Mechanical energy of the state `y` at time t [J]: kinetic energy ½ q̇ᵀ M q̇ of the lines
     /// (with the mass matrix of their formulation, without added mass) and of the free points
-    /// (their own mass), the potential of weight in air (γ0 g z integrated along the lines,
+    /// (their own mass) and free bodies (½ m |v_G|² + ½ ωᵀ I ω), the potential of weight in air (γ0 g z integrated along the lines,
     /// m g z of the points: buoyancy and fluid forces are not conservative in general and are
     /// left out, so the sum is conserved only in air or vacuum without drag or damping), and
     /// the strain energy: axial ∫ ∫₀^ε T_e(e) de ds and, for `hermite`, bending ∫ ½ EI |r''|² ds.
@@ -713,13 +824,31 @@ impl System {
                 energy.gravity += mass * g * k.position.z;
             }
         }
+        for &b in &self.free_bodies {
+            let (body, k) = (&self.bodies[b].body, &ws.bodies[b]);
+            let (cg, v_cg, _) = k.point(&body.centre_of_gravity);
+            let r = k.orientation.to_rotation_matrix();
+            let inertia = r * body.inertia * r.transpose();
+            let w = k.angular_velocity;
+            energy.kinetic += 0.5 * body.mass * v_cg.norm_squared() + 0.5 * w.dot(&(inertia * w));
+            energy.gravity += body.mass * g * cg.z;
+        }
         energy
     }
 
     /// Updates the point kinematics at time t from the state (positions and velocities).
     /// The free end of a `dg` line keeps the kinematics its line gave it in the last
     /// evaluation ([`System::evaluate_dg_lines`]).
+    /// Bodies first: free ones from the state (accelerations from the last solve are kept
+    /// only by [`System::rhs`]), prescribed ones from their motion; points on bodies follow.
     pub fn point_kinematics(&self, t: Real, y: &[Real], ws: &mut Workspace) {
+        for (b, body) in self.bodies.iter().enumerate() {
+            ws.bodies[b] = match (&body.body.kind, self.layout.body_offset[b]) {
+                (_, Some(o)) => crate::bodies::read_state(&y[o..o + crate::bodies::STATE_LEN]),
+                (crate::model::BodyKind::Prescribed(m), None) => m.kinematics(t),
+                (crate::model::BodyKind::Free, None) => body.initial_kinematics(),
+            };
+        }
         for (i, p) in self.points.iter().enumerate() {
             if p.line_end.is_some() {
                 continue;
@@ -743,6 +872,14 @@ impl System {
                         position: get3(y, o / 3),
                         velocity: get3(y, o / 3 + 1),
                         acceleration: Vec3::zeros(),
+                    }
+                }
+                PointKind::Body { body, offset } => {
+                    let (position, velocity, acceleration) = ws.bodies[*body].point(offset);
+                    PointKinematics {
+                        position,
+                        velocity,
+                        acceleration,
                     }
                 }
             };
@@ -850,6 +987,24 @@ impl System {
             set3(&mut dydt[o..], 0, &ws.points[p].velocity);
             set3(&mut dydt[o..], 1, &ws.coupled.point_x[f]);
             ws.points[p].acceleration = ws.coupled.point_x[f];
+        }
+        for (f, &b) in self.free_bodies.iter().enumerate() {
+            let o = self.layout.body_offset[b].expect("free body");
+            let u = ws.coupled.body_x[f];
+            let k = &mut ws.bodies[b];
+            k.acceleration = Vec3::new(u[0], u[1], u[2]);
+            k.angular_acceleration = Vec3::new(u[3], u[4], u[5]);
+            crate::bodies::write_rate(
+                k,
+                &k.acceleration,
+                &k.angular_acceleration,
+                &mut dydt[o..o + crate::bodies::STATE_LEN],
+            );
+        }
+        for (p, slot) in self.point_slot.iter().enumerate() {
+            if let Some(s) = slot {
+                ws.points[p].acceleration = ws.coupled.slot_x[*s];
+            }
         }
         Ok(())
     }
@@ -971,6 +1126,44 @@ impl System {
             ws.coupled.point_x[f] = force;
             ws.coupled.point_diag[f] = mass;
         }
+        self.assemble_bodies(t, ws);
+    }
+
+    /// Each body's own loads; for free bodies their 6×6 mass and right-hand side in the
+    /// coupled system, and the offsets and centripetal accelerations of their points' slots.
+    fn assemble_bodies(&self, t: Real, ws: &mut Workspace) {
+        for (b, body) in self.bodies.iter().enumerate() {
+            let k = &ws.bodies[b];
+            let loads = body.body.loads(k, &self.environment, t);
+            if let Some(f) = body.free_index {
+                ws.coupled.body_diag[f] = loads.mass;
+                ws.coupled.body_x[f] = crate::math::Vec6::new(
+                    loads.force.x,
+                    loads.force.y,
+                    loads.force.z,
+                    loads.moment.x,
+                    loads.moment.y,
+                    loads.moment.z,
+                );
+            }
+            ws.body_loads[b] = loads;
+        }
+        let np = self.free_points.len();
+        for (p, slot) in self.point_slot.iter().enumerate() {
+            let (Some(s), PointKind::Body { body, offset }) = (slot, &self.points[p].kind) else {
+                continue;
+            };
+            let k = &ws.bodies[*body];
+            let rho = k.orientation * offset;
+            let w = k.angular_velocity;
+            ws.coupled.body_slots[s - np] = crate::linalg::BodySlot {
+                body: self.bodies[*body]
+                    .free_index
+                    .expect("a slot is on a free body"),
+                offset: rho,
+                bias: w.cross(&w.cross(&rho)),
+            };
+        }
     }
 
     /// Names the place of a singular block.
@@ -1008,6 +1201,17 @@ impl System {
                 return Location {
                     object: l.name.clone(),
                     node,
+                };
+            }
+        }
+        for (b, off) in self.layout.body_offset.iter().enumerate() {
+            if let Some(o) = off
+                && index >= *o
+                && index < o + crate::bodies::STATE_LEN
+            {
+                return Location {
+                    object: self.bodies[b].body.name.clone(),
+                    node: 0,
                 };
             }
         }
@@ -1238,7 +1442,7 @@ impl System {
                 };
                 if let Some(p) = end {
                     // End nodes move with their point: only free points are unknowns.
-                    if self.points[p].free_index.is_some() {
+                    if self.points[p].free_index.is_some() || self.point_slot[p].is_some() {
                         point_rows[p].add(row);
                     }
                     continue;
@@ -1257,8 +1461,27 @@ impl System {
                 }
             }
         }
+        // A point on a free body moves the body: its line ends act on the body's mass (its
+        // smallest translational mass, mass plus the smallest added mass).
+        for (p, slot) in self.point_slot.iter().enumerate() {
+            if slot.is_some()
+                && let PointKind::Body { body, .. } = self.points[p].kind
+            {
+                let b = &self.bodies[body].body;
+                point_rows[p].mass += b.mass + b.added_mass.fixed_rows::<3>(0).min().max(0.0);
+            }
+        }
+        for &b in &self.free_bodies {
+            let (lambda, what) = self.bodies[b].body.own_rate();
+            if lambda > worst {
+                worst = lambda;
+                culprit = format!("{what} of body {}", self.bodies[b].body.name);
+            }
+        }
         for (p, row) in point_rows.iter().enumerate() {
-            if self.points[p].free_index.is_some() && row.mass > 0.0 {
+            if (self.points[p].free_index.is_some() || self.point_slot[p].is_some())
+                && row.mass > 0.0
+            {
                 let (lambda, what) = row.bound();
                 if lambda > worst {
                     worst = lambda;

@@ -188,6 +188,11 @@ pub struct Modes {
 /// labels and the linearisation's degrees of freedom are node positions; `hermite` tangents
 /// and `dg` modal coefficients are not labelled yet). Call it before linearising.
 pub fn supported(system: &System) -> Result<(), ModalError> {
+    if let Some(&b) = system.free_bodies.first() {
+        return Err(ModalError::FreeBody {
+            body: system.bodies[b].body.name.clone(),
+        });
+    }
     match system
         .lines
         .iter()

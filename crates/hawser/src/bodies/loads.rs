@@ -7,7 +7,7 @@ use crate::physics::environment::Environment;
 
 /// The loads on a body and its mass matrix, in global axes, about the body origin: the body
 /// alone obeys `mass · [a_o; α] = [force; moment]`.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct BodyLoads {
     /// Resultant force [N]: weight, buoyancy, fluid inertia, drag, thrust, wind and the rigid
     /// body's centripetal term −m ω × (ω × c).

@@ -93,3 +93,41 @@ pub fn write_rate(
     dy[7..10].copy_from_slice(acceleration.as_slice());
     dy[10..13].copy_from_slice(angular_acceleration.as_slice());
 }
+
+impl crate::model::Body {
+    /// Bound on the rate |λ| [1/s] of the body's own linear dynamics and what sets it, for the
+    /// stable step: the hydrostatic heave frequency √(ρ g A_wp / (m + A₃₃)) of a floating
+    /// shape (A_wp its waterplane area upright), the linear drag rates b_i / (m + A_i) and
+    /// b_j / (I_j + A_j) (the smallest principal inertia for the rotations). Quadratic drag is
+    /// left out: its rate ρ C A |u| / (m + A) is far below the lines' at any speed a tether
+    /// reaches. Water density 1025 kg/m³, g 9.81 m/s² (an upper-end estimate).
+    pub fn own_rate(&self) -> (Real, &'static str) {
+        use crate::model::Displacement;
+        let m = self.mass;
+        let a = self.added_mass;
+        let waterplane = match self.displacement {
+            Displacement::Cylinder { radius, .. } => std::f64::consts::PI * radius * radius,
+            Displacement::Box {
+                length, breadth, ..
+            } => length * breadth,
+            _ => 0.0,
+        };
+        let inertia = self
+            .inertia
+            .symmetric_eigenvalues()
+            .min()
+            .max(Real::MIN_POSITIVE);
+        let mut best = (
+            (1025.0 * 9.81 * waterplane / (m + a[2])).sqrt(),
+            "hydrostatic heave",
+        );
+        for i in 0..6 {
+            let mass = if i < 3 { m + a[i] } else { inertia + a[i] };
+            let rate = self.linear_drag[i] / mass;
+            if rate > best.0 {
+                best = (rate, "linear drag");
+            }
+        }
+        best
+    }
+}

@@ -222,11 +222,18 @@ impl Model {
                 return bad(name("name"), "is used by another body");
             }
         }
-        if let Some(b) = self.bodies.first() {
-            return bad(
-                format!("body {}", b.name),
-                "rigid bodies are described but not yet coupled to the lines (issue 6 in progress)",
-            );
+        for p in &self.points {
+            if let PointKind::Body { body, offset } = &p.kind {
+                if *body >= self.bodies.len() {
+                    return bad(
+                        format!("point {}", p.name),
+                        "is on a body that does not exist",
+                    );
+                }
+                if !offset.iter().all(|x| x.is_finite()) {
+                    return bad(format!("point {}: offset", p.name), "must be finite");
+                }
+            }
         }
         let s = &self.settings;
         if !(s.duration >= 0.0) || !(s.output_interval > 0.0) {

@@ -34,4 +34,12 @@ pub enum PointKind {
         /// Constant external force [N] (thrust, a float's net lift, a load).
         force: Vec3,
     },
+    /// Fixed on a rigid body (a fairlead on a vessel, a bridle point on a towed body): moves
+    /// with the body; the lines' end forces act on the body at this point.
+    Body {
+        /// Index into [`crate::model::Model::bodies`].
+        body: usize,
+        /// Offset from the body origin in body axes [m].
+        offset: Vec3,
+    },
 }

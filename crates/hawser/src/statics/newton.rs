@@ -439,22 +439,29 @@ fn check_supported(system: &System) -> Result<(), StaticsError> {
 
 /// Finds the static equilibrium of the system with prescribed points at their t = 0
 /// positions, starting from `initial` (or a catenary seed when `None`). A system with `dg`
-/// lines is solved on its `hermite` twin from a catenary seed (`initial` is not used) and
-/// carried over by [`System::state_from_twin`].
+/// lines or free bodies is solved on its twin ([`System::statics_twin`]: `hermite` lines,
+/// bodies held at their initial pose) from a catenary seed (`initial` is not used) and carried
+/// over by [`System::state_from_twin`]: free bodies start at their initial pose, at rest, so
+/// give them a pose near their equilibrium.
 pub fn solve(
     system: &System,
     initial: Option<&[Real]>,
     options: &StaticOptions,
 ) -> Result<StaticSolution, StaticsError> {
-    if system.has_dg_lines() {
-        // dg lines: solve the hermite twin, then project and refine (System::state_from_twin).
+    if system.needs_statics_twin() {
+        // dg lines or free bodies: solve the twin (hermite lines, bodies held), then carry
+        // the state over (System::state_from_twin).
         let twin = system.statics_twin();
         let sol = solve(&twin, None, options)?;
         return Ok(StaticSolution {
             state: system.state_from_twin(&twin, &sol.state, true),
             iterations: sol.iterations,
             residual: sol.residual,
-            method: "hermite twin projected onto dg",
+            method: if system.has_dg_lines() {
+                "hermite twin projected onto dg"
+            } else {
+                "newton with the bodies held"
+            },
         });
     }
     check_supported(system)?;
