@@ -520,6 +520,13 @@ impl System {
     /// such systems are solved on it ([`crate::statics::solve`]) and carried over by
     /// [`System::state_from_twin`] (free bodies start at their initial pose, at rest).
     pub fn statics_twin(&self) -> System {
+        let poses: Vec<_> = self.bodies.iter().map(|b| b.initial_kinematics()).collect();
+        self.statics_twin_at(&poses)
+    }
+
+    /// [`System::statics_twin`] with the free bodies held at `poses` (one per body; entries
+    /// of prescribed bodies are not used).
+    pub fn statics_twin_at(&self, poses: &[crate::model::RigidKinematics]) -> System {
         let lines = self
             .lines
             .iter()
@@ -561,9 +568,15 @@ impl System {
         let bodies = self
             .bodies
             .iter()
-            .map(|b| {
-                let k = b.initial_kinematics();
+            .zip(poses)
+            .map(|(b, k)| {
                 let mut body = b.body.clone();
+                if b.free_index.is_none() {
+                    return SystemBody {
+                        body,
+                        free_index: None,
+                    };
+                }
                 body.kind = crate::model::BodyKind::Prescribed(crate::model::RigidMotion::Fixed {
                     position: k.position,
                     orientation: k.orientation,
@@ -587,6 +600,18 @@ impl System {
     /// projection). The free points keep the twin's equilibrium: their residual is the
     /// difference of the two discretisations' end forces.
     pub fn state_from_twin(&self, twin: &System, y_twin: &[Real], refine: bool) -> Vec<Real> {
+        let poses: Vec<_> = self.bodies.iter().map(|b| b.initial_kinematics()).collect();
+        self.state_from_twin_at(twin, y_twin, refine, &poses)
+    }
+
+    /// [`System::state_from_twin`] with the free bodies at rest at `poses`.
+    pub fn state_from_twin_at(
+        &self,
+        twin: &System,
+        y_twin: &[Real],
+        refine: bool,
+        poses: &[crate::model::RigidKinematics],
+    ) -> Vec<Real> {
         let mut y = vec![0.0; self.layout.len];
         let mut tws = twin.workspace();
         twin.point_kinematics(0.0, y_twin, &mut tws);
@@ -598,7 +623,8 @@ impl System {
         }
         for (b, off) in self.layout.body_offset.iter().enumerate() {
             if let Some(o) = off {
-                let k = self.bodies[b].initial_kinematics();
+                let k =
+                    crate::model::RigidKinematics::at_rest(poses[b].position, poses[b].orientation);
                 crate::bodies::write_state(&k, &mut y[*o..o + crate::bodies::STATE_LEN]);
             }
         }

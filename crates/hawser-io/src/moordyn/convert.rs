@@ -746,6 +746,7 @@ fn convert_points(
             added_mass_coefficient: f(ca, &t[8]),
             force: force.filter(|_| free),
             motion,
+            body: None,
         });
     }
     (out, coupled)

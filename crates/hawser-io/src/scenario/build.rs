@@ -168,7 +168,12 @@ pub fn build_scenario(
     };
     let environment = build_environment(&mut b, scenario.environment.as_ref());
     let (line_types, type_index) = build_line_types(&mut b, &scenario.line_types);
-    let (points, point_index) = build_points(&mut b, &scenario.points, &environment);
+    let body_names: Vec<String> = scenario
+        .bodies
+        .iter()
+        .map(|s| s.name.get_ref().clone())
+        .collect();
+    let (points, point_index) = build_points(&mut b, &scenario.points, &environment, &body_names);
     let lines = build_lines(&mut b, &scenario.lines, &type_index, &point_index);
     check_free_points_held(&mut b, &scenario.points, &lines, &points);
     if scenario.lines.is_empty() {
@@ -1495,6 +1500,7 @@ fn build_points(
     b: &mut Builder,
     specs: &[PointSpec],
     env: &Environment,
+    body_names: &[String],
 ) -> (Vec<Point>, HashMap<String, usize>) {
     let mut out = Vec::new();
     let mut index = HashMap::new();
@@ -1529,7 +1535,19 @@ fn build_points(
             PointKindSpec::Fixed => "a fixed point",
             PointKindSpec::Free => "a free point",
             PointKindSpec::Prescribed => "a prescribed point",
+            PointKindSpec::Body => "a point on a body",
         };
+        if kind != PointKindSpec::Body
+            && let Some(body) = &p.body
+        {
+            b.not_for(
+                true,
+                Some(body.span()),
+                &k("body"),
+                kind_name,
+                "points on bodies (`type = \"body\"`)",
+            );
+        }
         let position = p.position.as_ref().map(|v| b.vec3(v, &k("position")));
         if kind != PointKindSpec::Free {
             for (present, span, key) in [
@@ -1611,6 +1629,48 @@ fn build_points(
                     .map(|f| b.vec3(f, &k("force")))
                     .unwrap_or_else(Vec3::zeros),
             },
+            PointKindSpec::Body => {
+                let body = match &p.body {
+                    Some(name) => match body_names.iter().position(|n| n == name.get_ref()) {
+                        Some(i) => i,
+                        None => {
+                            let hint = match closest(
+                                name.get_ref(),
+                                body_names.iter().map(String::as_str),
+                            ) {
+                                Some(c) => format!("did you mean `{c}`?"),
+                                None => "define a [[bodies]] table with that name".to_string(),
+                            };
+                            let d = b
+                                .diag(
+                                    Some(name.span()),
+                                    &k("body"),
+                                    format!("body `{}` does not exist", name.get_ref()),
+                                )
+                                .expected("the name of a [[bodies]] table")
+                                .hint(hint);
+                            b.push(d);
+                            0
+                        }
+                    },
+                    None => {
+                        let d = b
+                            .diag(
+                                Some(p.kind.span()),
+                                &k("body"),
+                                format!("point `{name}` is on a body but names none"),
+                            )
+                            .expected("`body = \"NAME\"`, a [[bodies]] name")
+                            .hint("and `position` = the offset from the body origin in body axes");
+                        b.push(d);
+                        0
+                    }
+                };
+                PointKind::Body {
+                    body,
+                    offset: position.unwrap_or_else(Vec3::zeros),
+                }
+            }
             PointKindSpec::Prescribed => match &p.motion {
                 Some(m) => PointKind::Prescribed(build_motion(b, m, position, &k("motion"))),
                 None => {
@@ -1649,6 +1709,7 @@ fn build_points(
             }
         };
         if env.depth.is_finite()
+            && kind != PointKindSpec::Body
             && pos.z < -env.depth - 1e-9
             && let Some(ps) = &p.position
         {
@@ -2530,6 +2591,11 @@ fn build_channels(
             }
         }
     }
+    for body in 0..model.bodies.len() {
+        for dof in 0..6 {
+            out.push(OutputChannel::new(Channel::BodyMotion { body, dof }));
+        }
+    }
     let Some(sim) = spec else { return out };
     for (ci, c) in sim.channels.iter().enumerate() {
         let (label, spec) = match c.get_ref().split_once('=') {
@@ -2573,6 +2639,13 @@ fn build_channels(
                     )
                 } else if model.point_index(first).is_some() {
                     format!("point `{first}` has channels {first}.x|y|z|vx|vy|vz|fx|fy|fz")
+                } else if model.bodies.iter().any(|b| b.name == first) {
+                    format!(
+                        "body `{first}` has channels {first}.{}, .{} and .{}",
+                        hawser::analysis::BODY_MOTION.join("|"),
+                        hawser::analysis::BODY_VELOCITY.join("|"),
+                        hawser::analysis::BODY_LINE_LOAD.join("|")
+                    )
                 } else {
                     let names = model.lines.iter().map(|l| l.name.as_str());
                     let names = names.chain(model.points.iter().map(|p| p.name.as_str()));
@@ -2583,7 +2656,7 @@ fn build_channels(
                 };
                 let d = b
                     .diag(Some(c.span()), &format!("simulation.channels[{ci}]"), msg)
-                    .expected("LINE.end_a|end_b.tension|node_force|fx|fy|fz, LINE.nodeK.tension|x|y|z|vx|vy|vz, LINE.elementK.strain, POINT.x|y|z|vx|vy|vz|fx|fy|fz")
+                    .expected("LINE.end_a|end_b.tension|node_force|fx|fy|fz, LINE.nodeK.tension|x|y|z|vx|vy|vz, LINE.elementK.strain, POINT.x|y|z|vx|vy|vz|fx|fy|fz, BODY.x|y|z|roll|pitch|yaw|vx|…|wz|fx|…|mz")
                     .hint(hint);
                 b.push(d);
             }
@@ -2700,5 +2773,20 @@ pub fn parse_channel(name: &str, model: &Model) -> Result<Channel, String> {
         }
         return Err(format!("unknown channel `{name}`"));
     }
-    Err(format!("channel `{name}` names no line or point"))
+    if let Some(bi) = model.bodies.iter().position(|b| b.name == parts[0]) {
+        if let [_, q] = parts.as_slice() {
+            let find = |names: &[&str; 6]| names.iter().position(|n| n == q);
+            if let Some(dof) = find(&hawser::analysis::BODY_MOTION) {
+                return Ok(Channel::BodyMotion { body: bi, dof });
+            }
+            if let Some(dof) = find(&hawser::analysis::BODY_VELOCITY) {
+                return Ok(Channel::BodyVelocity { body: bi, dof });
+            }
+            if let Some(dof) = find(&hawser::analysis::BODY_LINE_LOAD) {
+                return Ok(Channel::BodyLineLoad { body: bi, dof });
+            }
+        }
+        return Err(format!("unknown channel `{name}`"));
+    }
+    Err(format!("channel `{name}` names no line, point or body"))
 }

@@ -390,6 +390,8 @@ pub enum PointKindSpec {
     Free,
     /// Prescribed motion (fairlead).
     Prescribed,
+    /// Fixed on a rigid body (`body`), at `position` in body axes from the body origin.
+    Body,
 }
 
 /// `[[points]]`.
@@ -399,7 +401,7 @@ pub struct PointSpec {
     /// Name, referenced by lines and channels.
     #[schemars(with = "String")]
     pub name: Spanned<String>,
-    /// `"fixed"`, `"free"` or `"prescribed"`.
+    /// `"fixed"`, `"free"`, `"prescribed"` or `"body"`.
     #[serde(rename = "type")]
     #[schemars(with = "PointKindSpec")]
     pub kind: Spanned<PointKindSpec>,
@@ -430,6 +432,11 @@ pub struct PointSpec {
     /// Prescribed motion (prescribed points).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub motion: Option<MotionSpec>,
+    /// The body the point is fixed on (`type = "body"`); its `position` is then the offset
+    /// from the body origin in body axes [m].
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<String>")]
+    pub body: Option<Spanned<String>>,
 }
 
 /// Kind of prescribed motion.

@@ -114,7 +114,38 @@ pub enum Channel {
         /// Axis.
         axis: usize,
     },
+    /// Body motion: position of its origin [m] (dof 0–2) or its roll, pitch, yaw [deg]
+    /// (dof 3–5; R = R_z(yaw) R_y(pitch) R_x(roll)).
+    BodyMotion {
+        /// Body index.
+        body: usize,
+        /// 0–5: x, y, z, roll, pitch, yaw.
+        dof: usize,
+    },
+    /// Body velocity: of its origin [m/s] (dof 0–2) or its angular velocity in global axes
+    /// [rad/s] (dof 3–5).
+    BodyVelocity {
+        /// Body index.
+        body: usize,
+        /// 0–5: vx, vy, vz, wx, wy, wz.
+        dof: usize,
+    },
+    /// The net load the lines put on a body through the points on it: force [N] (dof 0–2) and
+    /// moment about the body origin [N·m] (dof 3–5), global axes.
+    BodyLineLoad {
+        /// Body index.
+        body: usize,
+        /// 0–5: fx, fy, fz, mx, my, mz.
+        dof: usize,
+    },
 }
+
+/// Channel suffixes of a body's motion, velocity and line load.
+pub const BODY_MOTION: [&str; 6] = ["x", "y", "z", "roll", "pitch", "yaw"];
+/// See [`BODY_MOTION`].
+pub const BODY_VELOCITY: [&str; 6] = ["vx", "vy", "vz", "wx", "wy", "wz"];
+/// See [`BODY_MOTION`].
+pub const BODY_LINE_LOAD: [&str; 6] = ["fx", "fy", "fz", "mx", "my", "mz"];
 
 const AXES: [&str; 3] = ["x", "y", "z"];
 
@@ -165,6 +196,15 @@ impl Channel {
             Channel::PointForce { point, axis } => {
                 format!("{}.f{}", system.points[point].name, AXES[axis])
             }
+            Channel::BodyMotion { body, dof } => {
+                format!("{}.{}", system.bodies[body].body.name, BODY_MOTION[dof])
+            }
+            Channel::BodyVelocity { body, dof } => {
+                format!("{}.{}", system.bodies[body].body.name, BODY_VELOCITY[dof])
+            }
+            Channel::BodyLineLoad { body, dof } => {
+                format!("{}.{}", system.bodies[body].body.name, BODY_LINE_LOAD[dof])
+            }
         }
     }
 
@@ -182,6 +222,9 @@ impl Channel {
             Channel::NodePosition { .. } | Channel::PointPosition { .. } => "m",
             Channel::NodeVelocity { .. } | Channel::PointVelocity { .. } => "m/s",
             Channel::ElementStrain { .. } => "-",
+            Channel::BodyMotion { dof, .. } => ["m", "deg"][dof / 3],
+            Channel::BodyVelocity { dof, .. } => ["m/s", "rad/s"][dof / 3],
+            Channel::BodyLineLoad { dof, .. } => ["N", "N·m"][dof / 3],
         }
     }
 
@@ -229,6 +272,41 @@ impl Channel {
                     f
                 })
                 .sum(),
+            Channel::BodyMotion { body, dof } => {
+                let k = &ws.bodies[body];
+                if dof < 3 {
+                    k.position[dof]
+                } else {
+                    let (roll, pitch, yaw) = k.orientation.euler_angles();
+                    [roll, pitch, yaw][dof - 3].to_degrees()
+                }
+            }
+            Channel::BodyVelocity { body, dof } => {
+                let k = &ws.bodies[body];
+                if dof < 3 {
+                    k.velocity[dof]
+                } else {
+                    k.angular_velocity[dof - 3]
+                }
+            }
+            Channel::BodyLineLoad { body, dof } => {
+                let origin = ws.bodies[body].position;
+                let mut load = [0.0; 6];
+                for (li, l) in system.lines.iter().enumerate() {
+                    for (end_b, p) in [(false, l.end_a), (true, l.end_b)] {
+                        if matches!(system.points[p].kind, crate::model::PointKind::Body { body: b, .. } if b == body)
+                        {
+                            let f = system.end_force(ws, li, end_b);
+                            let m = (ws.points[p].position - origin).cross(&f);
+                            for k in 0..3 {
+                                load[k] += f[k];
+                                load[k + 3] += m[k];
+                            }
+                        }
+                    }
+                }
+                load[dof]
+            }
         }
     }
 
@@ -249,6 +327,9 @@ impl Channel {
             Channel::PointPosition { point, .. }
             | Channel::PointVelocity { point, .. }
             | Channel::PointForce { point, .. } => point < system.points.len(),
+            Channel::BodyMotion { body, dof }
+            | Channel::BodyVelocity { body, dof }
+            | Channel::BodyLineLoad { body, dof } => body < system.bodies.len() && dof < 6,
         }
     }
 }

@@ -2,8 +2,10 @@
 //! loads: Newton with line search and load continuation from a catenary seed, with dynamic
 //! relaxation as fallback.
 
+mod bodies;
 pub mod catenary;
 mod dynamic_relaxation;
 mod newton;
 
+pub use bodies::solve_with_bodies;
 pub use newton::{StaticOptions, StaticSolution, catenary_seed, evaluate, residual, solve};

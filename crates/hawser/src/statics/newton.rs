@@ -448,6 +448,9 @@ pub fn solve(
     initial: Option<&[Real]>,
     options: &StaticOptions,
 ) -> Result<StaticSolution, StaticsError> {
+    if !system.free_bodies.is_empty() {
+        return super::bodies::solve_with_bodies(system, options);
+    }
     if system.needs_statics_twin() {
         // dg lines or free bodies: solve the twin (hermite lines, bodies held), then carry
         // the state over (System::state_from_twin).
