@@ -464,3 +464,20 @@ fn no_panic_on_odd_values() {
         assert!(scenario::parse(Path::new(FILE), &text).is_err(), "{to}");
     }
 }
+
+/// The `[[bodies]]` example of docs/scenario.md is valid: with the base's line it reaches only
+/// the coupling refusal.
+#[test]
+fn documented_example_is_valid() {
+    let doc = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../../docs/scenario.md"),
+    )
+    .expect("docs/scenario.md");
+    let start = doc.find("# A towed body").expect("the bodies example");
+    let example = &doc[start..start + doc[start..].find("```").unwrap()];
+    let lines_only = &BASE[..BASE.find("[[bodies]]").unwrap()];
+    let text = format!("{lines_only}\n{example}");
+    let e = scenario::parse(Path::new(FILE), &text).expect_err("not coupled yet");
+    assert_eq!(e.diagnostics.len(), 1, "{e}");
+    assert!(e.to_string().contains("not yet coupled"), "{e}");
+}
