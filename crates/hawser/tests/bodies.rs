@@ -745,7 +745,8 @@ fn validate_checks_the_physical_ranges_of_bodies() {
         model.validate().unwrap_err().to_string()
     };
     assert!(message(good.clone()).contains("not yet coupled"));
-    let cases: Vec<(&str, Box<dyn Fn(&mut Body)>)> = vec![
+    type Spoil = Box<dyn Fn(&mut Body)>;
+    let cases: Vec<(&str, Spoil)> = vec![
         ("mass", Box::new(|b| b.mass = 0.0)),
         ("mass", Box::new(|b| b.mass = Real::NAN)),
         ("inertia", Box::new(|b| b.inertia[(0, 1)] = 5.0)),
