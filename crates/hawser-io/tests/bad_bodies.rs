@@ -2,10 +2,6 @@
 //! key, the value, the expected unit or range and a hint, never a panic. Each test mutates a
 //! small valid scenario (a line and a towed body) and snapshots the rendered error.
 //!
-//! Bodies are described and checked but not yet coupled to the lines, so the model's final
-//! check refuses the valid scenario with one diagnostic saying so; the tests below fail
-//! earlier, at the key they spoil.
-
 mod common;
 use common::*;
 use hawser_io::scenario;
@@ -63,16 +59,20 @@ fn mutate(from: &str, to: &str) -> String {
     BASE.replacen(from, to, 1)
 }
 
-/// The valid base reaches the model's check, which refuses bodies as not yet coupled: one
-/// diagnostic, and no other.
+/// The valid base builds, free or fixed, with the body's values.
 #[test]
-fn valid_bodies_reach_only_the_coupling_refusal() {
-    let e = scenario::parse(Path::new(FILE), BASE).expect_err("bodies are not coupled yet");
-    assert_eq!(e.diagnostics.len(), 1, "{e}");
-    assert!(e.to_string().contains("not yet coupled"), "{e}");
+fn valid_bodies_build() {
+    let s = scenario::parse(Path::new(FILE), BASE).expect("the base scenario is valid");
+    let b = &s.model.bodies[0];
+    assert_eq!((b.name.as_str(), b.mass), ("towfish", 9500.0));
+    assert_eq!(b.kind, hawser::model::BodyKind::Free);
+    assert!((b.quadratic_drag[2] - 7.2).abs() < 1e-12);
     let fixed = mutate("type = \"free\"", "type = \"fixed\"");
-    let e = scenario::parse(Path::new(FILE), &fixed).expect_err("not coupled yet");
-    assert_eq!(e.diagnostics.len(), 1, "{e}");
+    let s = scenario::parse(Path::new(FILE), &fixed).expect("valid");
+    assert!(matches!(
+        s.model.bodies[0].kind,
+        hawser::model::BodyKind::Prescribed(_)
+    ));
 }
 
 #[test]
@@ -465,8 +465,7 @@ fn no_panic_on_odd_values() {
     }
 }
 
-/// The `[[bodies]]` example of docs/scenario.md is valid: with the base's line it reaches only
-/// the coupling refusal.
+/// The `[[bodies]]` example of docs/scenario.md is valid.
 #[test]
 fn documented_example_is_valid() {
     let doc = std::fs::read_to_string(
@@ -477,7 +476,6 @@ fn documented_example_is_valid() {
     let example = &doc[start..start + doc[start..].find("```").unwrap()];
     let lines_only = &BASE[..BASE.find("[[bodies]]").unwrap()];
     let text = format!("{lines_only}\n{example}");
-    let e = scenario::parse(Path::new(FILE), &text).expect_err("not coupled yet");
-    assert_eq!(e.diagnostics.len(), 1, "{e}");
-    assert!(e.to_string().contains("not yet coupled"), "{e}");
+    let s = scenario::parse(Path::new(FILE), &text).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(s.model.bodies.len(), 2);
 }
