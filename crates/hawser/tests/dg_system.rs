@@ -6,6 +6,7 @@ use hawser::analysis::Channel;
 use hawser::math::{Real, Vec3};
 use hawser::model::*;
 use hawser::physics::hydrodynamics::DragModel;
+use hawser::physics::material::AxialDamping;
 use hawser::simulation::{Observer, Simulation};
 use hawser::statics::{StaticOptions, solve};
 use hawser::system::{System, Workspace};
