@@ -298,6 +298,7 @@ fn toml_error(file: &Path, source: &str, e: &toml::de::Error) -> Diagnostic {
     let syntax = !(message.starts_with("unknown field")
         || message.starts_with("missing field")
         || message.starts_with("invalid type")
+        || message.starts_with("invalid length")
         || message.contains("untagged enum")
         || message.starts_with("unknown variant"));
     if syntax {
@@ -394,6 +395,8 @@ fn toml_error(file: &Path, source: &str, e: &toml::de::Error) -> Diagnostic {
                 ),
                 Err(_) => format!("write a whole number, e.g. {}", write("10")),
             }
+        } else if message.starts_with("invalid length") {
+            format!("write {wanted} in brackets; docs/scenario.md says what each entry is")
         } else if wanted.contains("auto") {
             "write `time_step = \"auto\"` or a step in seconds, e.g. `time_step = 0.001`"
                 .to_string()
@@ -650,6 +653,8 @@ fn schema_node(path: &[Step]) -> Option<(serde_json::Value, Option<String>)> {
         };
     }
     let doc = doc.map(|d| {
+        // Doc comments wrapped over several source lines come with their line breaks.
+        let d = d.replace('\n', " ");
         let d = d.trim_end_matches('.');
         let mut chars = d.chars();
         match chars.next() {
@@ -676,7 +681,8 @@ fn variant_docs(path: &[Step]) -> Vec<(String, String)> {
         .flatten()
         .filter_map(|v| {
             let value = v.get("const")?.as_str()?;
-            let doc = v.get("description")?.as_str()?.trim_end_matches('.');
+            let doc = v.get("description")?.as_str()?.replace('\n', " ");
+            let doc = doc.trim_end_matches('.');
             let mut chars = doc.chars();
             let doc = chars.next()?.to_lowercase().chain(chars).collect();
             Some((value.to_string(), doc))

@@ -56,7 +56,7 @@ pub struct Scenario {
     /// Lines between points.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub lines: Vec<LineSpec>,
-    /// Rigid bodies (described and checked; not yet coupled to the lines).
+    /// Rigid bodies.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub bodies: Vec<BodySpec>,
 }

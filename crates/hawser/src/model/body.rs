@@ -212,7 +212,7 @@ impl Body {
             ));
         }
         let q = &self.orientation;
-        if !finite3(&self.position) || !(q.w.is_finite() && finite3(&q.imag())) {
+        if !(finite3(&self.position) && q.w.is_finite() && finite3(&q.imag())) {
             return Err(("position", "pose must be finite".into()));
         }
         if !finite3(&self.centre_of_gravity) {

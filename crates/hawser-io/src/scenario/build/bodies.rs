@@ -393,6 +393,17 @@ fn build_thrust(b: &mut Builder, t: &ThrustSpec, key: &str) -> Thrust {
             }
         }
         None => {
+            if t.force.is_none() && t.moment.is_none() {
+                let d = b
+                    .diag(
+                        None,
+                        key,
+                        "`thrust` gives neither a force, a moment nor a table",
+                    )
+                    .expected("`force` [N] and/or `moment` [N·m] in body axes, or a `table`")
+                    .hint("e.g. `thrust = { force = [1.0e4, 0.0, 0.0] }`, or remove `thrust`");
+                b.push(d);
+            }
             let force = t.force.as_ref().map(|f| b.vec3(f, &k("force")));
             let moment = t.moment.as_ref().map(|m| b.vec3(m, &k("moment")));
             Thrust::Constant {

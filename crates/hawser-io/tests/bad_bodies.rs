@@ -1,0 +1,481 @@
+//! Bad `[[bodies]]` input: every class gets a diagnostic naming the file, line and column, the
+//! key, the value, the expected unit or range and a hint, never a panic. Each test mutates a
+//! small valid scenario (a line and a towed body) and snapshots the rendered error.
+//!
+mod common;
+use common::*;
+use hawser_io::scenario;
+use std::path::Path;
+
+const BASE: &str = r#"# Base scenario for the bad-body tests.
+
+[[line_types]]
+name = "cable"
+diameter = 0.03
+mass_per_length = 2.0
+axial_stiffness = 5.0e7
+normal_drag = 1.2
+tangential_drag = 0.01
+
+[[points]]
+name = "ship"
+type = "fixed"
+position = [0.0, 0.0, 0.0]
+
+[[points]]
+name = "towpoint"
+type = "fixed"
+position = [-100.0, 0.0, -50.0]
+
+[[lines]]
+name = "tow"
+end_a = "ship"
+end_b = "towpoint"
+type = "cable"
+length = 115.0
+elements = 10
+
+[[bodies]]
+name = "towfish"
+type = "free"
+position = [-100.0, 0.0, -50.0]
+orientation = [0.0, 0.0, 180.0]
+mass = 9500.0
+centre_of_gravity = [0.0, 0.0, -0.2]
+inertia = [4000.0, 9000.0, 9500.0]
+displacement = { type = "cylinder", radius = 0.6, height = 4.0 }
+centre_of_buoyancy = [0.0, 0.0, 0.1]
+added_mass = [600.0, 2000.0, 2500.0, 300.0, 3000.0, 2800.0]
+linear_drag = [0.0, 0.0, 100.0, 0.0, 0.0, 0.0]
+drag_coefficients = [0.8, 1.2, 1.2]
+drag_areas = [1.5, 4.0, 6.0]
+thrust = { force = [1.0e4, 0.0, 0.0] }
+wind = { velocity = [15.0, 0.0, 0.0], drag_area = 20.0 }
+"#;
+
+/// `BASE` with the first occurrence of `from` replaced by `to` (which must exist).
+fn mutate(from: &str, to: &str) -> String {
+    assert!(BASE.contains(from), "the base scenario has no `{from}`");
+    BASE.replacen(from, to, 1)
+}
+
+/// The valid base builds, free or fixed, with the body's values.
+#[test]
+fn valid_bodies_build() {
+    let s = scenario::parse(Path::new(FILE), BASE).expect("the base scenario is valid");
+    let b = &s.model.bodies[0];
+    assert_eq!((b.name.as_str(), b.mass), ("towfish", 9500.0));
+    assert_eq!(b.kind, hawser::model::BodyKind::Free);
+    assert!((b.quadratic_drag[2] - 7.2).abs() < 1e-12);
+    let fixed = mutate("type = \"free\"", "type = \"fixed\"");
+    let s = scenario::parse(Path::new(FILE), &fixed).expect("valid");
+    assert!(matches!(
+        s.model.bodies[0].kind,
+        hawser::model::BodyKind::Prescribed(_)
+    ));
+}
+
+#[test]
+fn missing_mass() {
+    let text = mutate("mass = 9500.0\n", "");
+    let msg = error(&text);
+    assert_located(
+        &msg,
+        line_of(&text, "[[bodies]]"),
+        "bodies[0].mass",
+        true,
+        true,
+    );
+    insta::assert_snapshot!(msg);
+}
+
+#[test]
+fn zero_mass() {
+    let text = mutate("mass = 9500.0", "mass = 0.0");
+    let msg = error(&text);
+    assert_located(
+        &msg,
+        line_of(&text, "mass = 0.0"),
+        "bodies[0].mass",
+        true,
+        true,
+    );
+    assert!(msg.contains("kg, > 0"), "{msg}");
+    insta::assert_snapshot!(msg);
+}
+
+#[test]
+fn mass_with_a_unit() {
+    let text = mutate("mass = 9500.0", "mass = \"9500 kg\"");
+    let msg = error(&text);
+    assert_located(
+        &msg,
+        line_of(&text, "9500 kg"),
+        "bodies[0].mass",
+        true,
+        true,
+    );
+    assert!(msg.contains("mass = 9500"), "{msg}");
+    insta::assert_snapshot!(msg);
+}
+
+#[test]
+fn negative_principal_inertia() {
+    let text = mutate("[4000.0, 9000.0, 9500.0]", "[4000.0, -9000.0, 9500.0]");
+    let msg = error(&text);
+    assert_located(
+        &msg,
+        line_of(&text, "inertia ="),
+        "bodies[0].inertia",
+        true,
+        true,
+    );
+    assert!(msg.contains("principal moment ≤ 0"), "{msg}");
+    insta::assert_snapshot!(msg);
+}
+
+#[test]
+fn asymmetric_inertia_tensor() {
+    let text = mutate(
+        "[4000.0, 9000.0, 9500.0]",
+        "[[4000.0, 10.0, 0.0], [0.0, 9000.0, 0.0], [0.0, 0.0, 9500.0]]",
+    );
+    let msg = error(&text);
+    assert_located(
+        &msg,
+        line_of(&text, "inertia ="),
+        "bodies[0].inertia",
+        true,
+        true,
+    );
+    assert!(msg.contains("not symmetric"), "{msg}");
+    insta::assert_snapshot!(msg);
+}
+
+#[test]
+fn inertia_of_the_wrong_shape() {
+    let text = mutate("[4000.0, 9000.0, 9500.0]", "[4000.0, 9000.0]");
+    let msg = error(&text);
+    assert_located(
+        &msg,
+        line_of(&text, "inertia ="),
+        "bodies[0].inertia",
+        true,
+        true,
+    );
+    assert!(msg.contains("[Ixx, Iyy, Izz] or a 3×3 matrix"), "{msg}");
+    insta::assert_snapshot!(msg);
+}
+
+#[test]
+fn unknown_key() {
+    let text = mutate("centre_of_gravity", "centre_of_gravty");
+    let msg = error(&text);
+    assert_located(
+        &msg,
+        line_of(&text, "centre_of_gravty"),
+        "bodies[0].centre_of_gravty",
+        true,
+        true,
+    );
+    assert!(msg.contains("did you mean `centre_of_gravity`"), "{msg}");
+    insta::assert_snapshot!(msg);
+}
+
+#[test]
+fn motion_is_not_a_key_yet() {
+    let text = mutate(
+        "type = \"free\"",
+        "type = \"free\"\nmotion = { type = \"fixed\" }",
+    );
+    let msg = error(&text);
+    assert_located(
+        &msg,
+        line_of(&text, "motion"),
+        "bodies[0].motion",
+        true,
+        true,
+    );
+    insta::assert_snapshot!(msg);
+}
+
+#[test]
+fn unknown_displacement_type() {
+    let text = mutate("type = \"cylinder\"", "type = \"sphere\"");
+    let msg = error(&text);
+    assert_located(
+        &msg,
+        line_of(&text, "sphere"),
+        "bodies[0].displacement.type",
+        true,
+        true,
+    );
+    insta::assert_snapshot!(msg);
+}
+
+#[test]
+fn cylinder_without_radius() {
+    let text = mutate("radius = 0.6, ", "");
+    let msg = error(&text);
+    assert_located(
+        &msg,
+        line_of(&text, "displacement ="),
+        "bodies[0].displacement.radius",
+        true,
+        true,
+    );
+    insta::assert_snapshot!(msg);
+}
+
+#[test]
+fn volume_given_to_a_box() {
+    let text = mutate(
+        "{ type = \"cylinder\", radius = 0.6, height = 4.0 }",
+        "{ type = \"box\", length = 4.0, breadth = 1.0, height = 1.0, volume = 4.0 }",
+    );
+    let msg = error(&text);
+    assert_located(
+        &msg,
+        line_of(&text, "displacement ="),
+        "bodies[0].displacement.volume",
+        true,
+        false,
+    );
+    assert!(msg.contains("`length`, `breadth`, `height`"), "{msg}");
+    insta::assert_snapshot!(msg);
+}
+
+#[test]
+fn negative_volume() {
+    let text = mutate(
+        "{ type = \"cylinder\", radius = 0.6, height = 4.0 }",
+        "{ type = \"submerged\", volume = -4.0 }",
+    );
+    let msg = error(&text);
+    assert_located(
+        &msg,
+        line_of(&text, "displacement ="),
+        "bodies[0].displacement.volume",
+        true,
+        true,
+    );
+    assert!(
+        msg.contains("= value: -4.0") && msg.contains("m³, ≥ 0"),
+        "{msg}"
+    );
+    insta::assert_snapshot!(msg);
+}
+
+#[test]
+fn negative_added_mass() {
+    let text = mutate("300.0, 3000.0", "300.0, -3000.0");
+    let msg = error(&text);
+    assert_located(
+        &msg,
+        line_of(&text, "added_mass"),
+        "bodies[0].added_mass",
+        true,
+        true,
+    );
+    assert!(msg.contains("pitch"), "{msg}");
+    insta::assert_snapshot!(msg);
+}
+
+#[test]
+fn five_added_masses() {
+    let text = mutate(", 2800.0]", "]");
+    let msg = error(&text);
+    assert_located(
+        &msg,
+        line_of(&text, "added_mass"),
+        "bodies[0].added_mass",
+        true,
+        true,
+    );
+    insta::assert_snapshot!(msg);
+}
+
+#[test]
+fn drag_coefficients_without_areas() {
+    let text = mutate("drag_areas = [1.5, 4.0, 6.0]\n", "");
+    let msg = error(&text);
+    assert_located(
+        &msg,
+        line_of(&text, "drag_coefficients"),
+        "bodies[0].drag_areas",
+        true,
+        true,
+    );
+    insta::assert_snapshot!(msg);
+}
+
+#[test]
+fn both_forms_of_quadratic_drag() {
+    let text = mutate(
+        "drag_areas = [1.5, 4.0, 6.0]\n",
+        "drag_areas = [1.5, 4.0, 6.0]\nquadratic_drag = [1.0, 1.0, 1.0, 0.0, 0.0, 0.0]\n",
+    );
+    let msg = error(&text);
+    assert_located(
+        &msg,
+        line_of(&text, "quadratic_drag"),
+        "bodies[0].quadratic_drag",
+        true,
+        false,
+    );
+    insta::assert_snapshot!(msg);
+}
+
+#[test]
+fn thrust_schedule_not_increasing() {
+    let text = mutate(
+        "thrust = { force = [1.0e4, 0.0, 0.0] }",
+        "thrust = { table = [[0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0], [0.0, 1e4, 0.0, 0.0, 0.0, 0.0, 0.0]] }",
+    );
+    let msg = error(&text);
+    assert_located(
+        &msg,
+        line_of(&text, "thrust ="),
+        "bodies[0].thrust.table",
+        true,
+        true,
+    );
+    insta::assert_snapshot!(msg);
+}
+
+#[test]
+fn thrust_force_and_table() {
+    let text = mutate(
+        "thrust = { force = [1.0e4, 0.0, 0.0] }",
+        "thrust = { force = [1.0e4, 0.0, 0.0], table = [[0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]] }",
+    );
+    let msg = error(&text);
+    assert_located(
+        &msg,
+        line_of(&text, "thrust ="),
+        "bodies[0].thrust.force",
+        true,
+        false,
+    );
+    insta::assert_snapshot!(msg);
+}
+
+#[test]
+fn negative_wind_drag_area() {
+    let text = mutate("drag_area = 20.0", "drag_area = -20.0");
+    let msg = error(&text);
+    assert_located(
+        &msg,
+        line_of(&text, "wind ="),
+        "bodies[0].wind.drag_area",
+        true,
+        true,
+    );
+    insta::assert_snapshot!(msg);
+}
+
+#[test]
+fn missing_position() {
+    let text = mutate(
+        "position = [-100.0, 0.0, -50.0]\norientation",
+        "orientation",
+    );
+    let msg = error(&text);
+    assert_located(
+        &msg,
+        line_of(&text, "name = \"towfish\""),
+        "bodies[0].position",
+        true,
+        true,
+    );
+    insta::assert_snapshot!(msg);
+}
+
+#[test]
+fn body_named_like_a_line() {
+    let text = mutate("name = \"towfish\"", "name = \"tow\"");
+    let msg = error(&text);
+    assert_located(
+        &msg,
+        line_of(&text, "name = \"tow\"\ntype = \"free\""),
+        "bodies[0].name",
+        true,
+        false,
+    );
+    assert!(msg.contains("has the name of a line"), "{msg}");
+    insta::assert_snapshot!(msg);
+}
+
+#[test]
+fn duplicate_body_name() {
+    let text = format!(
+        "{BASE}\n[[bodies]]\nname = \"towfish\"\ntype = \"fixed\"\nposition = [0.0, 0.0, -5.0]\nmass = 1.0\ninertia = [1.0, 1.0, 1.0]\n"
+    );
+    let msg = error(&text);
+    let second = text.rfind("name = \"towfish\"").unwrap();
+    let line = text[..second].matches('\n').count() + 1;
+    assert_located(&msg, line, "bodies[1].name", true, false);
+    assert!(msg.contains("first defined on line"), "{msg}");
+    insta::assert_snapshot!(msg);
+}
+
+/// Range errors in one body are all reported together, each at its own line.
+#[test]
+fn several_body_errors_at_once() {
+    let text = mutate("mass = 9500.0", "mass = -1.0")
+        .replacen("[4000.0, 9000.0, 9500.0]", "[0.0, 9000.0, 9500.0]", 1)
+        .replacen("drag_area = 20.0", "drag_area = -1.0", 1);
+    let msg = error(&text);
+    assert!(msg.contains("3 errors in scenario.toml"), "{msg}");
+    for key in [
+        "bodies[0].mass",
+        "bodies[0].inertia",
+        "bodies[0].wind.drag_area",
+    ] {
+        assert!(msg.contains(&format!("= key: {key}\n")), "{key}: {msg}");
+    }
+}
+
+/// No mutation of a body's values panics the reader.
+#[test]
+fn no_panic_on_odd_values() {
+    for (from, to) in [
+        ("mass = 9500.0", "mass = nan"),
+        ("mass = 9500.0", "mass = inf"),
+        ("[4000.0, 9000.0, 9500.0]", "[nan, 1.0, 1.0]"),
+        (
+            "[4000.0, 9000.0, 9500.0]",
+            "[[0.0, 0.0, 0.0], [0.0, 0.0, 0.0], [0.0, 0.0, 0.0]]",
+        ),
+        ("radius = 0.6", "radius = -inf"),
+        (
+            "orientation = [0.0, 0.0, 180.0]",
+            "orientation = [nan, 0.0, 0.0]",
+        ),
+        (
+            "thrust = { force = [1.0e4, 0.0, 0.0] }",
+            "thrust = { table = [] }",
+        ),
+        ("thrust = { force = [1.0e4, 0.0, 0.0] }", "thrust = { }"),
+        ("velocity = [15.0, 0.0, 0.0]", "velocity = [inf, 0.0, 0.0]"),
+    ] {
+        let text = mutate(from, to);
+        assert!(!panics(&text), "{to}");
+        assert!(scenario::parse(Path::new(FILE), &text).is_err(), "{to}");
+    }
+}
+
+/// The `[[bodies]]` example of docs/scenario.md is valid.
+#[test]
+fn documented_example_is_valid() {
+    let doc = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../../docs/scenario.md"),
+    )
+    .expect("docs/scenario.md");
+    let start = doc.find("# A towed body").expect("the bodies example");
+    let example = &doc[start..start + doc[start..].find("```").unwrap()];
+    let lines_only = &BASE[..BASE.find("[[bodies]]").unwrap()];
+    let text = format!("{lines_only}\n{example}");
+    let s = scenario::parse(Path::new(FILE), &text).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(s.model.bodies.len(), 2);
+}
