@@ -745,9 +745,16 @@ impl System {
         }
     }
 
-    /// A state with every line straight between its ends and everything at rest.
+    /// A state with every line straight between its ends, free bodies at their initial pose,
+    /// and everything at rest.
     pub fn straight_state(&self) -> Vec<Real> {
         let mut y = vec![0.0; self.layout.len];
+        for (b, off) in self.layout.body_offset.iter().enumerate() {
+            if let Some(o) = off {
+                let k = self.bodies[b].initial_kinematics();
+                crate::bodies::write_state(&k, &mut y[*o..o + crate::bodies::STATE_LEN]);
+            }
+        }
         for (i, p) in self.points.iter().enumerate() {
             if let Some(o) = self.layout.point_offset[i] {
                 set3(&mut y[o..], 0, &p.position);
@@ -1200,7 +1207,15 @@ impl System {
                 node,
             },
             Singular::Point(f) => Location {
-                object: self.points[self.free_points[f]].name.clone(),
+                // Indices past the free points are the free bodies' rows (in CoupledSystem's
+                // order: points, then bodies).
+                object: match self.free_points.get(f) {
+                    Some(&p) => self.points[p].name.clone(),
+                    None => self
+                        .free_bodies
+                        .first()
+                        .map_or("?".into(), |&b| self.bodies[b].body.name.clone()),
+                },
                 node: 0,
             },
         }
