@@ -306,9 +306,6 @@ pub struct Workspace {
     pub dg: Vec<Option<DgWorkspace>>,
     /// Per body: its kinematics (free bodies: accelerations solved by the last evaluation).
     pub bodies: Vec<crate::model::RigidKinematics>,
-    /// Per body: the loads of its own physics (weight, buoyancy, fluid, thrust, wind; about
-    /// its origin, global axes) in the last evaluation.
-    pub body_loads: Vec<crate::bodies::BodyLoads>,
 }
 
 /// Identifies the place in the model a state entry belongs to.
@@ -741,7 +738,6 @@ impl System {
                 .map(|l| l.dg.as_deref().map(DgWorkspace::new))
                 .collect(),
             bodies: self.bodies.iter().map(|b| b.initial_kinematics()).collect(),
-            body_loads: vec![crate::bodies::BodyLoads::default(); self.bodies.len()],
         }
     }
 
@@ -993,11 +989,9 @@ impl System {
         dydt: &mut [Real],
         ws: &mut Workspace,
     ) -> Result<(), Location> {
-        if !ws.dg.is_empty() && ws.dg.iter().any(Option::is_some) {
-            self.point_kinematics(t, y, ws);
-            self.evaluate_dg_lines(t, y, dydt, ws);
-        }
-        self.assemble(t, y, ws);
+        self.point_kinematics(t, y, ws);
+        self.evaluate_dg_lines(t, y, dydt, ws);
+        self.assemble_loads(t, y, ws);
         ws.coupled
             .solve(&mut ws.blocks)
             .map_err(|s| self.singular_location(s))?;
@@ -1112,6 +1106,12 @@ impl System {
     /// `ws.coupled.point_x`, `ws.coupled.point_diag`.
     pub fn assemble(&self, t: Real, y: &[Real], ws: &mut Workspace) {
         self.point_kinematics(t, y, ws);
+        self.assemble_loads(t, y, ws);
+    }
+
+    /// [`System::assemble`] after [`System::point_kinematics`] (and, for `dg` lines,
+    /// [`System::evaluate_dg_lines`]) at the same (t, y).
+    fn assemble_loads(&self, t: Real, y: &[Real], ws: &mut Workspace) {
         self.gather_lines(y, ws);
         let options = LoadOptions {
             current_factor: 1.0,
@@ -1162,24 +1162,16 @@ impl System {
         self.assemble_bodies(t, ws);
     }
 
-    /// Each body's own loads; for free bodies their 6×6 mass and right-hand side in the
-    /// coupled system, and the offsets and centripetal accelerations of their points' slots.
+    /// Each free body's own loads and 6×6 mass as its block of the coupled system, and the
+    /// offsets and centripetal accelerations of its points' slots. (A prescribed body's own
+    /// loads do not enter the equations: its points are known ends.)
     fn assemble_bodies(&self, t: Real, ws: &mut Workspace) {
-        for (b, body) in self.bodies.iter().enumerate() {
-            let k = &ws.bodies[b];
-            let loads = body.body.loads(k, &self.environment, t);
-            if let Some(f) = body.free_index {
-                ws.coupled.body_diag[f] = loads.mass;
-                ws.coupled.body_x[f] = crate::math::Vec6::new(
-                    loads.force.x,
-                    loads.force.y,
-                    loads.force.z,
-                    loads.moment.x,
-                    loads.moment.y,
-                    loads.moment.z,
-                );
-            }
-            ws.body_loads[b] = loads;
+        for (f, &b) in self.free_bodies.iter().enumerate() {
+            let loads = self.bodies[b]
+                .body
+                .loads(&ws.bodies[b], &self.environment, t);
+            ws.coupled.body_diag[f] = loads.mass;
+            ws.coupled.body_x[f] = loads.generalized();
         }
         let np = self.free_points.len();
         for (p, slot) in self.point_slot.iter().enumerate() {

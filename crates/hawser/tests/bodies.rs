@@ -9,7 +9,7 @@ mod alloc_count;
 
 use hawser::bodies::{STATE_LEN, read_state, write_rate, write_state};
 use hawser::math::{Mat3, Quat, Real, Vec3, Vec6};
-use hawser::model::{Body, BodyKind, Displacement, RigidKinematics, Thrust, Wind};
+use hawser::model::{Body, Displacement, RigidKinematics, Thrust, Wind};
 use hawser::physics::environment::Environment;
 use hawser::physics::waves::{RegularWave, SeaState, Stretching, WaveSpec, Waves};
 use std::f64::consts::PI;
@@ -18,32 +18,18 @@ type State = [Real; STATE_LEN];
 
 /// A free body at the origin with no water loads, thrust or wind.
 fn body(mass: Real, inertia: Mat3) -> Body {
-    Body {
-        name: "body".into(),
-        position: Vec3::zeros(),
-        orientation: Quat::identity(),
-        kind: BodyKind::Free,
-        mass,
-        centre_of_gravity: Vec3::zeros(),
-        inertia,
-        displacement: Displacement::None,
-        centre_of_buoyancy: Vec3::zeros(),
-        added_mass: Vec6::zeros(),
-        linear_drag: Vec6::zeros(),
-        quadratic_drag: Vec6::zeros(),
-        thrust: Thrust::None,
-        wind: None,
-    }
+    Body::new("body", mass, inertia)
 }
 
 /// dy/dt of the body alone: its loads, the 6×6 solve, the state rate.
 fn rhs(b: &Body, env: &Environment, t: Real, y: &State) -> State {
     let k = read_state(y);
     let l = b.loads(&k, env, t);
-    let rhs = Vec6::new(
-        l.force.x, l.force.y, l.force.z, l.moment.x, l.moment.y, l.moment.z,
-    );
-    let acc = l.mass.lu().solve(&rhs).expect("mass matrix is regular");
+    let acc = l
+        .mass
+        .lu()
+        .solve(&l.generalized())
+        .expect("mass matrix is regular");
     let mut dy = [0.0; STATE_LEN];
     write_rate(
         &k,

@@ -12,20 +12,9 @@ use hawser::verification::{
 /// A body without fluid loads (above the water, no displacement, no drag).
 fn dry_body(position: Vec3, mass: Real, inertia: Vec3, cog: Vec3) -> Body {
     Body {
-        name: "body".into(),
         position,
-        orientation: Quat::identity(),
-        kind: BodyKind::Free,
-        mass,
         centre_of_gravity: cog,
-        inertia: Mat3::from_diagonal(&inertia),
-        displacement: Displacement::None,
-        centre_of_buoyancy: Vec3::zeros(),
-        added_mass: Vec6::zeros(),
-        linear_drag: Vec6::zeros(),
-        quadratic_drag: Vec6::zeros(),
-        thrust: Thrust::None,
-        wind: None,
+        ..Body::new("body", mass, Mat3::from_diagonal(&inertia))
     }
 }
 

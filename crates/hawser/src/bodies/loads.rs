@@ -1,7 +1,7 @@
 //! Loads and mass matrix of one rigid body about its origin, in global axes.
 
 use super::hydrostatics::{Section, Wetted, wetted_prism};
-use crate::math::{Mat3, Mat6, Real, Vec3, skew};
+use crate::math::{Mat3, Mat6, Real, Vec3, Vec6, skew};
 use crate::model::{Body, Displacement, RigidKinematics};
 use crate::physics::environment::Environment;
 
@@ -16,6 +16,21 @@ pub struct BodyLoads {
     pub moment: Vec3,
     /// Mass matrix about the origin [kg, kg·m, kg·m²]: rigid body plus added mass.
     pub mass: Mat6,
+}
+
+impl BodyLoads {
+    /// The generalized force [force; moment] [N, N·m], the right-hand side of
+    /// `mass · [a_o; α]`.
+    pub fn generalized(&self) -> Vec6 {
+        Vec6::new(
+            self.force.x,
+            self.force.y,
+            self.force.z,
+            self.moment.x,
+            self.moment.y,
+            self.moment.z,
+        )
+    }
 }
 
 /// Where the water is and what is under it.

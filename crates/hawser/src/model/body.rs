@@ -183,6 +183,31 @@ pub struct Body {
 }
 
 impl Body {
+    /// A free body of `mass` [kg] and `inertia` about its centre of gravity [kg·m²] at the
+    /// global origin with body axes along the global ones, its centre of gravity at its
+    /// origin, and nothing else: no displacement, added mass, drag, thrust or wind. Set the
+    /// other fields with struct update syntax.
+    pub fn new(name: &str, mass: Real, inertia: Mat3) -> Self {
+        Self {
+            name: name.into(),
+            position: Vec3::zeros(),
+            orientation: Quat::identity(),
+            kind: BodyKind::Free,
+            mass,
+            centre_of_gravity: Vec3::zeros(),
+            inertia,
+            displacement: Displacement::None,
+            centre_of_buoyancy: Vec3::zeros(),
+            added_mass: Vec6::zeros(),
+            linear_drag: Vec6::zeros(),
+            quadratic_drag: Vec6::zeros(),
+            thrust: Thrust::None,
+            wind: None,
+        }
+    }
+}
+
+impl Body {
     /// Checks the physical ranges: a positive finite mass, an inertia tensor that is finite,
     /// symmetric (to 1e-9 of its largest entry) and positive definite, a finite pose and
     /// centres, a shape with positive dimensions (a volume ≥ 0), added mass and drag
