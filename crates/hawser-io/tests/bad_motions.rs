@@ -421,3 +421,36 @@ fn several_motion_errors_at_once() {
     }
     assert!(!panics(&text));
 }
+
+/// examples/turn_270.toml reads into the manoeuvre docs/motions.md describes: 12 kn, 150 m
+/// radius, 270° to port after 2900 m, the tow point 30 m aft; the body a free point of the
+/// paper's mass and volume; the cable 355 m bare over 125 m faired in 9 + 3 elements.
+#[test]
+fn turn_270_example_is_the_documented_one() {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/turn_270.toml");
+    let text = std::fs::read_to_string(&path).unwrap();
+    let s = scenario::parse(&path, &text).unwrap();
+    let (m, offset) = rigid(&s.model.points[0].kind);
+    let RigidMotion::Manoeuvre(m) = m else {
+        panic!("a manoeuvre")
+    };
+    let spec = m.spec();
+    assert!((spec.speed - 12.0 * 1852.0 / 3600.0).abs() < 1e-12);
+    assert_eq!((spec.turn_radius, spec.straight_before), (150.0, 2900.0));
+    assert!((spec.turn_angle - 1.5 * PI).abs() < 1e-15);
+    assert_eq!(offset, Vec3::new(-30.0, 0.0, 0.0));
+    let u = spec.speed;
+    let t_in = 2900.0 / u + 0.5 * spec.build_up_time;
+    assert!((t_in - 529.76).abs() < 0.01, "the turn starts at {t_in} s");
+    let PointKind::Free { mass, volume, .. } = s.model.points[1].kind else {
+        panic!("the body is a free point")
+    };
+    assert_eq!((mass, volume), (9500.0, 6.25));
+    let line = &s.model.lines[0];
+    let sections: Vec<(f64, usize)> = line
+        .sections
+        .iter()
+        .map(|x| (x.length, x.elements))
+        .collect();
+    assert_eq!(sections, vec![(355.0, 9), (125.0, 3)]);
+}
