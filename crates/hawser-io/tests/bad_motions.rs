@@ -133,7 +133,7 @@ fn vessel_motions_read_as_the_core_builds_them() {
         transition_length: 50.0,
     })
     .unwrap();
-    assert_eq!(m, &RigidMotion::Manoeuvre(want));
+    assert_eq!(m, &RigidMotion::Manoeuvre(Box::new(want)));
     assert_eq!(offset, Vec3::new(-40.0, 0.0, -2.0));
     let q = Quat::from_axis_angle(&Vec3::z_axis(), 30f64.to_radians());
     assert!((tow.position - (Vec3::new(5.0, -5.0, 0.0) + q * offset)).norm() < 1e-12);

@@ -110,7 +110,7 @@ fn circular_turn_geometry_is_exact() {
         assert!((Vec3::new(cx, cy, -3.0) - centre).norm() < 1e-9);
         let [s_in, _, _, s_out] = m.turn_arc_lengths();
         assert!((s_in - l1).abs() < 1e-12 && (s_out - (l1 + r * theta.abs())).abs() < 1e-9);
-        let rm = RigidMotion::Manoeuvre(m.clone());
+        let rm = RigidMotion::Manoeuvre(Box::new(m.clone()));
         // Straight before: on the line, heading ψ0.
         for t in [0.0, 20.0, l1 / u - 1.0] {
             let k = rm.kinematics(t);
@@ -188,7 +188,7 @@ fn manoeuvre_derivatives_match_finite_differences() {
         let m = turn(270.0, transition, build_up, Some(300.0));
         let [s_in, _, _, s_out] = m.turn_arc_lengths();
         let end = m.track_end();
-        let rm = RigidMotion::Manoeuvre(m.clone());
+        let rm = RigidMotion::Manoeuvre(Box::new(m.clone()));
         let t_end = end / u + build_up;
         let times: Vec<Real> = (0..400)
             .map(|i| 0.0013 + (t_end + 20.0) * i as Real / 400.0)
@@ -214,7 +214,7 @@ fn manoeuvre_derivatives_match_finite_differences() {
 fn build_up_and_stop() {
     let u = 12.0 * KNOT;
     let m = turn(-270.0, 50.0, 60.0, Some(300.0));
-    let rm = RigidMotion::Manoeuvre(m.clone());
+    let rm = RigidMotion::Manoeuvre(Box::new(m.clone()));
     let k0 = rm.kinematics(0.0);
     assert_eq!(k0.velocity.norm() + k0.acceleration.norm(), 0.0);
     assert!((k0.position - Vec3::new(10.0, -20.0, -3.0)).norm() == 0.0);
@@ -250,7 +250,7 @@ fn curvature_transitions_keep_the_turn_exact() {
     let u = 12.0 * KNOT;
     let (r, lc) = (250.0, 80.0);
     let m = turn(270.0, lc, 0.0, None);
-    let rm = RigidMotion::Manoeuvre(m.clone());
+    let rm = RigidMotion::Manoeuvre(Box::new(m.clone()));
     let s = m.turn_arc_lengths();
     assert!((s[1] - s[0] - lc).abs() < 1e-12 && (s[3] - s[2] - lc).abs() < 1e-9);
     assert!((s[2] - s[1] - (r * 1.5 * PI - lc)).abs() < 1e-9);
@@ -271,7 +271,7 @@ fn curvature_transitions_keep_the_turn_exact() {
         );
     }
     // Without transitions it jumps by U²/R.
-    let arc = RigidMotion::Manoeuvre(turn(270.0, 0.0, 0.0, None));
+    let arc = RigidMotion::Manoeuvre(Box::new(turn(270.0, 0.0, 0.0, None)));
     let t = 400.0 / u;
     let jump =
         (arc.kinematics(t + 1e-9).acceleration - arc.kinematics(t - 1e-9).acceleration).norm();
@@ -939,7 +939,7 @@ fn rao_motion_derivatives_match_finite_differences() {
         spec.ramp_time = 30.0;
         waves = Waves::new(&spec, 200.0, G).unwrap();
     }
-    let mean = RigidMotion::Manoeuvre(turn(120.0, 40.0, 20.0, None));
+    let mean = RigidMotion::Manoeuvre(Box::new(turn(120.0, 40.0, 20.0, None)));
     let m = RigidMotion::Rao(Box::new(RaoMotion::new(table, &waves, mean).unwrap()));
     let times: Vec<Real> = (0..300).map(|i| 0.011 + 0.37 * i as Real).collect();
     assert_fd(&m, &times, 1e-4, [2e-6; 4], "RAO motion on a manoeuvre");
@@ -949,7 +949,7 @@ fn rao_motion_derivatives_match_finite_differences() {
 /// RigidKinematics::point, which agree with central differences of its position.
 #[test]
 fn points_ride_on_rigid_motions() {
-    let rigid = RigidMotion::Manoeuvre(turn(270.0, 60.0, 30.0, None));
+    let rigid = RigidMotion::Manoeuvre(Box::new(turn(270.0, 60.0, 30.0, None)));
     let offset = Vec3::new(-40.0, 3.0, -2.0);
     let p = Motion::Rigid {
         motion: Box::new(rigid.clone()),
@@ -976,13 +976,13 @@ fn evaluation_allocates_nothing() {
     let angles = vec![[0.1, 0.0, 0.2]; 20];
     let (table, _) = heave_rao_table();
     let motions = vec![
-        RigidMotion::Manoeuvre(turn(270.0, 60.0, 30.0, Some(100.0))),
+        RigidMotion::Manoeuvre(Box::new(turn(270.0, 60.0, 30.0, Some(100.0)))),
         RigidMotion::TimeSeries(RigidTimeSeries::new(times, &positions, &angles).unwrap()),
         RigidMotion::Rao(Box::new(
             RaoMotion::new(
                 table,
                 &jonswap(1, Some(3.0)),
-                RigidMotion::Manoeuvre(turn(90.0, 0.0, 0.0, None)),
+                RigidMotion::Manoeuvre(Box::new(turn(90.0, 0.0, 0.0, None))),
             )
             .unwrap(),
         )),

@@ -2514,7 +2514,7 @@ fn build_manoeuvre(
         transition_length,
     };
     match Manoeuvre::new(spec) {
-        Ok(man) => Some(RigidMotion::Manoeuvre(man)),
+        Ok(man) => Some(RigidMotion::Manoeuvre(Box::new(man))),
         Err(e) => {
             let span = span_of(&m.straight_after).or(Some(m.kind.span()));
             let d = b

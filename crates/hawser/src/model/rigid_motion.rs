@@ -90,7 +90,7 @@ pub enum RigidMotion {
         velocity: Vec3,
     },
     /// A ship manoeuvre: straight run, turn of constant radius, straight run ([`Manoeuvre`]).
-    Manoeuvre(Manoeuvre),
+    Manoeuvre(Box<Manoeuvre>),
     /// A 6-DOF table interpolated by cubic splines ([`RigidTimeSeries`]).
     TimeSeries(RigidTimeSeries),
     /// Wave-frequency motion from RAO tables on a mean motion ([`RaoMotion`]).
@@ -554,10 +554,10 @@ impl RigidTimeSeries {
             .zip(angles)
             .map(|(p, a)| [p.x, p.y, p.z, a[0], a[1], a[2]])
             .collect();
-        for c in 3..6 {
-            for i in 1..n {
-                let jump = values[i][c] - values[i - 1][c];
-                values[i][c] -= TAU * (jump / TAU).round();
+        for i in 1..n {
+            let previous = values[i - 1];
+            for (angle, before) in values[i][3..].iter_mut().zip(&previous[3..]) {
+                *angle -= TAU * ((*angle - before) / TAU).round();
             }
         }
         let mut second = vec![[0.0; 6]; n];
