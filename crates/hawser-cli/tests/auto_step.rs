@@ -1,6 +1,7 @@
 //! `time_step = "auto"` must be stable: every bundled example, switched to the automatic step,
-//! runs 10 s to completion (with the data files of examples/data beside it). (An earlier stability estimate took the largest single-term rate
-//! and let the OC3 example diverge within 0.2 s.)
+//! runs 10 s to completion (with the data files of examples/data beside it). (An earlier
+//! stability estimate took the largest single-term rate and let the OC3 example diverge within
+//! 0.2 s.)
 
 use std::path::PathBuf;
 use std::process::Command;
