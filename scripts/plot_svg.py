@@ -96,4 +96,5 @@ def main():
             series.append(("", [p[0] for p in pts], [p[1] for p in pts]))
         svg(series, "x [m]", "z [m]", title, out, equal=False)
 
-main()
+if __name__ == "__main__":
+    main()

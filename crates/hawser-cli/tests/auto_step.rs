@@ -1,6 +1,7 @@
 //! `time_step = "auto"` must be stable: every bundled example, switched to the automatic step,
-//! runs 10 s to completion. (An earlier stability estimate took the largest single-term rate
-//! and let the OC3 example diverge within 0.2 s.)
+//! runs 10 s to completion (with the data files of examples/data beside it). (An earlier
+//! stability estimate took the largest single-term rate and let the OC3 example diverge within
+//! 0.2 s.)
 
 use std::path::PathBuf;
 use std::process::Command;
@@ -10,6 +11,15 @@ fn every_example_runs_stably_with_the_automatic_step() {
     let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../..");
     let dir = std::env::temp_dir().join(format!("hawser-auto-step-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
+    // Data files the examples refer to by relative paths (RAO tables, ...).
+    let data = root.join("examples/data");
+    if data.is_dir() {
+        std::fs::create_dir_all(dir.join("data")).unwrap();
+        for f in std::fs::read_dir(&data).unwrap() {
+            let f = f.unwrap().path();
+            std::fs::copy(&f, dir.join("data").join(f.file_name().unwrap())).unwrap();
+        }
+    }
     let mut examples: Vec<_> = std::fs::read_dir(root.join("examples"))
         .unwrap()
         .map(|e| e.unwrap().path())

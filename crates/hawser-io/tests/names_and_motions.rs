@@ -113,7 +113,7 @@ fn vessel_motion_rotates_points_about_the_vessel_origin() {
     use hawser::math::Vec3;
     use hawser_io::scenario::build::vessel_point_motion;
     let at = |row: [f64; 7], r0: Vec3| {
-        let m = vessel_point_motion(&[row], r0, 5.0);
+        let m = vessel_point_motion(&[row], r0, 5.0).unwrap();
         let (p, _, _) = m.kinematics(5.0);
         p
     };

@@ -734,6 +734,17 @@ fn convert_points(
                 table: None,
                 file: vessel.map(|v| spanned(&word, v.path.display().to_string())),
                 time_offset: vessel.map(|v| spanned(&word, v.time_offset)),
+                start: None,
+                heading: None,
+                speed: None,
+                speed_knots: None,
+                straight_before: None,
+                turn_radius: None,
+                turn_angle: None,
+                straight_after: None,
+                build_up_time: None,
+                transition_length: None,
+                mean: None,
             }
         });
         out.push(PointSpec {

@@ -5,7 +5,7 @@ use super::diagnostics::{Diagnostic, ScenarioError, closest, line_number};
 use super::schema::*;
 use crate::results::OutputChannel;
 use hawser::analysis::Channel;
-use hawser::math::Vec3;
+use hawser::math::{Quat, Vec3};
 use hawser::model::*;
 use hawser::physics::environment::{Current, Environment};
 use hawser::physics::hydrodynamics::{DragModel, LoadingFunction};
@@ -1678,7 +1678,7 @@ fn build_points(
                 }
             }
             PointKindSpec::Prescribed => match &p.motion {
-                Some(m) => PointKind::Prescribed(build_motion(b, m, position, &k("motion"))),
+                Some(m) => PointKind::Prescribed(build_motion(b, m, position, &k("motion"), env)),
                 None => {
                     let d = b
                         .diag(
@@ -1700,6 +1700,9 @@ fn build_points(
             },
         };
         let pos = match (position, &point_kind) {
+            // A point on a vessel: `position` is its place on the vessel; it starts where the
+            // vessel's motion puts it at t = 0.
+            (Some(_), PointKind::Prescribed(m @ Motion::Rigid { .. })) => m.initial_position(),
             (Some(p), _) => p,
             (None, PointKind::Prescribed(m)) => m.initial_position(),
             (None, _) => {
@@ -1741,10 +1744,37 @@ fn build_points(
     (out, index)
 }
 
-fn build_motion(b: &mut Builder, m: &MotionSpec, position: Option<Vec3>, key: &str) -> Motion {
+fn build_motion(
+    b: &mut Builder,
+    m: &MotionSpec,
+    position: Option<Vec3>,
+    key: &str,
+    env: &Environment,
+) -> Motion {
     let k = |x: &str| format!("{key}.{x}");
     let kind = *m.kind.get_ref();
     let centre = position.unwrap_or_else(Vec3::zeros);
+    if matches!(
+        kind,
+        MotionKind::VesselMotion | MotionKind::Manoeuvre | MotionKind::Rao
+    ) {
+        // The point rides on a vessel: `position` is its place on the vessel.
+        if position.is_none() {
+            let d = b
+                .diag(
+                    Some(m.kind.span()),
+                    &k("type"),
+                    "a point on a vessel needs its `position` on the vessel",
+                )
+                .expected("`position = [x, y, z]` on the point, in m, in vessel axes from the vessel origin")
+                .hint("e.g. `position = [-40.0, 0.0, -2.0]` for a tow point 40 m aft of the origin, 2 m below it");
+            b.push(d);
+        }
+        return Motion::Rigid {
+            motion: Box::new(build_rigid_motion(b, m, key, env)),
+            offset: centre,
+        };
+    }
     if position.is_none() && !matches!(kind, MotionKind::TimeSeries) {
         let d = b
             .diag(
@@ -1768,46 +1798,9 @@ fn build_motion(b: &mut Builder, m: &MotionSpec, position: Option<Vec3>, key: &s
             "ramp_time",
         ],
         MotionKind::TimeSeries => &["table", "file"],
-        MotionKind::VesselMotion => &["file", "time_offset"],
+        MotionKind::VesselMotion | MotionKind::Manoeuvre | MotionKind::Rao => unreachable!(),
     };
-    for (name, is, span) in [
-        ("velocity", m.velocity.is_some(), span_of(&m.velocity)),
-        ("amplitude", m.amplitude.is_some(), span_of(&m.amplitude)),
-        ("period", m.period.is_some(), span_of(&m.period)),
-        ("frequency", m.frequency.is_some(), span_of(&m.frequency)),
-        ("phase", m.phase.is_some(), span_of(&m.phase)),
-        ("radius", m.radius.is_some(), span_of(&m.radius)),
-        ("ramp_time", m.ramp_time.is_some(), span_of(&m.ramp_time)),
-        ("plane", m.plane.is_some(), Some(m.kind.span())),
-        ("table", m.table.is_some(), span_of(&m.table)),
-        ("file", m.file.is_some(), span_of(&m.file)),
-        (
-            "time_offset",
-            m.time_offset.is_some(),
-            span_of(&m.time_offset),
-        ),
-    ] {
-        if is && !allowed.contains(&name) {
-            let d = b
-                .diag(
-                    span,
-                    &k(name),
-                    format!(
-                        "`{name}` does not apply to a `{}` motion",
-                        motion_name(kind)
-                    ),
-                )
-                .hint(format!(
-                    "this motion takes: {}",
-                    if allowed.is_empty() {
-                        "no parameters".into()
-                    } else {
-                        allowed.join(", ")
-                    }
-                ));
-            b.push(d);
-        }
-    }
+    reject_keys(b, m, key, allowed);
     let required = |b: &mut Builder, name: &str, unit: &str| {
         let d = b
             .diag(
@@ -1970,32 +1963,270 @@ fn build_motion(b: &mut Builder, m: &MotionSpec, position: Option<Vec3>, key: &s
                 None => Motion::Fixed { position: centre },
             }
         }
-        MotionKind::VesselMotion => {
-            let offset = match &m.time_offset {
-                Some(v) if v.get_ref().is_finite() => *v.get_ref(),
-                Some(v) => {
-                    let d = b
-                        .diag(
-                            Some(v.span()),
-                            &k("time_offset"),
-                            "`time_offset` is not finite",
-                        )
-                        .expected("s");
-                    b.push(d);
-                    0.0
-                }
-                None => 0.0,
+        MotionKind::VesselMotion | MotionKind::Manoeuvre | MotionKind::Rao => unreachable!(),
+    }
+}
+
+/// The trajectory of a point fixed on a vessel at `on_vessel` (vessel axes, from the vessel
+/// origin: its position when the vessel is at rest at the global origin) from the vessel's
+/// motion rows [t, x, y, z, roll, pitch, yaw] (s, m, deg): r(t) = X(t) + R(t)·r0 with
+/// R = R_z(yaw)·R_y(pitch)·R_x(roll), the rows' times shifted by `time_offset`, each channel
+/// interpolated by a not-a-knot cubic spline ([`RigidTimeSeries`]: velocities and
+/// accelerations of the point are exact for the interpolated motion). The rows must have
+/// finite values and strictly increasing times.
+pub fn vessel_point_motion(
+    rows: &[[f64; 7]],
+    on_vessel: Vec3,
+    time_offset: f64,
+) -> Result<Motion, hawser::ModelError> {
+    Ok(Motion::Rigid {
+        motion: Box::new(RigidMotion::TimeSeries(vessel_time_series(
+            rows,
+            time_offset,
+        )?)),
+        offset: on_vessel,
+    })
+}
+
+/// The 6-DOF table of a vessel-motion file's rows [t, x, y, z, roll, pitch, yaw] (s, m, deg),
+/// times shifted by `time_offset` [s].
+fn vessel_time_series(
+    rows: &[[f64; 7]],
+    time_offset: f64,
+) -> Result<RigidTimeSeries, hawser::ModelError> {
+    RigidTimeSeries::new(
+        rows.iter().map(|r| r[0] + time_offset).collect(),
+        &rows
+            .iter()
+            .map(|r| Vec3::new(r[1], r[2], r[3]))
+            .collect::<Vec<_>>(),
+        &rows
+            .iter()
+            .map(|r| [r[4].to_radians(), r[5].to_radians(), r[6].to_radians()])
+            .collect::<Vec<_>>(),
+    )
+}
+
+/// Every key of a motion table: (name, given, span).
+fn motion_keys(m: &MotionSpec) -> [(&'static str, bool, Option<Range<usize>>); 23] {
+    [
+        ("velocity", m.velocity.is_some(), span_of(&m.velocity)),
+        ("amplitude", m.amplitude.is_some(), span_of(&m.amplitude)),
+        ("period", m.period.is_some(), span_of(&m.period)),
+        ("frequency", m.frequency.is_some(), span_of(&m.frequency)),
+        ("phase", m.phase.is_some(), span_of(&m.phase)),
+        ("radius", m.radius.is_some(), span_of(&m.radius)),
+        ("ramp_time", m.ramp_time.is_some(), span_of(&m.ramp_time)),
+        ("plane", m.plane.is_some(), Some(m.kind.span())),
+        ("table", m.table.is_some(), span_of(&m.table)),
+        ("file", m.file.is_some(), span_of(&m.file)),
+        (
+            "time_offset",
+            m.time_offset.is_some(),
+            span_of(&m.time_offset),
+        ),
+        ("start", m.start.is_some(), span_of(&m.start)),
+        ("heading", m.heading.is_some(), span_of(&m.heading)),
+        ("speed", m.speed.is_some(), span_of(&m.speed)),
+        (
+            "speed_knots",
+            m.speed_knots.is_some(),
+            span_of(&m.speed_knots),
+        ),
+        (
+            "straight_before",
+            m.straight_before.is_some(),
+            span_of(&m.straight_before),
+        ),
+        (
+            "turn_radius",
+            m.turn_radius.is_some(),
+            span_of(&m.turn_radius),
+        ),
+        ("turn_angle", m.turn_angle.is_some(), span_of(&m.turn_angle)),
+        (
+            "straight_after",
+            m.straight_after.is_some(),
+            span_of(&m.straight_after),
+        ),
+        (
+            "build_up_time",
+            m.build_up_time.is_some(),
+            span_of(&m.build_up_time),
+        ),
+        (
+            "transition_length",
+            m.transition_length.is_some(),
+            span_of(&m.transition_length),
+        ),
+        (
+            "mean",
+            m.mean.is_some(),
+            m.mean.as_ref().map(|x| x.kind.span()),
+        ),
+        ("type", true, Some(m.kind.span())),
+    ]
+}
+
+/// Reports every key of motion table `m` (at `key`) that its type does not take.
+fn reject_keys(b: &mut Builder, m: &MotionSpec, key: &str, allowed: &[&str]) {
+    let kind = *m.kind.get_ref();
+    for (name, is, span) in motion_keys(m) {
+        if is && name != "type" && !allowed.contains(&name) {
+            let d = b
+                .diag(
+                    span,
+                    &format!("{key}.{name}"),
+                    format!(
+                        "`{name}` does not apply to a `{}` motion",
+                        motion_name(kind)
+                    ),
+                )
+                .hint(format!(
+                    "this motion takes: {}",
+                    if allowed.is_empty() {
+                        "no parameters".into()
+                    } else {
+                        allowed.join(", ")
+                    }
+                ));
+            b.push(d);
+        }
+    }
+}
+
+/// One knot in m/s.
+const KNOT: f64 = 1852.0 / 3600.0;
+
+/// The rigid-body motion of a vessel (or a prescribed body) from motion table `m` at `key`:
+/// `fixed` and `constant-velocity` (the vessel origin at `start`, default the global origin,
+/// with `heading`, default 0), `manoeuvre`, `vessel-motion` (6-DOF file) and `rao` (RAO table
+/// file on a `mean` motion, driven by `env`'s waves). Every problem is collected in `b`;
+/// after an error the returned motion is a harmless placeholder. Reused by `[bodies.motion]`.
+fn build_rigid_motion(
+    b: &mut Builder,
+    m: &MotionSpec,
+    key: &str,
+    env: &Environment,
+) -> RigidMotion {
+    let k = |x: &str| format!("{key}.{x}");
+    let kind = *m.kind.get_ref();
+    let allowed: &[&str] = match kind {
+        MotionKind::Fixed => &["start", "heading"],
+        MotionKind::ConstantVelocity => &["start", "heading", "velocity"],
+        MotionKind::Manoeuvre => &[
+            "start",
+            "heading",
+            "speed",
+            "speed_knots",
+            "straight_before",
+            "turn_radius",
+            "turn_angle",
+            "straight_after",
+            "build_up_time",
+            "transition_length",
+        ],
+        MotionKind::VesselMotion => &["file", "time_offset"],
+        MotionKind::Rao => &["file", "mean", "start", "heading"],
+        MotionKind::Sinusoid | MotionKind::CircularOrbit | MotionKind::TimeSeries => {
+            let d = b
+                .diag(
+                    Some(m.kind.span()),
+                    &k("type"),
+                    format!(
+                        "`{}` is a point motion, not a motion of a vessel or body",
+                        motion_name(kind)
+                    ),
+                )
+                .expected(
+                    "`fixed`, `constant-velocity`, `manoeuvre`, `vessel-motion` or `rao`",
+                )
+                .hint("a vessel's 6-DOF history can be given with `vessel-motion` (a file of t, x, y, z, roll, pitch, yaw)");
+            b.push(d);
+            return RigidMotion::Fixed {
+                position: Vec3::zeros(),
+                orientation: Quat::identity(),
             };
+        }
+    };
+    reject_keys(b, m, key, allowed);
+    let start = m
+        .start
+        .as_ref()
+        .map(|v| b.vec3(v, &k("start")))
+        .unwrap_or_else(Vec3::zeros);
+    let heading = b
+        .opt(
+            &m.heading,
+            &k("heading"),
+            0.0,
+            Check {
+                ok: |_| true,
+                expected: "deg, finite",
+            },
+            "the vessel's heading from +x toward +y",
+        )
+        .to_radians();
+    let orientation = Quat::from_axis_angle(&Vec3::z_axis(), heading);
+    let placeholder = RigidMotion::Fixed {
+        position: start,
+        orientation,
+    };
+    let required = |b: &mut Builder, name: &str, unit: &str, hint: &str| {
+        let d = b
+            .diag(
+                Some(m.kind.span()),
+                &k(name),
+                format!("a `{}` motion needs `{name}`", motion_name(kind)),
+            )
+            .value("")
+            .expected(unit.to_string())
+            .hint(hint.to_string());
+        b.push(d);
+    };
+    let file_path = |b: &Builder, f: &Spanned<String>| {
+        b.file.parent().unwrap_or(Path::new(".")).join(f.get_ref())
+    };
+    match kind {
+        MotionKind::Fixed => placeholder,
+        MotionKind::ConstantVelocity => match &m.velocity {
+            Some(v) => RigidMotion::ConstantVelocity {
+                start,
+                orientation,
+                velocity: b.vec3(v, &k("velocity")),
+            },
+            None => {
+                required(
+                    b,
+                    "velocity",
+                    "[vx, vy, vz] in m/s",
+                    "add `velocity = [vx, vy, vz]`",
+                );
+                placeholder
+            }
+        },
+        MotionKind::Manoeuvre => build_manoeuvre(b, m, key, start, heading).unwrap_or(placeholder),
+        MotionKind::VesselMotion => {
+            let offset = b.opt(
+                &m.time_offset,
+                &k("time_offset"),
+                0.0,
+                Check {
+                    ok: |_| true,
+                    expected: "s, finite",
+                },
+                "added to the file's times",
+            );
             let Some(f) = &m.file else {
                 required(
                     b,
                     "file",
-                    "a file with columns t, x, y, z, roll, pitch, yaw",
+                    "a file with columns t, x, y, z, roll, pitch, yaw [s, m, deg]",
+                    "add `file = \"vessel_motion.txt\"` (relative to the scenario file)",
                 );
-                return Motion::Fixed { position: centre };
+                return placeholder;
             };
-            let path = b.file.parent().unwrap_or(Path::new(".")).join(f.get_ref());
-            let rows = match read_table::<7>(&path, "t, x, y, z, roll, pitch, yaw") {
+            let rows = match read_table::<7>(&file_path(b, f), "t, x, y, z, roll, pitch, yaw") {
                 Ok(rows) => rows,
                 Err(msg) => {
                     let d = b
@@ -2003,76 +2234,470 @@ fn build_motion(b: &mut Builder, m: &MotionSpec, position: Option<Vec3>, key: &s
                         .expected("columns t [s], x, y, z [m], roll, pitch, yaw [deg]")
                         .hint("the path is relative to the scenario file");
                     b.push(d);
-                    return Motion::Fixed { position: centre };
+                    return placeholder;
                 }
             };
-            if rows.is_empty() || !rows.windows(2).all(|w| w[1][0] > w[0][0]) {
-                let d = b
-                    .diag(
-                        Some(f.span()),
-                        &k("file"),
-                        "the vessel motion needs at least one row and strictly increasing times",
-                    )
-                    .expected("rows t, x, y, z, roll, pitch, yaw in s, m and deg");
-                b.push(d);
-                return Motion::Fixed { position: centre };
+            match vessel_time_series(&rows, offset) {
+                Ok(s) if !rows.is_empty() => RigidMotion::TimeSeries(s),
+                _ => {
+                    let d = b
+                        .diag(
+                            Some(f.span()),
+                            &k("file"),
+                            "the vessel motion needs at least one row and strictly increasing times",
+                        )
+                        .expected("rows t, x, y, z, roll, pitch, yaw in s, m and deg")
+                        .hint("sort the rows by time and remove repeated times");
+                    b.push(d);
+                    placeholder
+                }
             }
-            vessel_point_motion(&rows, centre, offset)
+        }
+        MotionKind::Rao => {
+            let mean = match &m.mean {
+                Some(mean) => {
+                    for (name, v) in [
+                        ("start", span_of(&m.start)),
+                        ("heading", span_of(&m.heading)),
+                    ] {
+                        if let Some(span) = v {
+                            let d = b
+                                .diag(
+                                    Some(span),
+                                    &k(name),
+                                    format!("`{name}` is given both here and by the `mean` motion"),
+                                )
+                                .hint(format!("give `{name}` in the `mean` table only"));
+                            b.push(d);
+                        }
+                    }
+                    if !matches!(
+                        mean.kind.get_ref(),
+                        MotionKind::Fixed | MotionKind::ConstantVelocity | MotionKind::Manoeuvre
+                    ) {
+                        let d = b
+                            .diag(
+                                Some(mean.kind.span()),
+                                &k("mean.type"),
+                                format!(
+                                    "a vessel's mean motion cannot be `{}`",
+                                    motion_name(*mean.kind.get_ref())
+                                ),
+                            )
+                            .expected("`fixed`, `constant-velocity` or `manoeuvre`")
+                            .hint("the wave-frequency motion comes from the RAOs; the mean motion is the slow one");
+                        b.push(d);
+                        placeholder.clone()
+                    } else {
+                        build_rigid_motion(b, mean, &k("mean"), env)
+                    }
+                }
+                None => placeholder.clone(),
+            };
+            let Some(f) = &m.file else {
+                required(
+                    b,
+                    "file",
+                    "an RAO table file (docs/motions.md)",
+                    "add `file = \"vessel_raos.csv\"` (relative to the scenario file)",
+                );
+                return placeholder;
+            };
+            let table = match read_rao_table(&file_path(b, f)) {
+                Ok(t) => t,
+                Err(msg) => {
+                    let d = b
+                        .diag(Some(f.span()), &k("file"), msg)
+                        .expected(
+                            "a header `period_s` (or `frequency_hz`, `omega_rad_s`), \
+                             `heading_deg`, then amplitude and phase of surge, sway, heave \
+                             [m/m, deg], roll, pitch, yaw [deg/m, deg]: 14 columns",
+                        )
+                        .hint("docs/motions.md describes the RAO file; the path is relative to the scenario file");
+                    b.push(d);
+                    return placeholder;
+                }
+            };
+            match RaoMotion::new(table, &env.waves, mean) {
+                Ok(r) => RigidMotion::Rao(Box::new(r)),
+                Err(e) => {
+                    let d = b.diag(Some(f.span()), &k("file"), e.to_string());
+                    b.push(d);
+                    placeholder
+                }
+            }
+        }
+        MotionKind::Sinusoid | MotionKind::CircularOrbit | MotionKind::TimeSeries => {
+            unreachable!()
         }
     }
 }
 
-/// The trajectory of a point fixed on a vessel at `on_vessel` (its position when the vessel
-/// is at rest) from the vessel's motion rows [t, x, y, z, roll, pitch, yaw] (s, m, deg):
-/// r(t) = X(t) + R(t)·r0 with R = R_z(yaw)·R_y(pitch)·R_x(roll) about the vessel origin (the
-/// global origin at rest), sampled at the rows' times shifted by `time_offset` and
-/// interpolated linearly between them.
-pub fn vessel_point_motion(rows: &[[f64; 7]], on_vessel: Vec3, time_offset: f64) -> Motion {
-    use hawser::math::Mat3;
-    let rot = |r: &[f64; 7]| {
-        let (roll, pitch, yaw) = (r[4].to_radians(), r[5].to_radians(), r[6].to_radians());
-        let rx = Mat3::new(
-            1.0,
-            0.0,
-            0.0,
-            0.0,
-            roll.cos(),
-            -roll.sin(),
-            0.0,
-            roll.sin(),
-            roll.cos(),
-        );
-        let ry = Mat3::new(
-            pitch.cos(),
-            0.0,
-            pitch.sin(),
-            0.0,
-            1.0,
-            0.0,
-            -pitch.sin(),
-            0.0,
-            pitch.cos(),
-        );
-        let rz = Mat3::new(
-            yaw.cos(),
-            -yaw.sin(),
-            0.0,
-            yaw.sin(),
-            yaw.cos(),
-            0.0,
-            0.0,
-            0.0,
-            1.0,
-        );
-        rz * ry * rx
+/// The manoeuvre of motion table `m`; `None` after an error.
+fn build_manoeuvre(
+    b: &mut Builder,
+    m: &MotionSpec,
+    key: &str,
+    start: Vec3,
+    heading: f64,
+) -> Option<RigidMotion> {
+    let k = |x: &str| format!("{key}.{x}");
+    let errors = b.errors.len();
+    let speed = match (&m.speed, &m.speed_knots) {
+        (Some(v), None) => b.num(
+            v,
+            &k("speed"),
+            Check {
+                ok: POSITIVE,
+                expected: "m/s, > 0",
+            },
+            "the ship's speed through the water, e.g. 6.17 m/s (12 kn)",
+        ),
+        (None, Some(v)) => {
+            b.num(
+                v,
+                &k("speed_knots"),
+                Check {
+                    ok: POSITIVE,
+                    expected: "kn, > 0",
+                },
+                "the ship's speed in knots, e.g. 12",
+            ) * KNOT
+        }
+        (Some(_), Some(v)) => {
+            let d = b
+                .diag(
+                    Some(v.span()),
+                    &k("speed_knots"),
+                    "give either `speed` [m/s] or `speed_knots` [kn], not both",
+                )
+                .hint("remove one of them");
+            b.push(d);
+            1.0
+        }
+        (None, None) => {
+            let d = b
+                .diag(
+                    Some(m.kind.span()),
+                    &k("speed"),
+                    "a `manoeuvre` motion needs `speed` [m/s] or `speed_knots` [kn]",
+                )
+                .value("")
+                .expected("m/s, > 0 (or `speed_knots` in kn)")
+                .hint("add e.g. `speed_knots = 12.0`");
+            b.push(d);
+            1.0
+        }
     };
-    Motion::TimeSeries {
-        times: rows.iter().map(|r| r[0] + time_offset).collect(),
-        positions: rows
-            .iter()
-            .map(|r| Vec3::new(r[1], r[2], r[3]) + rot(r) * on_vessel)
-            .collect(),
+    let length = |b: &mut Builder, v: &Option<Spanned<f64>>, name: &str, hint: &str| {
+        b.opt(
+            v,
+            &k(name),
+            0.0,
+            Check {
+                ok: NON_NEGATIVE,
+                expected: "m, ≥ 0",
+            },
+            hint,
+        )
+    };
+    let straight_before = length(
+        b,
+        &m.straight_before,
+        "straight_before",
+        "the distance run on the initial heading before the turn",
+    );
+    let transition_length = length(
+        b,
+        &m.transition_length,
+        "transition_length",
+        "the distance over which the curvature builds up into the turn, e.g. a ship length",
+    );
+    let straight_after = m.straight_after.as_ref().map(|v| {
+        b.num(
+            v,
+            &k("straight_after"),
+            Check {
+                ok: NON_NEGATIVE,
+                expected: "m, ≥ 0",
+            },
+            "the distance run after the turn before the vessel stops; omit it to go on for ever",
+        )
+    });
+    let build_up_time = b.opt(
+        &m.build_up_time,
+        &k("build_up_time"),
+        0.0,
+        Check {
+            ok: NON_NEGATIVE,
+            expected: "s, ≥ 0",
+        },
+        "a few minutes lets a towed cable stream out without an impulsive start",
+    );
+    let turn_radius = match &m.turn_radius {
+        Some(v) => b.num(
+            v,
+            &k("turn_radius"),
+            Check {
+                ok: POSITIVE,
+                expected: "m, > 0",
+            },
+            "a ship's tactical diameter is typically 3–5 ship lengths: the radius is half of it",
+        ),
+        None => {
+            let d = b
+                .diag(
+                    Some(m.kind.span()),
+                    &k("turn_radius"),
+                    "a `manoeuvre` motion needs `turn_radius`",
+                )
+                .value("")
+                .expected("m, > 0")
+                .hint("add e.g. `turn_radius = 250.0`");
+            b.push(d);
+            1.0
+        }
+    };
+    let turn_angle = match &m.turn_angle {
+        Some(v) => b
+            .num(
+                v,
+                &k("turn_angle"),
+                Check {
+                    ok: |_| true,
+                    expected: "deg, finite (positive to port, negative to starboard)",
+                },
+                "e.g. 270 for a turn to port through 270°, -90 for a quarter turn to starboard",
+            )
+            .to_radians(),
+        None => {
+            let d = b
+                .diag(
+                    Some(m.kind.span()),
+                    &k("turn_angle"),
+                    "a `manoeuvre` motion needs `turn_angle`",
+                )
+                .value("")
+                .expected("deg, positive to port, negative to starboard")
+                .hint("add e.g. `turn_angle = 270.0`; 0 for a straight run");
+            b.push(d);
+            0.0
+        }
+    };
+    if b.errors.len() > errors {
+        return None;
     }
+    if transition_length > turn_radius * turn_angle.abs() * (1.0 + 1e-12) && turn_angle != 0.0 {
+        let d = b
+            .diag(
+                span_of(&m.transition_length),
+                &k("transition_length"),
+                "the curvature transitions are longer than the turn",
+            )
+            .expected(format!(
+                "m, ≤ turn_radius × |turn_angle| = {:.1} m",
+                turn_radius * turn_angle.abs()
+            ))
+            .hint("each transition turns the heading by transition_length / (2 turn_radius); shorten them");
+        b.push(d);
+        return None;
+    }
+    let spec = ManoeuvreSpec {
+        start,
+        heading,
+        speed,
+        straight_before,
+        turn_radius,
+        turn_angle,
+        straight_after,
+        build_up_time,
+        transition_length,
+    };
+    match Manoeuvre::new(spec) {
+        Ok(man) => Some(RigidMotion::Manoeuvre(Box::new(man))),
+        Err(e) => {
+            let span = span_of(&m.straight_after).or(Some(m.kind.span()));
+            let d = b
+                .diag(span, &k("straight_after"), e.to_string())
+                .expected(format!(
+                    "m, with the whole track ≥ speed × build_up_time = {:.1} m",
+                    speed * build_up_time
+                ))
+                .hint("lengthen `straight_after` or shorten `build_up_time`");
+            b.push(d);
+            None
+        }
+    }
+}
+
+/// Reads an RAO table (docs/motions.md): `#` comments and blank lines skipped; a header line
+/// whose first name is `period_s`, `frequency_hz` or `omega_rad_s` (the unit of the first
+/// column), then rows of 14 numbers: wave period, frequency or angular frequency; heading
+/// [deg]; amplitude and phase lag of surge, sway, heave [m/m, deg], roll, pitch, yaw [deg/m,
+/// deg]. Rows are grouped by the first column in increasing order, each group listing the same
+/// headings in increasing order. Errors name the file and line.
+pub fn read_rao_table(path: &Path) -> Result<RaoTable, String> {
+    use std::f64::consts::TAU;
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| format!("cannot read {}: {e}", path.display()))?;
+    let at = |n: usize| format!("{}:{}", path.display(), n + 1);
+    let mut unit: Option<&str> = None;
+    // (first column value, heading [deg], amplitudes, phases [deg]) in file order.
+    let mut groups: Vec<(f64, usize)> = Vec::new(); // (value, line of its first row)
+    let mut headings: Vec<f64> = Vec::new();
+    let mut group_headings: Vec<f64> = Vec::new();
+    let mut amplitudes: Vec<[f64; 6]> = Vec::new();
+    let mut phases: Vec<[f64; 6]> = Vec::new();
+    let mut last_line = 0;
+    let close_group = |groups: &[(f64, usize)],
+                       headings: &mut Vec<f64>,
+                       group: &mut Vec<f64>|
+     -> Result<(), String> {
+        if let Some(&(v, line)) = groups.last() {
+            if groups.len() == 1 {
+                *headings = group.clone();
+            } else if group != headings {
+                return Err(format!(
+                    "{}: the rows for {v} list the headings {group:?} [deg], but the first \
+                     group lists {headings:?}: every period or frequency needs the same headings",
+                    at(line)
+                ));
+            }
+        }
+        group.clear();
+        Ok(())
+    };
+    for (n, line) in text.lines().enumerate() {
+        let line = line.trim();
+        if line.is_empty() || line.starts_with('#') {
+            continue;
+        }
+        let fields: Vec<&str> = line
+            .split([',', ';', '\t', ' '])
+            .filter(|s| !s.is_empty())
+            .collect();
+        if unit.is_none() {
+            let first = fields.first().copied().unwrap_or("");
+            unit = Some(match first {
+                "period_s" => "period_s",
+                "frequency_hz" => "frequency_hz",
+                "omega_rad_s" => "omega_rad_s",
+                _ => {
+                    return Err(format!(
+                        "{}: the header must start with `period_s`, `frequency_hz` or \
+                         `omega_rad_s`, found `{first}`",
+                        at(n)
+                    ));
+                }
+            });
+            if fields.len() != 14 {
+                return Err(format!(
+                    "{}: the header names {} columns; an RAO table has 14",
+                    at(n),
+                    fields.len()
+                ));
+            }
+            continue;
+        }
+        let nums: Vec<f64> = fields
+            .iter()
+            .map(|s| s.parse::<f64>())
+            .collect::<Result<_, _>>()
+            .map_err(|_| format!("{}: not a number in `{line}`", at(n)))?;
+        if nums.len() != 14 {
+            return Err(format!(
+                "{}: expected 14 columns (first column, heading, then amplitude and phase of \
+                 6 DOFs), found {}",
+                at(n),
+                nums.len()
+            ));
+        }
+        if nums.iter().any(|x| !x.is_finite()) {
+            return Err(format!("{}: non-finite number in `{line}`", at(n)));
+        }
+        if !(nums[0] > 0.0) {
+            return Err(format!(
+                "{}: the period or frequency must be > 0, found {}",
+                at(n),
+                nums[0]
+            ));
+        }
+        let mut amp = [0.0; 6];
+        let mut phase = [0.0; 6];
+        for d in 0..6 {
+            amp[d] = nums[2 + 2 * d];
+            phase[d] = nums[3 + 2 * d];
+            if amp[d] < 0.0 {
+                return Err(format!(
+                    "{}: negative RAO amplitude {} of {}",
+                    at(n),
+                    amp[d],
+                    ["surge", "sway", "heave", "roll", "pitch", "yaw"][d]
+                ));
+            }
+        }
+        match groups.last() {
+            Some(&(v, _)) if nums[0] == v => {
+                if group_headings.last().is_some_and(|&h| nums[1] <= h) {
+                    return Err(format!(
+                        "{}: heading {} deg is not above the previous one ({}): list each \
+                         group's headings in increasing order",
+                        at(n),
+                        nums[1],
+                        group_headings.last().unwrap()
+                    ));
+                }
+            }
+            Some(&(v, _)) if nums[0] < v => {
+                return Err(format!(
+                    "{}: {} {} comes after {v}: rows must be sorted by increasing {}",
+                    at(n),
+                    unit.unwrap(),
+                    nums[0],
+                    unit.unwrap()
+                ));
+            }
+            _ => {
+                close_group(&groups, &mut headings, &mut group_headings)?;
+                groups.push((nums[0], n));
+            }
+        }
+        group_headings.push(nums[1]);
+        amplitudes.push(amp);
+        phases.push(phase);
+        last_line = n;
+    }
+    if groups.is_empty() {
+        return Err(format!("{}: the RAO table has no rows", path.display()));
+    }
+    close_group(&groups, &mut headings, &mut group_headings)?;
+    // To angular frequency, increasing; rotations to rad/m, phases to rad.
+    let nh = headings.len();
+    let mut order: Vec<usize> = (0..groups.len()).collect();
+    let omega = |v: f64| match unit.unwrap() {
+        "period_s" => TAU / v,
+        "frequency_hz" => TAU * v,
+        _ => v,
+    };
+    if unit == Some("period_s") {
+        order.reverse();
+    }
+    let frequencies: Vec<f64> = order.iter().map(|&g| omega(groups[g].0)).collect();
+    let mut amps = Vec::with_capacity(amplitudes.len());
+    let mut lags = Vec::with_capacity(amplitudes.len());
+    for &g in &order {
+        for j in 0..nh {
+            let mut a = amplitudes[g * nh + j];
+            for x in &mut a[3..] {
+                *x = x.to_radians();
+            }
+            amps.push(a);
+            lags.push(phases[g * nh + j].map(f64::to_radians));
+        }
+    }
+    let heading_rad: Vec<f64> = headings.iter().map(|h| h.to_radians()).collect();
+    RaoTable::new(frequencies, &heading_rad, &amps, &lags)
+        .map_err(|e| format!("{}: {e}", at(last_line)))
 }
 
 /// A motion parameter given as one number or one per axis, checked to be finite.
@@ -2098,6 +2723,8 @@ fn motion_name(kind: MotionKind) -> &'static str {
         MotionKind::CircularOrbit => "circular-orbit",
         MotionKind::TimeSeries => "time-series",
         MotionKind::VesselMotion => "vessel-motion",
+        MotionKind::Manoeuvre => "manoeuvre",
+        MotionKind::Rao => "rao",
     }
 }
 

@@ -456,6 +456,12 @@ pub enum MotionKind {
     /// The point rides on a vessel whose motion (t, x, y, z, roll, pitch, yaw) is read from a
     /// file: the point's `position` is its place on the vessel at rest.
     VesselMotion,
+    /// The point rides on a vessel doing a manoeuvre: straight run, turn, straight run; the
+    /// point's `position` is its place on the vessel (vessel axes, from the vessel origin).
+    Manoeuvre,
+    /// The point rides on a vessel moving in the waves as its RAO table says, on a mean
+    /// motion; the point's `position` is its place on the vessel.
+    Rao,
 }
 
 /// Coordinate plane of a circular orbit.
@@ -513,8 +519,9 @@ pub struct MotionSpec {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<Vec<[f64; 4]>>")]
     pub table: Option<Spanned<Vec<[f64; 4]>>>,
-    /// File relative to the scenario file: columns t, x, y, z [s, m] (`time-series`), or
-    /// t, x, y, z, roll, pitch, yaw [s, m, deg] (`vessel-motion`).
+    /// File relative to the scenario file: columns t, x, y, z [s, m] (`time-series`),
+    /// t, x, y, z, roll, pitch, yaw [s, m, deg] (`vessel-motion`), or the RAO table (`rao`,
+    /// docs/motions.md).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<String>")]
     pub file: Option<Spanned<String>>,
@@ -523,6 +530,56 @@ pub struct MotionSpec {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<f64>")]
     pub time_offset: Option<Spanned<f64>>,
+    /// Position of the vessel origin at t = 0 [m] (`manoeuvre`; `fixed` and
+    /// `constant-velocity` as a vessel's mean motion), default [0, 0, 0].
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<[f64; 3]>")]
+    pub start: Option<Spanned<[f64; 3]>>,
+    /// Vessel heading at t = 0 [deg], from +x toward +y (`manoeuvre`; `fixed` and
+    /// `constant-velocity` as a mean motion), default 0.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub heading: Option<Spanned<f64>>,
+    /// Speed along the track [m/s] (`manoeuvre`; or give `speed_knots`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub speed: Option<Spanned<f64>>,
+    /// Speed along the track [kn] (`manoeuvre`; or give `speed`), 1 kn = 1852/3600 m/s.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub speed_knots: Option<Spanned<f64>>,
+    /// Length of the straight run before the turn [m] (`manoeuvre`), default 0.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub straight_before: Option<Spanned<f64>>,
+    /// Radius of the turn's circular arc [m] (`manoeuvre`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub turn_radius: Option<Spanned<f64>>,
+    /// Heading change of the turn [deg], positive to port (counter-clockwise seen from
+    /// above), negative to starboard (`manoeuvre`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub turn_angle: Option<Spanned<f64>>,
+    /// Length of the straight run after the turn [m], at whose end the vessel comes to rest
+    /// (`manoeuvre`); omitted, it goes on for ever.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub straight_after: Option<Spanned<f64>>,
+    /// Time over which the speed builds up smoothly from rest [s] (`manoeuvre`), default 0
+    /// (impulsive start).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub build_up_time: Option<Spanned<f64>>,
+    /// Length of each curvature transition (clothoid) into and out of the turn [m]
+    /// (`manoeuvre`), default 0 (the curvature jumps to 1/R).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub transition_length: Option<Spanned<f64>>,
+    /// The vessel's mean motion (`rao`): a table of type `fixed`, `constant-velocity` or
+    /// `manoeuvre`; default fixed at `start` with `heading`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub mean: Option<Box<MotionSpec>>,
 }
 
 /// Line formulation.

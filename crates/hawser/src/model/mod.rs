@@ -12,7 +12,10 @@ pub use body::{Body, BodyKind, Displacement, Thrust, Wind};
 pub use line::{Formulation, Line, LineEnd, LineType, MassMatrix, Section, StrainMeasure};
 pub use motion::{Motion, ramp};
 pub use point::{Point, PointKind};
-pub use rigid_motion::{RigidKinematics, RigidMotion};
+pub use rigid_motion::{
+    Manoeuvre, ManoeuvreSpec, RaoMotion, RaoTable, RigidKinematics, RigidMotion, RigidTimeSeries,
+    euler_kinematics,
+};
 
 use crate::error::ModelError;
 use crate::math::Real;

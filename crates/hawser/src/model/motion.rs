@@ -1,5 +1,6 @@
-//! Prescribed motions of points (and, later, bodies).
+//! Prescribed motions of points.
 
+use super::RigidMotion;
 use crate::math::{Real, Vec3};
 use std::f64::consts::TAU;
 
@@ -59,6 +60,15 @@ pub enum Motion {
         times: Vec<Real>,
         /// Positions [m].
         positions: Vec<Vec3>,
+    },
+    /// A point fixed on a body (vessel) that moves as prescribed: r = r_o + R offset, with
+    /// velocity and acceleration from [`crate::model::RigidKinematics::point`] (exact for any
+    /// rigid motion: v = v_o + ω × ρ, a = a_o + α × ρ + ω × (ω × ρ), ρ = R offset).
+    Rigid {
+        /// The body's motion.
+        motion: Box<RigidMotion>,
+        /// The point in body axes, from the body origin [m].
+        offset: Vec3,
     },
 }
 
@@ -120,6 +130,7 @@ impl Motion {
                     p * ddg + dp * (2.0 * dg) + ddp * g,
                 )
             }
+            Motion::Rigid { motion, offset } => motion.kinematics(t).point(offset),
             Motion::TimeSeries { times, positions } => {
                 let n = times.len();
                 if t <= times[0] {
