@@ -3,13 +3,16 @@
 //!
 //! They are recomputed from the node positions and velocities in a workspace by the very
 //! functions the dynamics adds to the node forces ([`crate::formulation::fe::obstacle_contacts`],
-//! [`crate::formulation::hermite::obstacle_contacts`]), at the same quadrature points:
+//! [`crate::formulation::hermite::obstacle_contacts`]; for `dg` lines the contact law at the
+//! Gauss points of the last right-hand side, as its source term), at the same quadrature
+//! points:
 //!
 //! - force: the sum over every line and every contact point of −f·w [N], f [N/m] the contact
 //!   force per unit unstretched length on the cable there and w [m] its quadrature weight (for
 //!   `fe` half of each adjacent element at each node; for `hermite` the four Gauss points of
-//!   each element). It is minus the total contact force the lines receive, exactly (to
-//!   round-off) the sum of the obstacle terms in the node forces.
+//!   each element; for `dg` its P + 2 Gauss points, weight h/2 w_q). It is minus the total
+//!   contact force the lines receive, exactly (to round-off) the sum of the obstacle terms in
+//!   the node forces.
 //! - contact length: the sum of w over the contact points that penetrate, the unstretched
 //!   length of cable in contact [m] as the quadrature sees it (it moves in steps of a node's
 //!   share of an element).
@@ -64,7 +67,7 @@ fn contacts(
     if obstacles.is_empty() {
         return;
     }
-    for (l, lw) in system.lines.iter().zip(&ws.lines) {
+    for (li, (l, lw)) in system.lines.iter().zip(&ws.lines).enumerate() {
         let (q, qdot) = (&lw.position[..], &lw.velocity[..]);
         match l.kind {
             LineKind::Fe { .. } => {
@@ -76,6 +79,34 @@ fn contacts(
                 hermite::obstacle_contacts(&l.mesh, obstacles, time, q, qdot, |k, _, _, f, w| {
                     visit(k, f, w)
                 })
+            }
+            LineKind::Dg => {
+                let (Some(line), Some(dws)) = (&l.dg, &ws.dg[li]) else {
+                    continue;
+                };
+                // The source term of the dg right-hand side at its Gauss points, with the
+                // quadrature weight h/2 w_q of its projection.
+                for (k, obstacle) in obstacles.iter().enumerate() {
+                    let kin = obstacle.kinematics(time);
+                    for (e, el) in line.elements.iter().enumerate() {
+                        let sec = line.section(e);
+                        let lt = &sec.properties.line_type;
+                        for qp in 0..sec.basis.points {
+                            let p = el.point + qp;
+                            if let Some(pen) = obstacle.penetration(&kin, &dws.pos[p], lt.diameter)
+                            {
+                                let f = obstacle.contact_force(
+                                    &kin,
+                                    &pen,
+                                    &dws.nu[p],
+                                    lt.mass_per_length,
+                                    dws.stretch[p],
+                                );
+                                visit(k, f, 0.5 * el.length * sec.basis.weight[qp]);
+                            }
+                        }
+                    }
+                }
             }
         }
     }
