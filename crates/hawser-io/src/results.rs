@@ -129,7 +129,7 @@ impl RunWriter {
 
     fn write_sample(&mut self, system: &System, time: Real, ws: &Workspace) -> std::io::Result<()> {
         for (i, c) in self.channels.iter().enumerate() {
-            self.row[i] = c.value(system, ws);
+            self.row[i] = c.value_at(system, ws, time);
         }
         write!(self.timeseries, "{time}")?;
         for (v, s) in self.row.iter().zip(self.stats.iter_mut()) {

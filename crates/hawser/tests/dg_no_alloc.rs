@@ -1,6 +1,6 @@
 //! No allocation in the `dg` time loop: after warm-up, 200 SSP-RK3 steps and 200 right-hand
 //! sides of a two-section line with bending, bending damping, axial damping, drag, added
-//! mass, current, seabed contact and mixed orders allocate nothing.
+//! mass, current, seabed contact, a moving obstacle and mixed orders allocate nothing.
 
 mod alloc_count;
 mod dg_common;
@@ -8,9 +8,11 @@ use alloc_count::allocations_in;
 use dg_common::*;
 use hawser::formulation::dg::*;
 use hawser::math::{Real, Vec3};
+use hawser::model::Motion;
 use hawser::physics::environment::{Current, Environment};
 use hawser::physics::hydrodynamics::DragModel;
 use hawser::physics::material::AxialDamping;
+use hawser::physics::obstacles::{Obstacle, ObstacleShape};
 
 #[test]
 fn dg_time_loop_does_not_allocate() {
@@ -44,9 +46,22 @@ fn dg_time_loop_does_not_allocate() {
         ],
         [EndCondition::CLAMPED, EndCondition::PRESCRIBED_PINNED],
     );
+    // A moving sphere pressing on the line's middle (contact and friction at its points).
     let env = Environment {
         depth: 100.0,
         current: Current::Uniform(Vec3::new(0.5, 0.0, 0.0)),
+        obstacles: vec![Obstacle {
+            name: "rock".into(),
+            shape: ObstacleShape::Sphere { radius: 2.0 },
+            motion: Motion::ConstantVelocity {
+                start: Vec3::new(50.0, 0.0, -62.0),
+                velocity: Vec3::new(0.0, 0.1, 0.0),
+            },
+            stiffness: 1.0e4,
+            friction_coefficient: 0.3,
+            friction_velocity: 0.1,
+            ..Default::default()
+        }],
         ..Default::default()
     };
     let (pa, pb) = (Vec3::new(0.0, 0.0, -100.0), Vec3::new(100.0, 0.0, -20.0));

@@ -7,15 +7,18 @@
 //! a consistent-mass line with a free point mass; the same with lumped mass; and two lines
 //! sharing a free point (the dense shared-point solve) with a prescribed, time-series end, in
 //! water with current, an irregular sea, drag, added mass and seabed contact, under each
-//! scheme; and the same with one `hermite` line with bending, and with one `dg` line.
+//! scheme; the same with a fixed sphere and a moving cylinder in contact with a line; and the
+//! same with one `hermite` line with bending (and the obstacles), and with one `dg` line.
 
 mod alloc_count;
 mod common;
 use alloc_count::allocations_in;
 use common::*;
+use hawser::analysis::obstacles::{ObstacleLoad, obstacle_forces};
 use hawser::math::Vec3;
 use hawser::model::*;
 use hawser::physics::environment::Current;
+use hawser::physics::obstacles::{Obstacle, ObstacleDamping, ObstacleShape};
 use hawser::physics::waves::{IrregularSea, SeaState, Spectrum, Stretching, WaveSpec, Waves};
 use hawser::simulation::Simulation;
 use hawser::system::System;
@@ -150,6 +153,53 @@ fn time_loop_does_not_allocate() {
     });
     for scheme in [Scheme::Rk4, Scheme::SspRk3, Scheme::ThreeLevel] {
         check("two lines on a shared buoy", &model, scheme);
+    }
+
+    // Obstacles in contact with the lower line: a fixed sphere under its middle and a
+    // horizontal cylinder moving by a time series under its eighth node, with friction.
+    let sphere = Obstacle {
+        name: "rock".into(),
+        shape: ObstacleShape::Sphere { radius: 1.0 },
+        motion: Motion::Fixed {
+            position: Vec3::new(-50.0, 0.0, -41.0),
+        },
+        stiffness: 1.0e4,
+        damping: ObstacleDamping::Ratio(1.0),
+        friction_coefficient: 0.3,
+        friction_velocity: 0.1,
+    };
+    let pipe = Obstacle {
+        name: "pipe".into(),
+        shape: ObstacleShape::Cylinder {
+            radius: 0.6,
+            axis: Vec3::y(),
+            length: Some(4.0),
+        },
+        motion: Motion::TimeSeries {
+            times: vec![0.0, 1.0, 100.0],
+            positions: vec![
+                Vec3::new(-73.3, 0.0, -49.8),
+                Vec3::new(-73.1, 0.0, -49.8),
+                Vec3::new(-72.0, 0.0, -49.8),
+            ],
+        },
+        damping: ObstacleDamping::PerLength(100.0),
+        ..sphere.clone()
+    };
+    model.environment.obstacles = vec![sphere, pipe];
+    {
+        // Both touch the line's straight start.
+        let system = System::new(&model).unwrap();
+        let mut ws = system.workspace();
+        let y = system.straight_state();
+        let mut dydt = vec![0.0; y.len()];
+        system.rhs(0.0, &y, &mut dydt, &mut ws).unwrap();
+        let mut loads = [ObstacleLoad::default(); 2];
+        obstacle_forces(&system, &ws, 0.0, &mut loads);
+        assert!(loads.iter().all(|l| l.contact_length > 0.0), "{loads:?}");
+    }
+    for scheme in [Scheme::Rk4, Scheme::SspRk3, Scheme::ThreeLevel] {
+        check("two lines on a shared buoy, with obstacles", &model, scheme);
     }
 
     // The lower line in cubic Hermite elements with bending: the banded solve with a free

@@ -356,6 +356,7 @@ pub fn convert(
             points,
             lines,
             bodies: Vec::new(),
+            obstacles: Vec::new(),
         },
         notes: c.notes,
         key_names: c.key_names,

@@ -59,6 +59,9 @@ pub struct Scenario {
     /// Rigid bodies.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub bodies: Vec<BodySpec>,
+    /// Spheres and cylinders, fixed or moving, that lines touch.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub obstacles: Vec<ObstacleSpec>,
 }
 
 /// Integration scheme.
@@ -476,7 +479,7 @@ pub enum PlaneSpec {
     Yz,
 }
 
-/// `[points.motion]`.
+/// `[points.motion]` (and `[obstacles.motion]`).
 #[derive(Debug, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct MotionSpec {
@@ -856,4 +859,63 @@ pub struct BodySpec {
     /// Wind on a vessel's superstructure; none by default.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub wind: Option<WindSpec>,
+}
+
+/// Shape of an obstacle.
+#[derive(Clone, Copy, Debug, Deserialize, Serialize, JsonSchema, PartialEq, Eq)]
+#[serde(rename_all = "kebab-case")]
+pub enum ObstacleShapeSpec {
+    /// A sphere of `radius` about `position`.
+    Sphere,
+    /// A circular cylinder of `radius` along `axis` through `position`, finite or infinite.
+    Cylinder,
+}
+
+/// `[[obstacles]]`.
+#[derive(Debug, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct ObstacleSpec {
+    /// Name, used by channels (`NAME.force_x`, `NAME.contact_length`).
+    #[schemars(with = "String")]
+    pub name: Spanned<String>,
+    /// `"sphere"` or `"cylinder"`.
+    #[schemars(with = "ObstacleShapeSpec")]
+    pub shape: Spanned<ObstacleShapeSpec>,
+    /// Radius [m].
+    #[schemars(with = "f64")]
+    pub radius: Spanned<f64>,
+    /// Direction of a cylinder's axis [-] (normalised; it keeps its direction).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<[f64; 3]>")]
+    pub axis: Option<Spanned<[f64; 3]>>,
+    /// Length of a cylinder along its axis, centred on `position` [m]; infinite if omitted.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub length: Option<Spanned<f64>>,
+    /// Centre [m] (fixed; start of a `motion`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<[f64; 3]>")]
+    pub position: Option<Spanned<[f64; 3]>>,
+    /// Prescribed motion of the centre, as a point's `motion`; fixed if omitted.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub motion: Option<MotionSpec>,
+    /// Contact stiffness per unit length of cable [N/m²] (load per length per metre sunk in).
+    #[schemars(with = "f64")]
+    pub stiffness: Spanned<f64>,
+    /// Damping ratio of the normal contact [-], default 1 (critical, with the cable's mass).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub damping_ratio: Option<Spanned<f64>>,
+    /// Normal contact damping per unit length of cable [N·s/m²], instead of `damping_ratio`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub damping: Option<Spanned<f64>>,
+    /// Coulomb friction coefficient [-], default 0.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub friction_coefficient: Option<Spanned<f64>>,
+    /// Sliding speed over which friction builds up [m/s], default 0.01.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub friction_velocity: Option<Spanned<f64>>,
 }

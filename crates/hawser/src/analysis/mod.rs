@@ -3,6 +3,7 @@
 //! the independent steady-towing reference ([`steady_cable`]).
 
 pub mod modes;
+pub mod obstacles;
 pub mod resonance;
 pub mod steady_cable;
 
@@ -138,6 +139,19 @@ pub enum Channel {
         /// 0–5: fx, fy, fz, mx, my, mz.
         dof: usize,
     },
+    /// Component of the total contact force the lines exert on an obstacle [N]
+    /// ([`obstacles`]).
+    ObstacleForce {
+        /// Obstacle index in the environment.
+        obstacle: usize,
+        /// Axis.
+        axis: usize,
+    },
+    /// Unstretched length of cable in contact with an obstacle [m] ([`obstacles`]).
+    ObstacleContactLength {
+        /// Obstacle index in the environment.
+        obstacle: usize,
+    },
 }
 
 /// Channel suffixes of a body's motion, velocity and line load.
@@ -205,6 +219,16 @@ impl Channel {
             Channel::BodyLineLoad { body, dof } => {
                 format!("{}.{}", system.bodies[body].body.name, BODY_LINE_LOAD[dof])
             }
+            Channel::ObstacleForce { obstacle, axis } => {
+                let name = &system.environment.obstacles[obstacle].name;
+                format!("{name}.force_{}", AXES[axis])
+            }
+            Channel::ObstacleContactLength { obstacle } => {
+                format!(
+                    "{}.contact_length",
+                    system.environment.obstacles[obstacle].name
+                )
+            }
         }
     }
 
@@ -216,10 +240,13 @@ impl Channel {
             | Channel::EndNodeForce { .. }
             | Channel::NodeTension { .. }
             | Channel::ElementShearForce { .. }
-            | Channel::PointForce { .. } => "N",
+            | Channel::PointForce { .. }
+            | Channel::ObstacleForce { .. } => "N",
             Channel::ElementCurvature { .. } => "1/m",
             Channel::ElementBendingMoment { .. } => "N·m",
-            Channel::NodePosition { .. } | Channel::PointPosition { .. } => "m",
+            Channel::NodePosition { .. }
+            | Channel::PointPosition { .. }
+            | Channel::ObstacleContactLength { .. } => "m",
             Channel::NodeVelocity { .. } | Channel::PointVelocity { .. } => "m/s",
             Channel::ElementStrain { .. } => "-",
             Channel::BodyMotion { dof, .. } => ["m", "deg"][dof / 3],
@@ -228,7 +255,23 @@ impl Channel {
         }
     }
 
-    /// Value from a workspace that holds a right-hand-side evaluation.
+    /// Value from a workspace that holds a right-hand-side evaluation at time `time` [s]
+    /// (the obstacle channels need it for moving obstacles).
+    pub fn value_at(&self, system: &System, ws: &Workspace, time: Real) -> Real {
+        match *self {
+            Channel::ObstacleForce { obstacle, axis } => {
+                obstacles::obstacle_load(system, ws, time, obstacle).force[axis]
+            }
+            Channel::ObstacleContactLength { obstacle } => {
+                obstacles::obstacle_load(system, ws, time, obstacle).contact_length
+            }
+            _ => self.value(system, ws),
+        }
+    }
+
+    /// Value from a workspace that holds a right-hand-side evaluation; obstacle channels
+    /// with their obstacles where they are at t = 0 (use [`Channel::value_at`] for moving
+    /// obstacles).
     pub fn value(&self, system: &System, ws: &Workspace) -> Real {
         match *self {
             Channel::EndTension { line, end_b } => system.end_force(ws, line, end_b).norm(),
@@ -307,6 +350,9 @@ impl Channel {
                 }
                 load[dof]
             }
+            Channel::ObstacleForce { .. } | Channel::ObstacleContactLength { .. } => {
+                self.value_at(system, ws, 0.0)
+            }
         }
     }
 
@@ -330,6 +376,10 @@ impl Channel {
             Channel::BodyMotion { body, dof }
             | Channel::BodyVelocity { body, dof }
             | Channel::BodyLineLoad { body, dof } => body < system.bodies.len() && dof < 6,
+            Channel::ObstacleForce { obstacle, .. }
+            | Channel::ObstacleContactLength { obstacle } => {
+                obstacle < system.environment.obstacles.len()
+            }
         }
     }
 }

@@ -11,7 +11,8 @@
 //! dependent, ρ A (C_an (I − t tᵀ) + C_at t tᵀ), integrated with the same shape functions.
 //! Drag (eqs. 16, 19–23) and added mass are integrated with two-point Gauss quadrature of the
 //! linearly interpolated velocities (eq. 20); weight and buoyancy (eqs. 24–25) exactly,
-//! including the part of an element below the water surface; seabed contact at the nodes.
+//! including the part of an element below the water surface; seabed and obstacle contact at
+//! the nodes ([`obstacle_contacts`]).
 
 use super::{ElementState, LoadOptions, Mesh};
 use crate::formulation::fluid_load;
@@ -20,6 +21,7 @@ use crate::math::{Mat3, Real, Vec3};
 use crate::model::MassMatrix;
 use crate::physics::environment::Environment;
 use crate::physics::hydrodynamics::added_mass_matrix;
+use crate::physics::obstacles::{LineBall, Obstacle};
 
 /// Gauss points on [0, 1] for two-point quadrature (weight ½ each).
 const GAUSS: [Real; 2] = [0.5 - 0.288_675_134_594_812_9, 0.5 + 0.288_675_134_594_812_9];
@@ -28,7 +30,8 @@ const GAUSS: [Real; 2] = [0.5 - 0.288_675_134_594_812_9, 0.5 + 0.288_675_134_594
 /// [m/s] (nodes 0..=N, ends included) and, if asked, its mass blocks [kg] into `blocks`.
 ///
 /// `forces[i]` is the total force the line's physics puts on node i: tension, weight,
-/// buoyancy, drag, fluid inertia and seabed contact. End forces on attachments follow from it.
+/// buoyancy, drag, fluid inertia, seabed and obstacle contact. End forces on attachments
+/// follow from it.
 #[allow(clippy::too_many_arguments)]
 pub fn line_forces(
     line: &Mesh,
@@ -169,6 +172,65 @@ pub fn line_forces(
                     line.node_length(node),
                 );
                 forces[node] += f * (0.5 * l0);
+            }
+        }
+    }
+
+    // Obstacle contact by the same nodal quadrature.
+    if !env.obstacles.is_empty() {
+        obstacle_contacts(line, &env.obstacles, time, r, v, |_, node, f, w| {
+            forces[node] += f * w
+        });
+    }
+}
+
+/// Contact of an `fe` line with `obstacles` at time `time` [s], by the nodal quadrature of the
+/// seabed contact: each element contributes, at each of its two nodes, the contact force per
+/// unit unstretched length there ([`Obstacle::contact_force`], with the element's stretch
+/// L/L0) times half its unstretched length L0/2. Calls `visit(obstacle, node, f, w)` for each
+/// such contribution in contact: f [N/m] the force per unit length on the line, w [m] the
+/// weight, so that node `node` receives f·w [N]. Obstacles whose quick test
+/// ([`Obstacle::may_touch`] on a ball holding the line) fails are skipped with O(1) work.
+/// The dynamics ([`line_forces`]) and the obstacle channels ([`crate::analysis::obstacles`])
+/// both go through this function, so the channels are exactly the forces the nodes receive.
+pub fn obstacle_contacts(
+    line: &Mesh,
+    obstacles: &[Obstacle],
+    time: Real,
+    r: &[Vec3],
+    v: &[Vec3],
+    mut visit: impl FnMut(usize, usize, Vec3, Real),
+) {
+    let n = line.elements();
+    let mut bounds = LineBall::new();
+    r[..=n].iter().for_each(|p| bounds.add(p));
+    let (centre, radius) = bounds.ball();
+    let cable_radius = line
+        .sections
+        .iter()
+        .fold(0.0, |m: Real, s| m.max(0.5 * s.line_type.diameter));
+    for (k, obstacle) in obstacles.iter().enumerate() {
+        let kin = obstacle.kinematics(time);
+        if !obstacle.may_touch(&kin, &centre, radius + cable_radius) {
+            continue;
+        }
+        for e in 0..n {
+            let sec = line.section(e);
+            let lt = &sec.line_type;
+            let contact = [
+                obstacle.penetration(&kin, &r[e], lt.diameter),
+                obstacle.penetration(&kin, &r[e + 1], lt.diameter),
+            ];
+            if contact.iter().all(Option::is_none) {
+                continue;
+            }
+            let stretch = (r[e + 1] - r[e]).norm() * sec.inverse_length;
+            for (j, p) in contact.iter().enumerate() {
+                if let Some(p) = p {
+                    let node = e + j;
+                    let f = obstacle.contact_force(&kin, p, &v[node], lt.mass_per_length, stretch);
+                    visit(k, node, f, 0.5 * sec.element_length);
+                }
             }
         }
     }

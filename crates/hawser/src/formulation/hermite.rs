@@ -26,9 +26,10 @@
 //!   ds. |r''| is the curvature when |r'| = 1; for a stretched cable the error is O(ε) in the
 //!   bending term, well below the uncertainty of EI for cables (the usual gradient-deficient
 //!   ANCF cable element).
-//! - Morison drag and fluid inertia (SPEC §1, the shared [`crate::physics::hydrodynamics`])
-//!   and seabed contact (DG paper eqs. 15–16, [`crate::physics::seabed`]) per unit
-//!   unstretched length at the Gauss points, distributed with s_i.
+//! - Morison drag and fluid inertia (SPEC §1, the shared [`crate::physics::hydrodynamics`]),
+//!   seabed contact (DG paper eqs. 15–16, [`crate::physics::seabed`]) and obstacle contact
+//!   ([`crate::physics::obstacles`], [`obstacle_contacts`]) per unit unstretched length at the
+//!   Gauss points, distributed with s_i.
 //!
 //! The element couples the four consecutive vectors of its nodes (see
 //! [`vector_index`]), so the line's matrices are block-banded with bandwidth 3.
@@ -40,6 +41,7 @@ use crate::math::{Mat3, Real, Vec3};
 use crate::model::StrainMeasure;
 use crate::physics::environment::Environment;
 use crate::physics::hydrodynamics::added_mass_matrix;
+use crate::physics::obstacles::{LineBall, Obstacle};
 
 /// Options of a `hermite` line.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
@@ -308,6 +310,91 @@ pub fn line_forces(
         elements.curvature[e] = r1.cross(&r2).norm() / (stretch * stretch * stretch);
         elements.bending_moment[e] = (r2 * ei + combine(&d2, &ve) * zeta_b).norm();
         elements.shear_force[e] = (combine(&d3, &qe) * ei + combine(&d3, &ve) * zeta_b).norm();
+    }
+    // Obstacle contact at the same Gauss points, distributed with s_i.
+    if !env.obstacles.is_empty() {
+        obstacle_contacts(mesh, &env.obstacles, time, q, qdot, |_, idx, s, f, w| {
+            for i in 0..4 {
+                forces[idx[i]] += f * (w * s[i]);
+            }
+        });
+    }
+}
+
+/// The Bézier control points r_a, r_a + t_a l/3, r_b − t_b l/3, r_b of element e's cubic
+/// (with `qe` its r_a, t_a, r_b, t_b): the curve lies in their convex hull.
+#[inline]
+fn control_points(qe: &[Vec3; 4], l: Real) -> [Vec3; 4] {
+    [
+        qe[0],
+        qe[0] + qe[1] * (l / 3.0),
+        qe[2] - qe[3] * (l / 3.0),
+        qe[2],
+    ]
+}
+
+/// Contact of a `hermite` line with `obstacles` at time `time` [s], at the four Gauss points
+/// of every element (those of the distributed loads and the seabed): at each point in contact
+/// the force per unit unstretched length f [N/m] ([`Obstacle::contact_force`] with the
+/// stretch |r'|) is passed to `visit(obstacle, vectors, s, f, w)` with the element's vector
+/// indices, the shape functions s_i there and the quadrature weight w [m], so that vector
+/// `vectors[i]` receives the generalized force f·w·s_i. The total force on the line is the sum
+/// of f·w (s₁ + s₃ = 1 and the tangents' functions carry moments). An obstacle is skipped for
+/// the line, and then for an element, when it cannot reach a ball holding the Bézier control
+/// points ([`Obstacle::may_touch`]), which hold the curve. The dynamics ([`line_forces`]) and
+/// the obstacle channels ([`crate::analysis::obstacles`]) both use this function.
+pub fn obstacle_contacts(
+    mesh: &Mesh,
+    obstacles: &[Obstacle],
+    time: Real,
+    q: &[Vec3],
+    qdot: &[Vec3],
+    mut visit: impl FnMut(usize, &[usize; 4], &[Real; 4], Vec3, Real),
+) {
+    let n = mesh.elements();
+    let element = |e: usize| {
+        let idx = element_vectors(e, n);
+        (idx, [q[idx[0]], q[idx[1]], q[idx[2]], q[idx[3]]])
+    };
+    let mut bounds = LineBall::new();
+    let mut cable_radius: Real = 0.0;
+    for e in 0..n {
+        let sec = mesh.section(e);
+        let (_, qe) = element(e);
+        control_points(&qe, sec.element_length)
+            .iter()
+            .for_each(|p| bounds.add(p));
+        cable_radius = cable_radius.max(0.5 * sec.line_type.diameter);
+    }
+    let (centre, radius) = bounds.ball();
+    for (k, obstacle) in obstacles.iter().enumerate() {
+        let kin = obstacle.kinematics(time);
+        if !obstacle.may_touch(&kin, &centre, radius + cable_radius) {
+            continue;
+        }
+        for e in 0..n {
+            let sec = mesh.section(e);
+            let lt = &sec.line_type;
+            let l = sec.element_length;
+            let (idx, qe) = element(e);
+            let mut ball = LineBall::new();
+            control_points(&qe, l).iter().for_each(|p| ball.add(p));
+            let (c, rad) = ball.ball();
+            if !obstacle.may_touch(&kin, &c, rad + 0.5 * lt.diameter) {
+                continue;
+            }
+            let ve = [qdot[idx[0]], qdot[idx[1]], qdot[idx[2]], qdot[idx[3]]];
+            for &(xi, wg) in &GAUSS {
+                let (s, d1, _, _) = shape(xi, l);
+                let r = combine(&s, &qe);
+                if let Some(p) = obstacle.penetration(&kin, &r, lt.diameter) {
+                    let v = combine(&s, &ve);
+                    let stretch = combine(&d1, &qe).norm();
+                    let f = obstacle.contact_force(&kin, &p, &v, lt.mass_per_length, stretch);
+                    visit(k, &idx, &s, f, wg * l);
+                }
+            }
+        }
     }
 }
 

@@ -143,6 +143,11 @@ impl Model {
                  environment's depth and gravity (the wavenumbers depend on both)",
             );
         }
+        for o in &env.obstacles {
+            if let Err(why) = o.validate() {
+                return bad(format!("obstacle {}", o.name), &why);
+            }
+        }
         for t in &self.line_types {
             if !(t.diameter > 0.0) {
                 return bad(format!("line type {}: diameter", t.name), "must be > 0 m");

@@ -1,6 +1,7 @@
 //! Water, air, gravity, current and waves.
 
 use crate::math::{Real, Vec3};
+use crate::physics::obstacles::Obstacle;
 use crate::physics::waves::Waves;
 
 /// Standard gravity [m/s²] (SPEC §1).
@@ -10,7 +11,8 @@ pub const SEA_WATER_DENSITY: Real = 1025.0;
 /// Default air density [kg/m³] (SPEC §1).
 pub const AIR_DENSITY: Real = 1.225;
 
-/// The medium around a cable: water, air above z = 0, the seabed, the current and the waves.
+/// The medium around a cable: water, air above z = 0, the seabed, the current, the waves and
+/// the obstacles in the water.
 ///
 /// z is up and z = 0 is the still water level; the flat seabed is at z = −`depth`.
 /// Current and waves are superposed: in the water their velocities add, with no wave–current
@@ -33,6 +35,8 @@ pub struct Environment {
     /// Sea state; [`Waves::None`] by default. Build it with [`Waves::new`] for this
     /// environment's `depth` and `gravity`.
     pub waves: Waves,
+    /// Rigid spheres and cylinders, fixed or moving, that lines touch; none by default.
+    pub obstacles: Vec<Obstacle>,
 }
 
 impl Default for Environment {
@@ -45,6 +49,7 @@ impl Default for Environment {
             seabed: Default::default(),
             current: Current::None,
             waves: Waves::None,
+            obstacles: Vec::new(),
         }
     }
 }

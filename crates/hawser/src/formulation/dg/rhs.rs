@@ -15,6 +15,7 @@ use crate::formulation::fluid_load;
 use crate::math::{Real, Vec3, add3, get3, set3, solve3};
 use crate::physics::environment::Environment;
 use crate::physics::hydrodynamics::added_mass_matrix;
+use crate::physics::obstacles::total_force_at;
 
 /// Scratch of a line's right-hand side, sized once by [`DgWorkspace::new`]: values at the
 /// quadrature points, at the two ends of every element, at the interfaces, and the modes of
@@ -408,6 +409,9 @@ impl DgLine {
                         net_weight,
                         0.5 * el.length * b.weight[qp],
                     );
+                }
+                if !env.obstacles.is_empty() {
+                    f += total_force_at(&env.obstacles, time, &r, &nu, lt.diameter, gamma, l);
                 }
                 ws.source[p] = f;
             }
