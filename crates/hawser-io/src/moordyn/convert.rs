@@ -1331,6 +1331,7 @@ fn simulation_of(
             None
         },
         initial_condition: Some(InitialConditionSpec::Statics),
+        release: Vec::new(),
         channels,
     }
 }
