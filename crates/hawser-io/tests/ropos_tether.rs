@@ -86,6 +86,7 @@ fn slack_and_snap_at_1730_m() {
         let s = run(1730.0, 1.0, f, 1.0);
         assert!(s.slack, "slack at {f} Hz");
         let (cage, ship) = (s.cage_snap.unwrap(), s.ship_snap.unwrap());
+        assert!(s.taut_path, "at 1730 m only the lower tether slackens");
         let tau = 1730.0 / (45.5e6 / 3.01 as Real).sqrt();
         let travel = s.travel_time().unwrap();
         assert!(

@@ -90,6 +90,10 @@ pub struct TetherRun {
     pub cage_tension: Vec<Real>,
     /// Smallest element strain of line 0 ([`Channel::ElementStrain`]) [-]; ≤ 0 means slack.
     pub min_strain: Vec<Real>,
+    /// Strain of the element at the cage, line 0's last [-].
+    pub cage_strain: Vec<Real>,
+    /// Strain of the element at the ship, line 0's first [-].
+    pub ship_strain: Vec<Real>,
     /// Vertical position of the cage, line 0's end B [m].
     pub cage_z: Vec<Real>,
     /// Time step [s].
@@ -112,11 +116,14 @@ impl Observer for Recorder {
         for (end_b, v) in [(false, &mut r.ship_tension), (true, &mut r.cage_tension)] {
             v.push(Channel::EndTension { line: 0, end_b }.value(system, ws));
         }
+        let strain = |element| Channel::ElementStrain { line: 0, element }.value(system, ws);
         r.min_strain.push(
             (0..self.elements)
-                .map(|element| Channel::ElementStrain { line: 0, element }.value(system, ws))
+                .map(strain)
                 .fold(Real::INFINITY, Real::min),
         );
+        r.cage_strain.push(strain(self.elements - 1));
+        r.ship_strain.push(strain(0));
         r.cage_z.push(
             Channel::NodePosition {
                 line: 0,
@@ -181,10 +188,19 @@ pub struct TetherSummary {
     pub slack: bool,
     /// Time of the first slack sample [s].
     pub first_slack: Option<Real>,
+    /// Time of the first sample with the element at the cage slack [s].
+    pub first_cage_slack: Option<Real>,
+    /// Whether the element at the ship went slack at some sample.
+    pub ship_slack: bool,
     /// The first snap at the cage.
     pub cage_snap: Option<Snap>,
     /// That snap's arrival at the ship.
     pub ship_snap: Option<Snap>,
+    /// Whether the element at the ship stayed taut from the cage snap to its arrival at the
+    /// ship: the front then ran up a taut tether, at c = √(EA/γ0). Into a slack stretch a
+    /// snap front runs slower, at c √(ε⁺/(ε⁺ − ε⁻)) between the strains ε⁺ > 0 behind it and
+    /// ε⁻ < 0 ahead (the jump conditions of the bilinear law), so the travel time exceeds L/c.
+    pub taut_path: bool,
 }
 
 impl TetherSummary {
@@ -205,8 +221,10 @@ impl TetherSummary {
 /// extremes are taken from time `from` [s] on (after the build-up of the motion).
 ///
 /// - Slack: the smallest element strain ≤ 0 at a sample.
-/// - The first snap at the cage: at the first sample taut again after the first slack sample
-///   (`t_taut`), with `before` the cage tension at the last slack sample and `peak` the largest
+/// - The first snap at the cage: at the first sample at which the element at the cage is taut
+///   again after its first slack sample (`t_taut`; other parts of the tether may still be
+///   slack: a short tether also slackens at the ship), with `before` the cage tension at the
+///   element's last slack sample and `peak` the largest
 ///   cage tension in [t_taut, t_taut + τ] (before the front's reflection from the ship returns,
 ///   2τ after it left); its time is the upward crossing of (before + peak)/2 after the last
 ///   slack sample.
@@ -227,7 +245,9 @@ pub fn summarise(run: &TetherRun, length: Real, wave_speed: Real, from: Real) ->
         }
     }
     let first_slack = run.min_strain.iter().position(|&e| e <= 0.0);
-    let taut_again = first_slack.and_then(|i| (i..t.len()).find(|&j| run.min_strain[j] > 0.0));
+    let first_cage_slack = run.cage_strain.iter().position(|&e| e <= 0.0);
+    let taut_again =
+        first_cage_slack.and_then(|i| (i..t.len()).find(|&j| run.cage_strain[j] > 0.0));
     let cage_snap = taut_again.and_then(|j| {
         let last_slack = t[j - 1];
         let before = cage[j - 1];
@@ -255,6 +275,14 @@ pub fn summarise(run: &TetherRun, length: Real, wave_speed: Real, from: Real) ->
             peak_time,
         })
     });
+    let taut_path = match (cage_snap, ship_snap) {
+        (Some(c), Some(p)) => t
+            .iter()
+            .zip(&run.ship_strain)
+            .filter(|(ti, _)| (c.time..=p.time).contains(*ti))
+            .all(|(_, &e)| e > 0.0),
+        _ => false,
+    };
     TetherSummary {
         static_ship: ship[0],
         static_cage: cage[0],
@@ -262,8 +290,11 @@ pub fn summarise(run: &TetherRun, length: Real, wave_speed: Real, from: Real) ->
         ship_max,
         slack: first_slack.is_some(),
         first_slack: first_slack.map(|i| t[i]),
+        first_cage_slack: first_cage_slack.map(|i| t[i]),
+        ship_slack: run.ship_strain.iter().any(|&e| e <= 0.0),
         cage_snap,
         ship_snap,
+        taut_path,
     }
 }
 
@@ -283,6 +314,13 @@ mod tests {
             run.time.push(ti);
             let slack = (1.0..2.0).contains(&ti);
             run.min_strain.push(if slack { -1e-3 } else { 1e-3 });
+            // The ship end slackens too, later: the cage snap is still the first at the cage.
+            run.ship_strain.push(if (3.0..3.5).contains(&ti) {
+                -1e-3
+            } else {
+                1e-3
+            });
+            run.cage_strain.push(if slack { -1e-3 } else { 1e-3 });
             run.cage_tension.push(if ti < 1.0 {
                 5e3
             } else if ti < 2.0025 {
@@ -296,6 +334,9 @@ mod tests {
         let s = summarise(&run, 1000.0, 2000.0, 0.5);
         assert!(s.slack);
         assert_eq!(s.first_slack, Some(1.0));
+        assert_eq!(s.first_cage_slack, Some(1.0));
+        assert!(s.ship_slack);
+        assert!(s.taut_path);
         let c = s.cage_snap.unwrap();
         assert!((c.time - 2.0025).abs() < 1e-3, "{c:?}");
         assert_eq!((c.before, c.peak), (0.0, 1e4));
