@@ -905,7 +905,9 @@ fn ropos_section(w: &mut String, img: &Path) {
          peak [kN] | travel [s] | L/c [s] | travel error |\n\
          |---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
     );
+    // |travel / (L/c) − 1| at L = 1730 m (the paper's case), and every length's errors.
     let mut worst_travel: Real = 0.0;
+    let mut travel_errors: Vec<(Real, Real)> = Vec::new();
     for r in &records {
         let tau = r.length / r.wave_speed;
         let (ct, cb, cp) = r.cage_snap.map_or(("–".into(), "–".into(), 0.0), |s| {
@@ -926,7 +928,11 @@ fn ropos_section(w: &mut String, img: &Path) {
         if let Some(t) = travel
             && r.taut_path
         {
-            worst_travel = worst_travel.max((t / tau - 1.0).abs());
+            let e = t / tau - 1.0;
+            travel_errors.push((r.length, e));
+            if r.length == 1730.0 {
+                worst_travel = worst_travel.max(e.abs());
+            }
         }
         let _ = writeln!(
             w,
@@ -960,7 +966,17 @@ fn ropos_section(w: &mut String, img: &Path) {
     let slow_slack = count(&|r| r.frequency < 0.15 && r.slack);
     let slow = count(&|r| r.frequency < 0.15);
     let holds = |ok: bool| if ok { "**holds**" } else { "**does not hold**" };
-    let snaps = count(&|r| r.ship_snap.is_some() && r.taut_path);
+    let snaps = count(&|r| r.ship_snap.is_some() && r.taut_path && r.length == 1730.0);
+    let range = |l: Real| {
+        let e: Vec<Real> = travel_errors
+            .iter()
+            .filter(|x| x.0 == l)
+            .map(|x| 100.0 * x.1)
+            .collect();
+        let lo = e.iter().copied().fold(Real::INFINITY, Real::min);
+        let hi = e.iter().copied().fold(Real::NEG_INFINITY, Real::max);
+        format!("{lo:+.1} to {hi:+.1} %")
+    };
     let through_slack = count(&|r| r.ship_snap.is_some() && !r.taut_path);
     let _ = writeln!(
         w,
@@ -981,13 +997,26 @@ fn ropos_section(w: &mut String, img: &Path) {
          {fast_slack} of the {fast} cases at 0.2 and 0.25 Hz; slack in {slow_slack} of the \
          {slow} cases at 0.1 Hz: {}.\n\
          - **The snap reaches the ship L/c after it leaves the cage** (c = {c:.0} m/s; the \
-         paper's 3870 m/s and 0.445 s at 1730 m): the largest travel-time error of the \
-         {snaps} snaps whose front ran up a taut tether is {:.2} %; within 2 %: {}.",
+         paper's 3870 m/s and 0.445 s, stated for its L = 1730 m): at 1730 m the largest \
+         travel-time error of the {snaps} snaps is {:.2} %; within 2 %: {}. For the shorter \
+         tethers the measured times are {} (975 m), {} (500 m) and {} (200 m) off L/c, so \
+         the 2 % does **not** hold there, for reasons of the event rather than of the wave \
+         speed: (1) the snap at the cage builds up in steps over 10–30 ms (partial snaps while \
+         the element at the cage is still slack: at 500 m, α = 1, 0.2 Hz the cage tension \
+         jumps at 8.875, 8.895 and 8.900 s), and the axial damping spreads the front over \
+         ≈ 10–50 ms, both comparable to L/c = 51–250 ms; the first steps send fronts that \
+         reach the ship before the half-jump time at the cage says, so the measured travel is \
+         short by a few ms, as at 1730 m (−3.9 ms there, −0.9 %); (2) at 200 and 500 m the \
+         tether also goes slack at the ship (T_ship min 0), and (†) a front running into \
+         slack cable is slower than c.",
         wet.map_or("not run".into(), |x| format!("{:.2} kN", x / 1e3)),
         holds(wet.is_some_and(|x| (x / 44e3 - 1.0).abs() < 0.01)),
         holds(fast_slack == fast && slow_slack == 0 && fast + slow == 48),
         100.0 * worst_travel,
-        holds(snaps > 0 && worst_travel < 0.02)
+        holds(snaps > 0 && worst_travel < 0.02),
+        range(975.0),
+        range(500.0),
+        range(200.0)
     );
     let _ = writeln!(
         w,
@@ -1097,13 +1126,16 @@ fn ropos_section(w: &mut String, img: &Path) {
         let mut curves = Vec::new();
         for &a in &ALPHAS {
             let Some(r) = find(l, a, 0.2) else { continue };
+            let Some(t0) = r.cage_snap.map(|c| c.0) else {
+                continue;
+            };
             curves.push(series(
                 &format!("cage, α {a}"),
-                r.first_snap.iter().map(|&(t, _, c)| (t, c / 1e3)),
+                r.first_snap.iter().map(|&(t, _, c)| (t - t0, c / 1e3)),
             ));
             curves.push(series(
                 &format!("ship, α {a}"),
-                r.first_snap.iter().map(|&(t, s, _)| (t, s / 1e3)),
+                r.first_snap.iter().map(|&(t, s, _)| (t - t0, s / 1e3)),
             ));
         }
         if curves.is_empty() {
@@ -1113,8 +1145,10 @@ fn ropos_section(w: &mut String, img: &Path) {
             img,
             &plot(
                 &format!("ropos_first_snap_{l:.0}"),
-                &format!("ROPOS: the first snap, L = {l:.0} m, f = 0.2 Hz"),
-                "t [s]",
+                &format!(
+                    "ROPOS: the first snap, L = {l:.0} m, f = 0.2 Hz (t0: its time at the cage)"
+                ),
+                "t − t0 [s]",
                 "T [kN]",
                 false,
                 curves,
