@@ -49,7 +49,9 @@ fn release_starts_every_formulation_from_the_held_equilibrium() {
         let system = System::new(&m).unwrap();
         let sol = solve_with_release(&m, &system, &StaticOptions::default()).unwrap();
         let mut ws = system.workspace();
-        system.rhs(0.0, &sol.state, &mut vec![0.0; sol.state.len()], &mut ws);
+        system
+            .rhs(0.0, &sol.state, &mut vec![0.0; sol.state.len()], &mut ws)
+            .unwrap();
         let pin = Channel::EndTension {
             line: 0,
             end_b: false,
@@ -82,7 +84,8 @@ fn release_starts_every_formulation_from_the_held_equilibrium() {
         let hs = System::new(&hanging).unwrap();
         let h = hawser::statics::solve(&hs, None, &StaticOptions::default()).unwrap();
         let mut hws = hs.workspace();
-        hs.rhs(0.0, &h.state, &mut vec![0.0; h.state.len()], &mut hws);
+        hs.rhs(0.0, &h.state, &mut vec![0.0; h.state.len()], &mut hws)
+            .unwrap();
         let z: Real = Channel::NodePosition {
             line: 0,
             node: n,
@@ -126,7 +129,9 @@ fn as_defined_start_of_a_dg_line() {
     let sol = hawser::statics::solve(&system, None, &StaticOptions::default()).unwrap();
     let sample = |y: &[Real]| {
         let mut ws = system.workspace();
-        system.rhs(0.0, y, &mut vec![0.0; y.len()], &mut ws);
+        system
+            .rhs(0.0, y, &mut vec![0.0; y.len()], &mut ws)
+            .unwrap();
         let pin = Channel::EndTension {
             line: 0,
             end_b: false,
