@@ -123,9 +123,14 @@ enum Command {
         /// Mass matrix to measure (`fe` lines): lumped, consistent or both.
         #[arg(long, default_value = "both")]
         mass: String,
-        /// Formulation of every line: as-is (the scenario's), fe or hermite.
+        /// Formulation of every line: as-is (the scenario's), fe, hermite or dg.
         #[arg(long, default_value = "as-is")]
         formulation: String,
+        /// Polynomial order P of every section with `--formulation dg` (default: the
+        /// scenario's, 4 if none); `dg` lines count Σ(P + 1) nodal degrees of freedom per
+        /// element as their nodes.
+        #[arg(long, value_name = "P")]
+        order: Option<usize>,
         /// Integration scheme: as-is (the scenario's), rk4, ssp-rk3, three-level or all.
         #[arg(long, default_value = "as-is")]
         scheme: String,
@@ -170,6 +175,7 @@ fn main() -> ExitCode {
             dt,
             mass,
             formulation,
+            order,
             scheme,
             vessel_motion,
             json,
@@ -180,6 +186,7 @@ fn main() -> ExitCode {
             BenchChoice {
                 mass: &mass,
                 formulation: &formulation,
+                order,
                 scheme: &scheme,
             },
             vessel_motion,
@@ -304,7 +311,8 @@ fn initial_state(
 ) -> Result<(Vec<Real>, Option<StaticSolution>), StaticsError> {
     match model.settings.initial_condition {
         InitialCondition::Statics => {
-            let sol = hawser::statics::solve(system, None, &StaticOptions::default())?;
+            let sol =
+                hawser::statics::solve_with_release(model, system, &StaticOptions::default())?;
             Ok((sol.state.clone(), Some(sol)))
         }
         InitialCondition::AsDefined => {
@@ -580,6 +588,7 @@ impl Observer for Null {
 struct BenchChoice<'a> {
     mass: &'a str,
     formulation: &'a str,
+    order: Option<usize>,
     scheme: &'a str,
 }
 
@@ -613,11 +622,16 @@ fn bench(
         "as-is" => None,
         "fe" => Some(Formulation::Fe),
         "hermite" => Some(Formulation::Hermite),
+        "dg" => Some(Formulation::Dg),
         other => {
-            eprintln!("error: --formulation {other}: expected as-is, fe or hermite");
+            eprintln!("error: --formulation {other}: expected as-is, fe, hermite or dg");
             return Ok(ExitCode::from(2));
         }
     };
+    if choice.order.is_some() && formulation != Some(Formulation::Dg) {
+        eprintln!("error: --order applies to --formulation dg only");
+        return Ok(ExitCode::from(2));
+    }
     let schemes: Vec<Option<Scheme>> = match choice.scheme {
         "as-is" => vec![None],
         "rk4" => vec![Some(Scheme::Rk4)],
@@ -633,8 +647,8 @@ fn bench(
             return Ok(ExitCode::from(2));
         }
     };
-    // Hermite lines have one (consistent) mass: measure it once.
-    let masses = if formulation == Some(Formulation::Hermite) {
+    // Hermite and dg lines have one mass: measure it once.
+    let masses = if matches!(formulation, Some(Formulation::Hermite | Formulation::Dg)) {
         &masses[masses.len() - 1..]
     } else {
         masses
@@ -649,6 +663,11 @@ fn bench(
             l.mass_matrix = mass;
             if let Some(f) = formulation {
                 l.formulation = f;
+            }
+            if let Some(p) = choice.order {
+                for s in &mut l.sections {
+                    s.order = p;
+                }
             }
         }
         if let Some(s) = scheme {
@@ -674,13 +693,23 @@ fn bench(
         let start = Instant::now();
         sim.run(model.settings.duration, &mut Null)?;
         let wall = start.elapsed().as_secs_f64();
-        let nodes: usize = system.lines.iter().map(|l| l.nodes()).sum();
+        // Nodal degrees of freedom: N + 1 nodes of fe and hermite lines (their end nodes
+        // included), Σ(P + 1) per element of dg lines (modal coefficients of q per element).
+        let nodes: usize = model
+            .lines
+            .iter()
+            .map(|l| match l.formulation {
+                Formulation::Dg => l.sections.iter().map(|s| s.elements * (s.order + 1)).sum(),
+                _ => l.elements() + 1,
+            })
+            .sum();
         let steps = sim.steps_done();
         let node_steps = nodes as f64 * steps as f64 / wall;
         let evals = node_steps * sim.evaluations_per_step() as f64;
         let (limit, _) = system.stable_step(model.settings.scheme);
         results.push(serde_json::json!({
             "formulation": system.lines.first().map_or("fe", |l| l.kind.name()),
+            "order": model.lines.first().filter(|l| l.formulation == Formulation::Dg).map(|l| l.sections[0].order),
             "scheme": format!("{:?}", model.settings.scheme).to_lowercase(),
             "stable_step": limit,
             "mass_matrix": format!("{mass:?}").to_lowercase(),
@@ -712,9 +741,14 @@ fn bench(
             "node-evals/s"
         );
         for r in &results {
+            let form = r["formulation"].as_str().unwrap_or("");
+            let form = match r["order"].as_u64() {
+                Some(p) => format!("{form} P{p}"),
+                None => form.to_string(),
+            };
             out!(
                 "{:<8} {:<11} {:<12} {:>6} {:>10.3e} {:>10.3e} {:>9} {:>9.3} {:>16.3e} {:>16.3e}",
-                r["formulation"].as_str().unwrap_or(""),
+                form,
                 r["scheme"].as_str().unwrap_or(""),
                 r["mass_matrix"].as_str().unwrap_or(""),
                 r["nodes"],

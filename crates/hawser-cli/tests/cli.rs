@@ -193,3 +193,38 @@ fn help() {
     assert_eq!(out.status.code(), Some(0));
     insta::assert_snapshot!(String::from_utf8_lossy(&out.stdout));
 }
+
+/// `hawser bench --formulation dg --order P` runs every line as `dg` of order P and counts its
+/// nodal degrees of freedom as Σ(P + 1) per element; `--order` without dg is refused.
+#[test]
+fn bench_dg_counts_modal_degrees_of_freedom() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let file = root.join("examples/snapping_cable_127.toml");
+    let file = file.to_str().unwrap();
+    let out = hawser(&[
+        "bench",
+        file,
+        "--formulation",
+        "dg",
+        "--order",
+        "2",
+        "--scheme",
+        "ssp-rk3",
+        "--duration",
+        "0.02",
+        "--json",
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let runs: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let r = &runs[0];
+    assert_eq!(r["formulation"], "dg");
+    assert_eq!(r["order"], 2);
+    assert_eq!(r["nodes"], 5 * 3, "5 elements of order 2: {r}");
+    assert!(r["node_steps_per_s"].as_f64().unwrap() > 0.0);
+    let refused = hawser(&["bench", file, "--order", "2", "--duration", "0.02"]);
+    assert_eq!(refused.status.code(), Some(2));
+}

@@ -811,3 +811,35 @@ fn never_panics_on_garbage_lines() {
     }
     assert!(bad.is_empty(), "parse panicked on:\n{}", bad.join("\n"));
 }
+
+#[test]
+fn release_of_an_unknown_point() {
+    let text = mutate("channels = [", "release = [\"boy\"]\nchannels = [");
+    let msg = error(&text);
+    assert_located(
+        &msg,
+        line_of(&text, "release"),
+        "simulation.release[0]",
+        true,
+        true,
+    );
+    assert!(msg.contains("did you mean `buoy`?"), "{msg}");
+    insta::assert_snapshot!(msg);
+}
+
+#[test]
+fn release_of_a_fixed_point() {
+    let text = mutate(
+        "channels = [",
+        "release = [\"buoy\", \"anchor\"]\nchannels = [",
+    );
+    let msg = error(&text);
+    assert_located(
+        &msg,
+        line_of(&text, "release"),
+        "simulation.release[1]",
+        true,
+        true,
+    );
+    insta::assert_snapshot!(msg);
+}

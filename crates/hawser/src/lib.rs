@@ -23,6 +23,7 @@ pub mod physics;
 pub mod simulation;
 pub mod statics;
 pub mod system;
+pub mod validation;
 pub mod verification;
 
 pub use error::{ModalError, ModelError, SimulationError, StaticsError};

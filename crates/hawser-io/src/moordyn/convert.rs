@@ -1343,6 +1343,7 @@ fn simulation_of(
             None
         },
         initial_condition: Some(InitialConditionSpec::Statics),
+        release: Vec::new(),
         channels,
     }
 }

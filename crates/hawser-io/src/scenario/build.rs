@@ -223,6 +223,7 @@ pub fn build_scenario(
         bodies,
         settings,
     };
+    model.settings.release = build_release(&mut b, scenario.simulation.as_ref(), &model);
     let channels = build_channels(&mut b, scenario.simulation.as_ref(), &model);
     if b.errors.is_empty()
         && let Err(e) = model.validate()
@@ -3428,6 +3429,57 @@ fn build_settings(
         }
     }
     (s, span)
+}
+
+/// `simulation.release`: names of free points held in the initial statics, as point indices.
+fn build_release(b: &mut Builder, spec: Option<&SimulationSpec>, model: &Model) -> Vec<usize> {
+    let mut out = Vec::new();
+    let Some(sim) = spec else { return out };
+    for (k, name) in sim.release.iter().enumerate() {
+        let key = format!("simulation.release[{k}]");
+        let n = name.get_ref();
+        let Some(p) = model.point_index(n) else {
+            let hint = match closest(n, model.points.iter().map(|p| p.name.as_str())) {
+                Some(c) => format!("did you mean `{c}`?"),
+                None => "list the names of free points ([[points]] with type = \"free\")".into(),
+            };
+            let d = b
+                .diag(Some(name.span()), &key, format!("no point is named `{n}`"))
+                .expected("the name of a free point")
+                .hint(hint);
+            b.push(d);
+            continue;
+        };
+        if !matches!(model.points[p].kind, PointKind::Free { .. }) {
+            let d = b
+                .diag(
+                    Some(name.span()),
+                    &key,
+                    format!("point `{n}` is not a free point: only free points can be released"),
+                )
+                .expected("the name of a free point")
+                .hint(
+                    "make it `type = \"free\"` (mass 0 at the end of a single dg line makes a \
+                     free cable end); the statics hold it at its `position`",
+                );
+            b.push(d);
+            continue;
+        }
+        if out.contains(&p) {
+            let d = b
+                .diag(
+                    Some(name.span()),
+                    &key,
+                    format!("point `{n}` is released twice"),
+                )
+                .expected("each point once")
+                .hint("remove the repeated name");
+            b.push(d);
+            continue;
+        }
+        out.push(p);
+    }
+    out
 }
 
 fn build_channels(

@@ -116,6 +116,11 @@ pub struct SimulationSpec {
     /// `"statics"` (default) or `"as-defined"`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub initial_condition: Option<InitialConditionSpec>,
+    /// Free points held fixed at their `position` in the initial static equilibrium and
+    /// released at t = 0 (a release test, e.g. the DG paper's swinging cable).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    #[schemars(with = "Vec<String>")]
+    pub release: Vec<Spanned<String>>,
     /// Extra channels, e.g. `"L1.node10.tension"`, `"buoy.z"`; `"NAME = CHANNEL"` names the
     /// column (`"FairTen1 = L1.end_b.node_force"`).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]

@@ -71,6 +71,11 @@ pub struct Settings {
     pub snapshot_interval: Option<Real>,
     /// Initial condition.
     pub initial_condition: InitialCondition,
+    /// Free points held fixed at their `position` while the initial static equilibrium is
+    /// solved, and free from t = 0 (indices into [`Model::points`]): a release test, such as
+    /// the swinging cable of the DG paper (§5), whose second pin is pulled at t = 0. See
+    /// [`crate::statics::solve_with_release`]. Empty by default.
+    pub release: Vec<usize>,
 }
 
 impl Default for Settings {
@@ -83,6 +88,7 @@ impl Default for Settings {
             output_interval: 0.1,
             snapshot_interval: None,
             initial_condition: InitialCondition::Statics,
+            release: Vec::new(),
         }
     }
 }
@@ -249,6 +255,22 @@ impl Model {
                 "simulation".into(),
                 "duration must be ≥ 0 s and output_interval > 0 s",
             );
+        }
+        for (k, &p) in s.release.iter().enumerate() {
+            let what = format!("simulation.release[{k}]");
+            match self.points.get(p) {
+                None => return bad(what, "refers to a point that does not exist"),
+                Some(pt) if !matches!(pt.kind, PointKind::Free { .. }) => {
+                    return bad(
+                        format!("{what} (point {})", pt.name),
+                        "is not a free point: only free points can be released",
+                    );
+                }
+                _ => {}
+            }
+            if s.release[..k].contains(&p) {
+                return bad(what, "names a point released twice");
+            }
         }
         Ok(())
     }

@@ -6,6 +6,8 @@ mod bodies;
 pub mod catenary;
 mod dynamic_relaxation;
 mod newton;
+mod release;
 
 pub use bodies::solve_with_bodies;
 pub use newton::{StaticOptions, StaticSolution, catenary_seed, evaluate, residual, solve};
+pub use release::solve_with_release;

@@ -134,8 +134,24 @@ pub fn residual(
     worst
 }
 
-/// Seeds the lines of `y` with elastic catenaries between their current end positions.
+/// Seeds the lines of `y` with elastic catenaries between their current end positions. `dg`
+/// lines take the L2 projection of their hermite twin's seed ([`System::statics_twin`],
+/// [`System::state_from_twin`] without refinement).
 pub fn catenary_seed(system: &System, y: &mut [Real], ws: &mut Workspace) {
+    if system.has_dg_lines() {
+        // A dg line's state is modal: seed its hermite twin and project the cubic shape.
+        let twin = system.statics_twin();
+        let mut y_twin = twin.straight_state();
+        for (p, off) in system.layout.point_offset.iter().enumerate() {
+            if let (Some(o), Some(ot)) = (off, twin.layout.point_offset[p]) {
+                y_twin[ot..ot + 6].copy_from_slice(&y[*o..o + 6]);
+            }
+        }
+        catenary_seed(&twin, &mut y_twin, &mut twin.workspace());
+        y.copy_from_slice(&system.state_from_twin(&twin, &y_twin, false));
+        system.point_kinematics(0.0, y, ws);
+        return;
+    }
     system.point_kinematics(0.0, y, ws);
     let env = &system.environment;
     for (li, l) in system.lines.iter().enumerate() {
