@@ -375,7 +375,9 @@ impl System {
                         order: s.order,
                     })
                     .collect();
-                Box::new(DgLine::new(&specs, [EndCondition::PINNED_JOINT; 2]))
+                let mut line = DgLine::new(&specs, [EndCondition::PINNED_JOINT; 2]);
+                line.modal_filter = l.modal_filter;
+                Box::new(line)
             });
             let LineEnd::Point(end_a) = l.end_a;
             let LineEnd::Point(end_b) = l.end_b;

@@ -147,6 +147,7 @@ fn time_loop_does_not_allocate() {
         formulation: Formulation::Fe,
         mass_matrix: MassMatrix::Lumped,
         strain_measure: Default::default(),
+        modal_filter: hawser::formulation::dg::line::DEFAULT_MODAL_FILTER,
         clamp: [None; 2],
         end_a: LineEnd::Point(1),
         end_b: LineEnd::Point(2),

@@ -3080,6 +3080,17 @@ fn build_lines(
                 Some(StrainSpec::SmallStrain) => StrainMeasure::SmallStrain,
                 _ => StrainMeasure::Exact,
             },
+            modal_filter: b.opt(
+                &l.modal_filter,
+                &k("modal_filter"),
+                hawser::formulation::dg::line::DEFAULT_MODAL_FILTER,
+                Check {
+                    ok: |x| (0.0..=1.0).contains(&x),
+                    expected: "-, 0 to 1 (0: no filter)",
+                },
+                "the default 0.05 keeps slack dg lines from spurious high-mode velocities; \
+                 larger values damp more of the motion (docs/dg.md)",
+            ),
             clamp: [(&l.clamp_a, "clamp_a"), (&l.clamp_b, "clamp_b")].map(|(c, key)| {
                 let c = c.as_ref()?;
                 let d = b.vec3(c, &k(key));

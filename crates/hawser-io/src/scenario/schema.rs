@@ -665,6 +665,11 @@ pub struct LineSpec {
     /// `"exact"` (default) or `"small-strain"` (`hermite`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub strain: Option<StrainSpec>,
+    /// Strength of the modal velocity filter of a `dg` line [-], 0 to 1; default 0.05; 0
+    /// switches it off (docs/dg.md).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub modal_filter: Option<Spanned<f64>>,
     /// Clamped end A: the direction [-] of the line's tangent there, held fixed (`hermite`);
     /// default pinned.
     #[serde(default, skip_serializing_if = "Option::is_none")]

@@ -109,6 +109,10 @@ pub struct Line {
     pub mass_matrix: MassMatrix,
     /// Axial strain measure (for `hermite`; `fe` always uses the exact ε = L/L0 − 1).
     pub strain_measure: StrainMeasure,
+    /// Strength c_f [-] of the modal velocity filter of a `dg` line
+    /// ([`crate::formulation::dg::DgLine::modal_filter`]; 0 switches it off); ignored by `fe`
+    /// and `hermite`.
+    pub modal_filter: Real,
     /// Clamped ends (A, B): the direction of the line's tangent ∂r/∂s held fixed in space at
     /// that end, pointing from A toward B (formulations with bending); `None`: pinned.
     pub clamp: [Option<crate::math::Vec3>; 2],

@@ -11,6 +11,14 @@ use crate::model::LineType;
 /// nonlinear fluxes (î = q/|q|, T(ε)) small.
 pub const EXTRA_POINTS: usize = 1;
 
+/// Default strength c_f of the modal velocity filter ([`DgLine::modal_filter`]): the smallest
+/// of 0.01, 0.05, 0.1 that brings a rope started compressed to rest on its anchors for every
+/// order P = 2..8 (tests/dg_system.rs); 0.01 does not for P ≥ 4.
+pub const DEFAULT_MODAL_FILTER: Real = 0.05;
+
+/// Exponent of the modal filter's profile φ_k = ((k − 1)/(P − 1))^s ([`DgLine::modal_filter`]).
+pub const FILTER_EXPONENT: i32 = 4;
+
 /// A section of a `dg` line as the user gives it.
 #[derive(Clone, Debug)]
 pub struct DgSectionSpec {
@@ -179,6 +187,19 @@ pub struct DgLine {
     pub beta: Real,
     /// Whether any section has bending stiffness or bending damping.
     pub bending: bool,
+    /// Strength c_f [-] of the modal velocity filter (0: none; [`DEFAULT_MODAL_FILTER`] by
+    /// default). In each element of order P ≥ 2 the velocity modes k ≥ 2 decay at the rate
+    /// σ_e φ_k, σ_e = c_f λ (2P + 1)/h, φ_k = ((k − 1)/(P − 1))^[`FILTER_EXPONENT`], added
+    /// to dv_k/dt (a spectral-vanishing-viscosity form of the modal filter of Hesthaven &
+    /// Warburton, *Nodal DG methods*, 2008, §5.3; not in the DG paper). Why: with the
+    /// bilinear (tension-only) law a slack stretch lets the aliasing of the nonlinear flux
+    /// T(ε) î feed a velocity pattern in the highest modes which the Lax–Friedrichs flux
+    /// cannot see (its values at the element ends match across interfaces while the q
+    /// jumps cancel their flux); left alone it settles into a steady state whose drag holds
+    /// part of the line's weight (a rope 40 % light on its anchors, docs/dg.md). Modes 0 and
+    /// 1 (momentum, and the rotation of a straight element) are never damped, nor is a line at
+    /// rest; the smooth verification cases move by less than their tolerances.
+    pub modal_filter: Real,
     state_len: usize,
     point_len: usize,
     mode_len: usize,
@@ -224,6 +245,7 @@ impl DgLine {
             ends,
             beta: 0.0,
             bending,
+            modal_filter: DEFAULT_MODAL_FILTER,
             state_len: state,
             point_len: point,
             mode_len: mode,
