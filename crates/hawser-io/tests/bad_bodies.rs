@@ -183,7 +183,7 @@ fn unknown_key() {
 }
 
 #[test]
-fn motion_is_not_a_key_yet() {
+fn motion_on_a_free_body() {
     let text = mutate(
         "type = \"free\"",
         "type = \"free\"\nmotion = { type = \"fixed\" }",
@@ -194,8 +194,132 @@ fn motion_is_not_a_key_yet() {
         line_of(&text, "motion"),
         "bodies[0].motion",
         true,
+        false,
+    );
+    assert!(msg.contains("type = \"prescribed\""), "{msg}");
+    insta::assert_snapshot!(msg);
+}
+
+/// The base body made prescribed: its pose lines replaced by `motion`.
+fn prescribed(motion: &str) -> String {
+    mutate(
+        "type = \"free\"\nposition = [-100.0, 0.0, -50.0]\norientation = [0.0, 0.0, 180.0]",
+        &format!("type = \"prescribed\"\n{motion}"),
+    )
+}
+
+/// A valid prescribed body: `motion` builds, and the pose is the motion's at t = 0.
+#[test]
+fn prescribed_body_builds() {
+    let text = prescribed(
+        "motion = { type = \"constant-velocity\", start = [5.0, 0.0, -20.0], heading = 90.0, velocity = [0.0, 2.0, 0.0] }",
+    );
+    let s = scenario::parse(Path::new(FILE), &text).unwrap_or_else(|e| panic!("{e}"));
+    let b = &s.model.bodies[0];
+    assert_eq!(b.position, hawser::math::Vec3::new(5.0, 0.0, -20.0));
+    assert!((b.orientation.euler_angles().2 - std::f64::consts::FRAC_PI_2).abs() < 1e-15);
+    match &b.kind {
+        hawser::model::BodyKind::Prescribed(m) => {
+            let k = m.kinematics(10.0);
+            assert_eq!(k.position, hawser::math::Vec3::new(5.0, 20.0, -20.0));
+        }
+        k => panic!("{k:?}"),
+    }
+}
+
+#[test]
+fn prescribed_body_without_motion() {
+    let text = prescribed("");
+    let msg = error(&text);
+    assert_located(
+        &msg,
+        line_of(&text, "type = \"prescribed\""),
+        "bodies[0].motion",
+        true,
         true,
     );
+    insta::assert_snapshot!(msg);
+}
+
+#[test]
+fn prescribed_body_with_a_position() {
+    let text = prescribed(
+        "position = [0.0, 0.0, -5.0]\nmotion = { type = \"constant-velocity\", velocity = [1.0, 0.0, 0.0] }",
+    );
+    let msg = error(&text);
+    assert_located(
+        &msg,
+        line_of(&text, "position = [0.0, 0.0, -5.0]"),
+        "bodies[0].position",
+        true,
+        false,
+    );
+    assert!(msg.contains("`start`"), "{msg}");
+    insta::assert_snapshot!(msg);
+}
+
+#[test]
+fn prescribed_body_with_a_point_motion() {
+    let text = prescribed("motion = { type = \"sinusoid\", amplitude = 1.0, period = 10.0 }");
+    let msg = error(&text);
+    assert_located(
+        &msg,
+        line_of(&text, "motion ="),
+        "bodies[0].motion.type",
+        true,
+        true,
+    );
+    assert!(msg.contains("not a motion of a vessel or body"), "{msg}");
+    insta::assert_snapshot!(msg);
+}
+
+#[test]
+fn prescribed_manoeuvre_without_turn_radius() {
+    let text =
+        prescribed("motion = { type = \"manoeuvre\", speed_knots = 12.0, turn_angle = 270.0 }");
+    let msg = error(&text);
+    assert_located(
+        &msg,
+        line_of(&text, "motion ="),
+        "bodies[0].motion.turn_radius",
+        true,
+        true,
+    );
+    insta::assert_snapshot!(msg);
+}
+
+#[test]
+fn prescribed_motion_key_of_another_type() {
+    let text = prescribed(
+        "motion = { type = \"manoeuvre\", speed = 6.0, turn_radius = 150.0, turn_angle = 90.0, velocity = [1.0, 0.0, 0.0] }",
+    );
+    let msg = error(&text);
+    assert_located(
+        &msg,
+        line_of(&text, "motion ="),
+        "bodies[0].motion.velocity",
+        true,
+        false,
+    );
+    assert!(
+        msg.contains("does not apply to a `manoeuvre` motion"),
+        "{msg}"
+    );
+    insta::assert_snapshot!(msg);
+}
+
+#[test]
+fn prescribed_rao_with_a_missing_file() {
+    let text = prescribed("motion = { type = \"rao\", file = \"no_such_raos.csv\" }");
+    let msg = error(&text);
+    assert_located(
+        &msg,
+        line_of(&text, "motion ="),
+        "bodies[0].motion.file",
+        true,
+        true,
+    );
+    assert!(msg.contains("no_such_raos.csv"), "{msg}");
     insta::assert_snapshot!(msg);
 }
 
@@ -478,4 +602,26 @@ fn documented_example_is_valid() {
     let text = format!("{lines_only}\n{example}");
     let s = scenario::parse(Path::new(FILE), &text).unwrap_or_else(|e| panic!("{e}"));
     assert_eq!(s.model.bodies.len(), 2);
+}
+
+/// The `[bodies.motion]` example of docs/scenario.md is valid: a ship on the 270° turn with a
+/// tow point on it.
+#[test]
+fn documented_prescribed_example_is_valid() {
+    let doc = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../../docs/scenario.md"),
+    )
+    .expect("docs/scenario.md");
+    let start = doc
+        .find("# A survey vessel")
+        .expect("the prescribed body example");
+    let example = &doc[start..start + doc[start..].find("```").unwrap()];
+    let lines_only = &BASE[..BASE.find("[[bodies]]").unwrap()].replace("\"ship\"", "\"deck\"");
+    let text = format!("{lines_only}\n{example}");
+    let s = scenario::parse(Path::new(FILE), &text).unwrap_or_else(|e| panic!("{e}"));
+    let k = match &s.model.bodies[0].kind {
+        hawser::model::BodyKind::Prescribed(m) => m.kinematics(1000.0),
+        k => panic!("{k:?}"),
+    };
+    assert!((k.velocity.norm() - 12.0 * 1852.0 / 3600.0).abs() < 1e-9);
 }

@@ -211,7 +211,7 @@ pub fn build_scenario(
                 .map(|l| (l.name.get_ref().clone(), "line")),
         )
         .collect();
-    let bodies = bodies::build_bodies(&mut b, &scenario.bodies, &taken);
+    let bodies = bodies::build_bodies(&mut b, &scenario.bodies, &taken, &environment);
     let mut environment = environment;
     environment.obstacles = build_obstacles(&mut b, scenario, &environment);
     let (settings, time_step_span) = build_settings(&mut b, scenario.simulation.as_ref());

@@ -709,6 +709,9 @@ pub enum BodyKindSpec {
     Free,
     /// Held at its `position` and `orientation`.
     Fixed,
+    /// Moves as its `motion` table says (a vessel, a test rig): any rigid motion of
+    /// `[points.motion]` that a vessel takes.
+    Prescribed,
 }
 
 /// An inertia tensor: principal moments or a full matrix.
@@ -808,11 +811,16 @@ pub struct BodySpec {
     /// Name, used for channels and results.
     #[schemars(with = "String")]
     pub name: Spanned<String>,
-    /// `"free"` or `"fixed"`.
+    /// `"free"`, `"fixed"` or `"prescribed"`.
     #[serde(rename = "type")]
     #[schemars(with = "BodyKindSpec")]
     pub kind: Spanned<BodyKindSpec>,
-    /// Position of the body origin [m] (at t = 0 for free bodies).
+    /// The motion of a `prescribed` body: `fixed`, `constant-velocity`, `manoeuvre`,
+    /// `vessel-motion` or `rao`, with the keys of `[points.motion]`; it places the body
+    /// origin (`start`, `heading` or the file), so `position` and `orientation` are not given.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub motion: Option<MotionSpec>,
+    /// Position of the body origin [m] (at t = 0 for free bodies; not for prescribed ones).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<[f64; 3]>")]
     pub position: Option<Spanned<[f64; 3]>>,

@@ -1,9 +1,10 @@
 //! `[[bodies]]`: rigid bodies, checked and converted into [`hawser::model::Body`].
 
-use super::{Builder, Check, NON_NEGATIVE, POSITIVE, span_of};
+use super::{Builder, Check, NON_NEGATIVE, POSITIVE, build_rigid_motion, span_of};
 use crate::scenario::schema::*;
 use hawser::math::{Mat3, Quat, Vec3, Vec6};
 use hawser::model::{Body, BodyKind, Displacement, RigidMotion, Thrust, Wind};
+use hawser::physics::environment::Environment;
 use std::collections::HashMap;
 use toml::Spanned;
 
@@ -15,11 +16,13 @@ pub fn orientation_from_degrees(roll_pitch_yaw: [f64; 3]) -> Quat {
 }
 
 /// Builds the bodies; every problem becomes a diagnostic. `taken` maps the names of points
-/// and lines (the channel namespace bodies share) to what they are.
+/// and lines (the channel namespace bodies share) to what they are. `env` drives the RAO
+/// motions of prescribed bodies (the same waves as the lines).
 pub(super) fn build_bodies(
     b: &mut Builder,
     specs: &[BodySpec],
     taken: &HashMap<String, &str>,
+    env: &Environment,
 ) -> Vec<Body> {
     let mut out = Vec::new();
     let mut index: HashMap<String, usize> = HashMap::new();
@@ -60,8 +63,33 @@ pub(super) fn build_bodies(
             b.push(d);
         }
 
+        let prescribed = *s.kind.get_ref() == BodyKindSpec::Prescribed;
+        // A prescribed body is placed by its motion (`start`, `heading` or the file); a pose
+        // given beside it would be a second, conflicting, answer.
+        if prescribed {
+            for (key, span) in [
+                ("position", span_of(&s.position)),
+                ("orientation", span_of(&s.orientation)),
+            ] {
+                if let Some(span) = span {
+                    let d = b
+                        .diag(
+                            Some(span),
+                            &k(key),
+                            format!("a prescribed body takes its `{key}` from its motion"),
+                        )
+                        .hint(
+                            "remove it; give the body origin's place at t = 0 as `start` and \
+                             `heading` in `[bodies.motion]` (a `vessel-motion` file gives the \
+                             whole pose)",
+                        );
+                    b.push(d);
+                }
+            }
+        }
         let position = match &s.position {
             Some(p) => b.vec3(p, &k("position")),
+            None if prescribed => Vec3::zeros(),
             None => {
                 let d = b
                     .diag(
@@ -200,12 +228,64 @@ pub(super) fn build_bodies(
             ),
             centre: centre(b, &w.centre, "wind.centre"),
         });
-        let kind = match s.kind.get_ref() {
-            BodyKindSpec::Free => BodyKind::Free,
-            BodyKindSpec::Fixed => BodyKind::Prescribed(RigidMotion::Fixed {
-                position,
-                orientation,
-            }),
+        let kind = match (s.kind.get_ref(), &s.motion) {
+            (BodyKindSpec::Prescribed, Some(m)) => {
+                BodyKind::Prescribed(build_rigid_motion(b, m, &k("motion"), env))
+            }
+            (BodyKindSpec::Prescribed, None) => {
+                let d = b
+                    .diag(
+                        Some(s.kind.span()),
+                        &k("motion"),
+                        format!("prescribed body `{name}` has no `motion`"),
+                    )
+                    .expected(
+                        "a `[bodies.motion]` table of type `fixed`, `constant-velocity`, \
+                         `manoeuvre`, `vessel-motion` or `rao`",
+                    )
+                    .hint(
+                        "add e.g. `motion = { type = \"constant-velocity\", velocity = [2.0, \
+                         0.0, 0.0] }`, or make it `type = \"fixed\"`",
+                    );
+                b.push(d);
+                BodyKind::Free
+            }
+            (kind, motion) => {
+                if let Some(m) = motion {
+                    let d = b
+                        .diag(
+                            Some(m.kind.span()),
+                            &k("motion"),
+                            format!(
+                                "a `{}` body has no `motion`",
+                                match kind {
+                                    BodyKindSpec::Free => "free",
+                                    _ => "fixed",
+                                }
+                            ),
+                        )
+                        .hint(
+                            "give the body `type = \"prescribed\"` to move it as the motion \
+                             says, or remove the `motion` table",
+                        );
+                    b.push(d);
+                }
+                match kind {
+                    BodyKindSpec::Fixed => BodyKind::Prescribed(RigidMotion::Fixed {
+                        position,
+                        orientation,
+                    }),
+                    _ => BodyKind::Free,
+                }
+            }
+        };
+        // A prescribed body starts where its motion is at t = 0.
+        let (position, orientation) = match &kind {
+            BodyKind::Prescribed(m) if prescribed => {
+                let k0 = m.kinematics(0.0);
+                (k0.position, k0.orientation)
+            }
+            _ => (position, orientation),
         };
         out.push(Body {
             name,
@@ -467,7 +547,7 @@ mod tests {
             errors: Vec::new(),
         };
         let taken = HashMap::from([("anchor".to_string(), "point")]);
-        let bodies = build_bodies(&mut b, &specs.bodies, &taken);
+        let bodies = build_bodies(&mut b, &specs.bodies, &taken, &Environment::default());
         (bodies, b.errors.iter().map(|d| d.to_string()).collect())
     }
 
