@@ -306,6 +306,63 @@ pub fn relax_with_bodies(system: &System) -> Option<Vec<Real>> {
     Some(y)
 }
 
+/// Per free body: its group (the free bodies joined to it through lines and points), its rank
+/// within the group, and the largest group size.
+fn body_groups(system: &System) -> (Vec<usize>, Vec<usize>, usize) {
+    let nb = system.free_bodies.len();
+    let mut parent: Vec<usize> = (0..nb).collect();
+    fn find(parent: &mut [usize], mut i: usize) -> usize {
+        while parent[i] != i {
+            parent[i] = parent[parent[i]];
+            i = parent[i];
+        }
+        i
+    }
+    // Each point's free body, or the lines joining them through free points: join every body
+    // reached from a line's ends, spreading through free points (a few sweeps suffice for the
+    // chains of lines met in practice; bodies left apart only cost more columns).
+    let body_of = |p: usize| match system.points[p].kind {
+        PointKind::Body { body, .. } => system.bodies[body].free_index,
+        _ => None,
+    };
+    let mut point_group: Vec<Option<usize>> = (0..system.points.len()).map(body_of).collect();
+    for _ in 0..system.lines.len().max(1) {
+        let mut changed = false;
+        for l in &system.lines {
+            let free = |p: usize| system.points[p].free_index.is_some() || body_of(p).is_some();
+            match (point_group[l.end_a], point_group[l.end_b]) {
+                (Some(a), Some(b)) => {
+                    let (ra, rb) = (find(&mut parent, a), find(&mut parent, b));
+                    if ra != rb {
+                        parent[ra] = rb;
+                        changed = true;
+                    }
+                }
+                (Some(a), None) if free(l.end_b) => {
+                    point_group[l.end_b] = Some(a);
+                    changed = true;
+                }
+                (None, Some(b)) if free(l.end_a) => {
+                    point_group[l.end_a] = Some(b);
+                    changed = true;
+                }
+                _ => {}
+            }
+        }
+        if !changed {
+            break;
+        }
+    }
+    let group: Vec<usize> = (0..nb).map(|f| find(&mut parent, f)).collect();
+    let mut count = vec![0; nb];
+    let mut rank = vec![0; nb];
+    for f in 0..nb {
+        rank[f] = count[group[f]];
+        count[group[f]] += 1;
+    }
+    (group, rank, count.into_iter().max().unwrap_or(0))
+}
+
 /// Newton on the free bodies' poses from `poses`, the twin's lines warm-started from `warm`.
 fn newton_on_poses(
     system: &System,
@@ -323,25 +380,41 @@ fn newton_on_poses(
         .sum::<Real>()
         .max(1.0);
     let tolerance = 1e-6 * weight;
+    let (group, rank, colours) = body_groups(system);
+    let nb = system.free_bodies.len();
     let (mut r, mut twin, mut sol) = residual(system, &poses, warm.as_deref(), options)?;
     let mut iterations = sol.iterations;
     for _ in 0..30 {
         if r.amax() <= tolerance {
             break;
         }
+        // Bodies in different groups (joined by no line) do not load each other: one line
+        // statics perturbs a degree of freedom of one body in every group at once.
         let mut jac = DMatrix::zeros(n, n);
-        for c in 0..n {
-            let step = if c % 6 < 3 { 1e-4 } else { 1e-5 };
-            let mut delta = DVector::zeros(n);
-            delta[c] = step;
-            let (rc, _, s) = residual(
-                system,
-                &moved(system, &poses, &delta),
-                Some(&sol.state),
-                options,
-            )?;
-            iterations += s.iterations;
-            jac.set_column(c, &((rc - &r) / step));
+        for colour in 0..colours {
+            for dof in 0..6 {
+                let step = if dof < 3 { 1e-4 } else { 1e-5 };
+                let mut delta = DVector::zeros(n);
+                for f in 0..nb {
+                    if rank[f] == colour {
+                        delta[6 * f + dof] = step;
+                    }
+                }
+                let (rc, _, s) = residual(
+                    system,
+                    &moved(system, &poses, &delta),
+                    Some(&sol.state),
+                    options,
+                )?;
+                iterations += s.iterations;
+                for f in (0..nb).filter(|&f| rank[f] == colour) {
+                    for g in (0..nb).filter(|&g| group[g] == group[f]) {
+                        for i in 0..6 {
+                            jac[(6 * g + i, 6 * f + dof)] = (rc[6 * g + i] - r[6 * g + i]) / step;
+                        }
+                    }
+                }
+            }
         }
         // Levenberg–Marquardt: a shift of 1e-6 of the largest stiffness keeps directions
         // without stiffness (free yaw) in place.
