@@ -315,6 +315,11 @@ fn initial_state(
                 hawser::statics::solve_with_release(model, system, &StaticOptions::default())?;
             Ok((sol.state.clone(), Some(sol)))
         }
+        InitialCondition::SteadyTow => {
+            // The system carries the tow velocity: its statics are the steady tow.
+            let sol = hawser::statics::solve(system, None, &StaticOptions::default())?;
+            Ok((sol.state.clone(), Some(sol)))
+        }
         InitialCondition::AsDefined => {
             let mut ws = system.workspace();
             let mut y = system.straight_state();
@@ -540,7 +545,87 @@ fn statics(file: &Path, json: bool) -> Result<ExitCode> {
             );
         }
     }
+    for &b in &system.free_bodies {
+        let k = &ws.bodies[b];
+        let (roll, pitch, yaw) = k.orientation.euler_angles();
+        out!(
+            "body {:<11} at [{:.4}, {:.4}, {:.4}] m, roll {:.3}°, pitch {:.3}°, yaw {:.3}°",
+            system.bodies[b].body.name,
+            k.position.x,
+            k.position.y,
+            k.position.z,
+            roll.to_degrees(),
+            pitch.to_degrees(),
+            yaw.to_degrees()
+        );
+    }
+    if system.tow_velocity != hawser::math::Vec3::zeros() {
+        steady_tow_report(&system, &ws);
+    }
     Ok(ExitCode::SUCCESS)
+}
+
+/// `hawser statics` on a steady tow: the tow velocity, and every free point's and free
+/// body's place relative to the towing vessel (the first prescribed point, or the origin of the
+/// first prescribed body), along the tow (ahead +, astern −), across it (to port +) and in
+/// height, as the elastic-link paper reports the vehicle relative to the vessel (§5).
+fn steady_tow_report(system: &System, ws: &Workspace) {
+    use hawser::math::Vec3;
+    use hawser::model::{BodyKind, PointKind};
+    let v = system.tow_velocity;
+    out!(
+        "steady tow at [{:.4}, {:.4}, {:.4}] m/s ({:.4} m/s): the equilibrium in the frame \
+         moving with the vessel; every node, point and body moves at this velocity",
+        v.x,
+        v.y,
+        v.z,
+        v.norm()
+    );
+    let vessel = system
+        .points
+        .iter()
+        .position(|p| matches!(p.kind, PointKind::Prescribed(_)))
+        .map(|i| (system.points[i].name.clone(), ws.points[i].position))
+        .or_else(|| {
+            system
+                .bodies
+                .iter()
+                .enumerate()
+                .find(|(_, b)| matches!(b.body.kind, BodyKind::Prescribed(_)))
+                .map(|(i, b)| (b.body.name.clone(), ws.bodies[i].position))
+        });
+    let Some((name, origin)) = vessel else {
+        return;
+    };
+    let ahead = v.normalize();
+    let port = Vec3::z().cross(&ahead);
+    let rel = |x: Vec3| {
+        let d = x - origin;
+        (d.dot(&ahead), d.dot(&port), d.z)
+    };
+    out!(
+        "relative to {name}: {:<16} {:>12} {:>12} {:>12}",
+        "",
+        "along [m]",
+        "across [m]",
+        "height [m]"
+    );
+    for (i, p) in system.points.iter().enumerate() {
+        if p.free_index.is_some() {
+            let (a, c, h) = rel(ws.points[i].position);
+            out!("  point {:<26} {:>12.4} {:>12.4} {:>12.4}", p.name, a, c, h);
+        }
+    }
+    for &b in &system.free_bodies {
+        let (a, c, h) = rel(ws.bodies[b].position);
+        out!(
+            "  body {:<27} {:>12.4} {:>12.4} {:>12.4}",
+            system.bodies[b].body.name,
+            a,
+            c,
+            h
+        );
+    }
 }
 
 fn check(file: &Path, deck: &DeckArgs) -> Result<ExitCode> {

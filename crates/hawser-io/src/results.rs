@@ -343,6 +343,13 @@ pub fn state_json(system: &System, ws: &Workspace, time: Real, state: &[Real]) -
 
 /// The static solution as JSON: per line node positions, node tensions and the force each end
 /// exerts on its attachment; per point its position.
+/// A steady tow adds `tow_velocity` [m/s], the velocity of the frame it was solved in.
 pub fn statics_json(system: &System, ws: &Workspace) -> Value {
-    json!({"lines": lines_json(system, ws, false), "points": points_json(system, ws, false)})
+    let mut v =
+        json!({"lines": lines_json(system, ws, false), "points": points_json(system, ws, false)});
+    if system.tow_velocity != hawser::math::Vec3::zeros() {
+        let t = system.tow_velocity;
+        v["tow_velocity"] = json!([t.x, t.y, t.z]);
+    }
+    v
 }

@@ -70,15 +70,27 @@ const VELOCITY_STEP: Real = 1e-6;
 const POINT_POSITION_STEP: Real = 1e-6;
 
 /// Sets the workspace's kinematics to the static state `y`: positions from the state,
-/// prescribed points at their t = 0 positions, every velocity zero.
-pub(crate) fn kinematics_at_rest(system: &System, y: &[Real], ws: &mut Workspace) {
+/// prescribed points at their t = 0 positions, every velocity zero; in a steady tow
+/// ([`System::tow_velocity`] V ≠ 0) every point and line node moves at `load_factor`·V instead
+/// (the frame moving with the vessel, scaled with the current by load continuation), line
+/// tangents and bodies' rotations at rest.
+pub(crate) fn kinematics_at_rest(
+    system: &System,
+    y: &[Real],
+    load_factor: Real,
+    ws: &mut Workspace,
+) {
+    let v = system.tow_velocity * load_factor;
     system.point_kinematics(0.0, y, ws);
     for k in ws.points.iter_mut() {
-        k.velocity = Vec3::zeros();
+        k.velocity = v;
     }
     system.gather_lines(y, ws);
-    for lw in ws.lines.iter_mut() {
-        lw.velocity.iter_mut().for_each(|v| *v = Vec3::zeros());
+    for (li, lw) in ws.lines.iter_mut().enumerate() {
+        let l = &system.lines[li];
+        for (j, x) in lw.velocity.iter_mut().enumerate() {
+            *x = if l.is_tangent(j) { Vec3::zeros() } else { v };
+        }
     }
 }
 
@@ -91,7 +103,7 @@ pub(crate) fn line_forces_at_rest(
     with_mass: bool,
     ws: &mut Workspace,
 ) {
-    kinematics_at_rest(system, y, ws);
+    kinematics_at_rest(system, y, current_factor, ws);
     for (li, l) in system.lines.iter().enumerate() {
         let lw = &mut ws.lines[li];
         line_forces(
@@ -127,7 +139,7 @@ pub fn force_jacobian(
     ws: &mut Workspace,
 ) {
     let options = LoadOptions { current_factor };
-    kinematics_at_rest(system, y, ws);
+    kinematics_at_rest(system, y, current_factor, ws);
     let env = &system.environment;
     let mut base: Vec<Vec3> = Vec::new();
     let mut plus: Vec<Vec3> = Vec::new();

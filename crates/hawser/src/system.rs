@@ -240,6 +240,12 @@ pub struct System {
     pub point_slot: Vec<Option<usize>>,
     /// State layout.
     pub layout: Layout,
+    /// Velocity of the frame the statics are solved in [m/s]: the tow velocity V of a steady
+    /// tow ([`crate::model::InitialCondition::SteadyTow`], [`crate::model::tow_velocity`]),
+    /// zero otherwise. The static residuals, force Jacobians and end forces are evaluated with
+    /// every material point moving at V (line tangents and body rotations at rest), so drag
+    /// sees u − V and seabed friction opposes V; the dynamics do not use it.
+    pub tow_velocity: Vec3,
 }
 
 /// A rigid body of the system.
@@ -391,7 +397,9 @@ impl System {
                 dg,
             });
         }
-        Self::from_parts(model.environment.clone(), lines, points, bodies)
+        let mut system = Self::from_parts(model.environment.clone(), lines, points, bodies)?;
+        system.tow_velocity = model.statics_frame_velocity()?;
+        Ok(system)
     }
 
     /// Finishes the assembly from lines and points: free ends of `dg` lines, the `dg` end
@@ -510,6 +518,7 @@ impl System {
                 body_offset,
                 len,
             },
+            tow_velocity: Vec3::zeros(),
         })
     }
 
@@ -586,8 +595,10 @@ impl System {
                 }
             })
             .collect();
-        Self::from_parts(self.environment.clone(), lines, points, bodies)
-            .expect("a system without dg lines has no dg end to refuse")
+        let mut twin = Self::from_parts(self.environment.clone(), lines, points, bodies)
+            .expect("a system without dg lines has no dg end to refuse");
+        twin.tow_velocity = self.tow_velocity;
+        twin
     }
 
     /// This system's state from a state `y_twin` of its [`System::statics_twin`]: free points

@@ -1343,7 +1343,7 @@ fn simulation_of(
         } else {
             None
         },
-        initial_condition: Some(InitialConditionSpec::Statics),
+        initial_condition: Some(spanned(&anchor, InitialConditionSpec::Statics)),
         release: Vec::new(),
         channels,
     }

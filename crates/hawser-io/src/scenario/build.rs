@@ -225,6 +225,7 @@ pub fn build_scenario(
     };
     model.settings.release = build_release(&mut b, scenario.simulation.as_ref(), &model);
     let channels = build_channels(&mut b, scenario.simulation.as_ref(), &model);
+    check_steady_tow(&mut b, scenario.simulation.as_ref(), &model);
     if b.errors.is_empty()
         && let Err(e) = model.validate()
     {
@@ -3414,8 +3415,9 @@ fn build_settings(
         Some(SchemeSpec::ThreeLevel) => Scheme::ThreeLevel,
         Some(SchemeSpec::Rk4) | None => Scheme::Rk4,
     };
-    s.initial_condition = match sim.initial_condition {
+    s.initial_condition = match sim.initial_condition.as_ref().map(|c| *c.get_ref()) {
         Some(InitialConditionSpec::AsDefined) => InitialCondition::AsDefined,
+        Some(InitialConditionSpec::SteadyTow) => InitialCondition::SteadyTow,
         _ => InitialCondition::Statics,
     };
     let mut span = None;
@@ -3440,6 +3442,36 @@ fn build_settings(
         }
     }
     (s, span)
+}
+
+/// `simulation.initial_condition = "steady-tow"`: every prescribed motion one constant
+/// horizontal velocity, calm water, no dg lines, no release ([`hawser::model::tow_velocity`]).
+fn check_steady_tow(b: &mut Builder, spec: Option<&SimulationSpec>, model: &Model) {
+    let Some(ic) = spec.and_then(|s| s.initial_condition.as_ref()) else {
+        return;
+    };
+    if *ic.get_ref() != InitialConditionSpec::SteadyTow || !b.errors.is_empty() {
+        return;
+    }
+    if let Err(hawser::error::ModelError::Invalid { what, why }) =
+        hawser::model::tow_velocity(model)
+    {
+        let d = b
+            .diag(
+                Some(ic.span()),
+                "simulation.initial_condition",
+                format!("\"steady-tow\": {what} {why}"),
+            )
+            .expected(
+                "a towing vessel: prescribed points and bodies (and obstacles) that all move at \
+                 one constant horizontal velocity [m/s], in calm water",
+            )
+            .hint(
+                "give the vessel a `constant-velocity` motion (or a manoeuvre with \
+                 build_up_time = 0), or start from \"statics\" or \"as-defined\"",
+            );
+        b.push(d);
+    }
 }
 
 /// `simulation.release`: names of free points held in the initial statics, as point indices.

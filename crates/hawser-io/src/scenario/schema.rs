@@ -85,6 +85,10 @@ pub enum InitialConditionSpec {
     Statics,
     /// Start from the catenary seed, at rest.
     AsDefined,
+    /// Start from the steady tow: the equilibrium in the frame moving with the towing vessel
+    /// (the prescribed points and bodies, all at one constant velocity V), everything moving
+    /// at V.
+    SteadyTow,
 }
 
 /// `[simulation]`.
@@ -113,9 +117,10 @@ pub struct SimulationSpec {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<f64>")]
     pub snapshot_interval: Option<Spanned<f64>>,
-    /// `"statics"` (default) or `"as-defined"`.
+    /// `"statics"` (default), `"as-defined"` or `"steady-tow"`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub initial_condition: Option<InitialConditionSpec>,
+    #[schemars(with = "Option<InitialConditionSpec>")]
+    pub initial_condition: Option<Spanned<InitialConditionSpec>>,
     /// Free points held fixed at their `position` in the initial static equilibrium and
     /// released at t = 0 (a release test, e.g. the DG paper's swinging cable).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]

@@ -7,6 +7,7 @@ mod line;
 mod motion;
 mod point;
 mod rigid_motion;
+mod steady_tow;
 
 pub use body::{Body, BodyKind, Displacement, Thrust, Wind};
 pub use line::{Formulation, Line, LineEnd, LineType, MassMatrix, Section, StrainMeasure};
@@ -16,6 +17,7 @@ pub use rigid_motion::{
     Manoeuvre, ManoeuvreSpec, RaoMotion, RaoTable, RigidKinematics, RigidMotion, RigidTimeSeries,
     euler_kinematics,
 };
+pub use steady_tow::{steady_point_velocity, steady_rigid_velocity, tow_velocity};
 
 use crate::error::ModelError;
 use crate::math::Real;
@@ -52,6 +54,10 @@ pub enum InitialCondition {
     Statics,
     /// From the positions as given (catenary seed for lines), at rest.
     AsDefined,
+    /// From the steady tow: the equilibrium in the frame moving with the towing vessel at its
+    /// constant velocity V ([`tow_velocity`]), with every node, free point and free body
+    /// moving at V (the elastic-link paper's "solution-setting mode", §5).
+    SteadyTow,
 }
 
 /// Settings of a simulation.
@@ -249,6 +255,7 @@ impl Model {
                 }
             }
         }
+        self.statics_frame_velocity()?;
         let s = &self.settings;
         if !(s.duration >= 0.0) || !(s.output_interval > 0.0) {
             return bad(

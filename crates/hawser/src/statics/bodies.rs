@@ -24,15 +24,25 @@ use nalgebra::{DMatrix, DVector};
 fn residual(
     system: &System,
     poses: &[RigidKinematics],
+    warm: Option<&[Real]>,
     options: &StaticOptions,
 ) -> Result<(DVector<Real>, System, StaticSolution), StaticsError> {
     let twin = system.statics_twin_at(poses);
-    let sol = solve(&twin, None, options)?;
+    // Warm start from a nearby twin state (same layout: the bodies are not in it); from the
+    // catenary seed when that fails or there is none.
+    let sol = match warm.map(|y| solve(&twin, Some(y), options)) {
+        Some(Ok(s)) => s,
+        _ => solve(&twin, None, options)?,
+    };
     let mut ws = twin.workspace();
     evaluate(&twin, &sol.state, &mut ws);
     let mut r = DVector::zeros(6 * system.free_bodies.len());
     for (f, &b) in system.free_bodies.iter().enumerate() {
-        let k = RigidKinematics::at_rest(poses[b].position, poses[b].orientation);
+        // In a steady tow the body moves at the tow velocity (its drag and wind see it).
+        let k = RigidKinematics {
+            velocity: system.tow_velocity,
+            ..RigidKinematics::at_rest(poses[b].position, poses[b].orientation)
+        };
         let own = system.bodies[b].body.loads(&k, &system.environment, 0.0);
         let (mut force, mut moment) = (own.force, own.moment);
         for (li, l) in twin.lines.iter().enumerate() {
@@ -68,16 +78,298 @@ fn moved(
 }
 
 /// Solves the statics of a system with free bodies (see the module docs). Starts from the
-/// bodies' initial poses; each iteration costs 6 + 1 line statics per body.
+/// bodies' initial poses; each iteration costs 6 + 1 line statics per body. When that fails
+/// (a line that starts slack, a drag-loaded line whose statics do not converge from the
+/// catenary seed), it starts again from the end of a pseudo-dynamic relaxation
+/// ([`relax_with_bodies`]).
 pub fn solve_with_bodies(
     system: &System,
     options: &StaticOptions,
 ) -> Result<StaticSolution, StaticsError> {
-    let mut poses: Vec<RigidKinematics> = system
+    let poses: Vec<RigidKinematics> = system
         .bodies
         .iter()
         .map(|b| b.initial_kinematics())
         .collect();
+    match newton_on_poses(system, poses, None, options) {
+        Ok(s) => Ok(s),
+        Err(first) => {
+            let Some(y) = relax_with_bodies(system) else {
+                return Err(first);
+            };
+            let poses: Vec<RigidKinematics> = (0..system.bodies.len())
+                .map(|b| match system.layout.body_offset[b] {
+                    Some(o) => {
+                        let k = crate::bodies::read_state(&y[o..o + crate::bodies::STATE_LEN]);
+                        RigidKinematics::at_rest(k.position, k.orientation)
+                    }
+                    None => system.bodies[b].initial_kinematics(),
+                })
+                .collect();
+            let twin = system.statics_twin_at(&poses);
+            let warm = twin_state(system, &twin, &y);
+            let mut sol = newton_on_poses(system, poses, Some(warm), options)?;
+            sol.method = "pseudo-dynamic relaxation, then newton on the bodies' poses";
+            Ok(sol)
+        }
+    }
+}
+
+/// The state of `twin` (the system with its bodies held) that holds the lines and free points
+/// of the system state `y`.
+fn twin_state(system: &System, twin: &System, y: &[Real]) -> Vec<Real> {
+    let mut out = vec![0.0; twin.layout.len];
+    for li in 0..system.lines.len() {
+        let (o, len) = (system.layout.line_offset[li], system.layout.line_len[li]);
+        let ot = twin.layout.line_offset[li];
+        out[ot..ot + len].copy_from_slice(&y[o..o + len]);
+    }
+    for (p, off) in system.layout.point_offset.iter().enumerate() {
+        if let (Some(o), Some(ot)) = (off, twin.layout.point_offset[p]) {
+            out[ot..ot + 6].copy_from_slice(&y[*o..o + 6]);
+        }
+    }
+    out
+}
+
+/// Pseudo-dynamic relaxation of the whole system, bodies included, toward its static
+/// equilibrium (in a steady tow, the equilibrium in the frame moving at
+/// [`System::tow_velocity`] V): the system's own equations of motion at t = 0 (prescribed
+/// points and bodies held at their t = 0 places, everything else moving at V plus a relative
+/// velocity u), integrated by RK4 at half the stable step with kinetic damping (Barnes): the
+/// relative velocities are zeroed whenever the relative kinetic energy peaks. The equilibria
+/// of this flow are the static ones (u = 0 and no acceleration). Starts from the catenary seed
+/// with the bodies at their initial poses, so a line may start slack. Stops when the largest
+/// acceleration times its mass is below 1e-4 of the weight scale, or after 200 000 steps;
+/// returns `None` if the state is no longer finite.
+pub fn relax_with_bodies(system: &System) -> Option<Vec<Real>> {
+    use crate::math::{get3, set3};
+    let v = system.tow_velocity;
+    let n = system.layout.len;
+    let mut ws = system.workspace();
+    let mut y = system.straight_state();
+    super::newton::catenary_seed(system, &mut y, &mut ws);
+    super::newton::set_tow_velocities(system, &mut y);
+    // Weights of the kinetic energy and of the residual force: per line vector the mass of its
+    // element (times l² for a tangent), per free point its mass, per body its mass and its
+    // largest moment of inertia.
+    let g = system.environment.gravity.max(1e-3);
+    let mut weight_scale: Real = 0.0;
+    let mut mass = vec![0.0; n / 3];
+    for (li, l) in system.lines.iter().enumerate() {
+        if l.dg.is_some() {
+            return None;
+        }
+        let o = system.layout.line_offset[li] / 3;
+        let m = system.layout.line_interior[li];
+        let elements = l.mesh.elements();
+        for j in 1..l.vectors() - 1 {
+            let e = (j * elements / (l.vectors() - 1)).min(elements - 1);
+            let sec = l.mesh.section(e);
+            let me = sec.line_type.mass_per_length * sec.element_length;
+            weight_scale += me * g;
+            let w = if l.is_tangent(j) {
+                me * sec.element_length * sec.element_length
+            } else {
+                me
+            };
+            mass[o + m + j - 1] = w;
+        }
+    }
+    for &p in &system.free_points {
+        let o = system.layout.point_offset[p].expect("free point") / 3;
+        if let crate::model::PointKind::Free { mass: mp, .. } = system.points[p].kind {
+            mass[o + 1] = mp;
+            weight_scale += mp * g;
+        }
+    }
+    for &b in &system.free_bodies {
+        weight_scale += system.bodies[b].body.mass * g;
+    }
+    let tolerance = 1e-4 * weight_scale.max(1e-9);
+    let relative_energy = |y: &[Real]| {
+        let mut e = 0.0;
+        for (li, l) in system.lines.iter().enumerate() {
+            let o = system.layout.line_offset[li] / 3;
+            let m = system.layout.line_interior[li];
+            for j in 1..l.vectors() - 1 {
+                let u = get3(y, o + m + j - 1) - if l.is_tangent(j) { Vec3::zeros() } else { v };
+                e += mass[o + m + j - 1] * u.norm_squared();
+            }
+        }
+        for &p in &system.free_points {
+            let o = system.layout.point_offset[p].expect("free point") / 3;
+            e += mass[o + 1] * (get3(y, o + 1) - v).norm_squared();
+        }
+        for &b in &system.free_bodies {
+            let o = system.layout.body_offset[b].expect("free body");
+            let k = crate::bodies::read_state(&y[o..o + crate::bodies::STATE_LEN]);
+            let body = &system.bodies[b].body;
+            e += body.mass * (k.velocity - v).norm_squared()
+                + body.inertia.abs().max() * k.angular_velocity.norm_squared();
+        }
+        e
+    };
+    // The rate in the frame moving at V: positions change at the relative velocity.
+    let rate = |y: &[Real], out: &mut [Real], ws: &mut crate::system::Workspace| -> bool {
+        if system.rhs(0.0, y, out, ws).is_err() {
+            return false;
+        }
+        for (li, l) in system.lines.iter().enumerate() {
+            let o = system.layout.line_offset[li] / 3;
+            for j in 1..l.vectors() - 1 {
+                if !l.is_tangent(j) {
+                    let r = get3(out, o + j - 1) - v;
+                    set3(out, o + j - 1, &r);
+                }
+            }
+        }
+        for &p in &system.free_points {
+            let o = system.layout.point_offset[p].expect("free point") / 3;
+            let r = get3(out, o) - v;
+            set3(out, o, &r);
+        }
+        for &b in &system.free_bodies {
+            let o = system.layout.body_offset[b].expect("free body") / 3;
+            let r = get3(out, o) - v;
+            set3(out, o, &r);
+        }
+        true
+    };
+    let dt = 0.5 * system.stable_step(crate::model::Scheme::Rk4).0;
+    let (mut k1, mut k2, mut k3, mut k4, mut tmp) = (
+        vec![0.0; n],
+        vec![0.0; n],
+        vec![0.0; n],
+        vec![0.0; n],
+        vec![0.0; n],
+    );
+    let mut last = 0.0;
+    for step in 0..200_000 {
+        if !rate(&y, &mut k1, &mut ws) {
+            return None;
+        }
+        if step % 50 == 0 {
+            // The largest unbalanced force: mass times acceleration.
+            let mut worst: Real = 0.0;
+            for (i, m) in mass.iter().enumerate() {
+                if *m > 0.0 {
+                    worst = worst.max(m * get3(&k1, i).norm());
+                }
+            }
+            for &b in &system.free_bodies {
+                let k = &ws.bodies[b];
+                let body = &system.bodies[b].body;
+                worst = worst.max(body.mass * k.acceleration.norm());
+                worst = worst.max(body.inertia.abs().max() * k.angular_acceleration.norm());
+            }
+            if worst < tolerance && relative_energy(&y) < 1e-12 * weight_scale {
+                break;
+            }
+        }
+        let stage = |k: &[Real], h: Real, tmp: &mut Vec<Real>| {
+            for i in 0..n {
+                tmp[i] = y[i] + h * k[i];
+            }
+        };
+        stage(&k1, 0.5 * dt, &mut tmp);
+        if !rate(&tmp, &mut k2, &mut ws) {
+            return None;
+        }
+        stage(&k2, 0.5 * dt, &mut tmp);
+        if !rate(&tmp, &mut k3, &mut ws) {
+            return None;
+        }
+        stage(&k3, dt, &mut tmp);
+        if !rate(&tmp, &mut k4, &mut ws) {
+            return None;
+        }
+        for i in 0..n {
+            y[i] += dt / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
+        }
+        for &b in &system.free_bodies {
+            let o = system.layout.body_offset[b].expect("free body");
+            let k = crate::bodies::read_state(&y[o..o + crate::bodies::STATE_LEN]);
+            crate::bodies::write_state(&k, &mut y[o..o + crate::bodies::STATE_LEN]);
+        }
+        if !y.iter().all(|x| x.is_finite()) {
+            return None;
+        }
+        let e = relative_energy(&y);
+        if e < last {
+            super::newton::set_tow_velocities(system, &mut y);
+            last = 0.0;
+        } else {
+            last = e;
+        }
+    }
+    Some(y)
+}
+
+/// Per free body: its group (the free bodies joined to it through lines and points), its rank
+/// within the group, and the largest group size.
+fn body_groups(system: &System) -> (Vec<usize>, Vec<usize>, usize) {
+    let nb = system.free_bodies.len();
+    let mut parent: Vec<usize> = (0..nb).collect();
+    fn find(parent: &mut [usize], mut i: usize) -> usize {
+        while parent[i] != i {
+            parent[i] = parent[parent[i]];
+            i = parent[i];
+        }
+        i
+    }
+    // Each point's free body, or the lines joining them through free points: join every body
+    // reached from a line's ends, spreading through free points (a few sweeps suffice for the
+    // chains of lines met in practice; bodies left apart only cost more columns).
+    let body_of = |p: usize| match system.points[p].kind {
+        PointKind::Body { body, .. } => system.bodies[body].free_index,
+        _ => None,
+    };
+    let mut point_group: Vec<Option<usize>> = (0..system.points.len()).map(body_of).collect();
+    for _ in 0..system.lines.len().max(1) {
+        let mut changed = false;
+        for l in &system.lines {
+            let free = |p: usize| system.points[p].free_index.is_some() || body_of(p).is_some();
+            match (point_group[l.end_a], point_group[l.end_b]) {
+                (Some(a), Some(b)) => {
+                    let (ra, rb) = (find(&mut parent, a), find(&mut parent, b));
+                    if ra != rb {
+                        parent[ra] = rb;
+                        changed = true;
+                    }
+                }
+                (Some(a), None) if free(l.end_b) => {
+                    point_group[l.end_b] = Some(a);
+                    changed = true;
+                }
+                (None, Some(b)) if free(l.end_a) => {
+                    point_group[l.end_a] = Some(b);
+                    changed = true;
+                }
+                _ => {}
+            }
+        }
+        if !changed {
+            break;
+        }
+    }
+    let group: Vec<usize> = (0..nb).map(|f| find(&mut parent, f)).collect();
+    let mut count = vec![0; nb];
+    let mut rank = vec![0; nb];
+    for f in 0..nb {
+        rank[f] = count[group[f]];
+        count[group[f]] += 1;
+    }
+    (group, rank, count.into_iter().max().unwrap_or(0))
+}
+
+/// Newton on the free bodies' poses from `poses`, the twin's lines warm-started from `warm`.
+fn newton_on_poses(
+    system: &System,
+    mut poses: Vec<RigidKinematics>,
+    warm: Option<Vec<Real>>,
+    options: &StaticOptions,
+) -> Result<StaticSolution, StaticsError> {
     let n = 6 * system.free_bodies.len();
     // Scales: the bodies' weights [N] and sizes [m] (for moments).
     let g = system.environment.gravity.max(1e-3);
@@ -88,20 +380,41 @@ pub fn solve_with_bodies(
         .sum::<Real>()
         .max(1.0);
     let tolerance = 1e-6 * weight;
-    let (mut r, mut twin, mut sol) = residual(system, &poses, options)?;
+    let (group, rank, colours) = body_groups(system);
+    let nb = system.free_bodies.len();
+    let (mut r, mut twin, mut sol) = residual(system, &poses, warm.as_deref(), options)?;
     let mut iterations = sol.iterations;
     for _ in 0..30 {
         if r.amax() <= tolerance {
             break;
         }
+        // Bodies in different groups (joined by no line) do not load each other: one line
+        // statics perturbs a degree of freedom of one body in every group at once.
         let mut jac = DMatrix::zeros(n, n);
-        for c in 0..n {
-            let step = if c % 6 < 3 { 1e-4 } else { 1e-5 };
-            let mut delta = DVector::zeros(n);
-            delta[c] = step;
-            let (rc, _, s) = residual(system, &moved(system, &poses, &delta), options)?;
-            iterations += s.iterations;
-            jac.set_column(c, &((rc - &r) / step));
+        for colour in 0..colours {
+            for dof in 0..6 {
+                let step = if dof < 3 { 1e-4 } else { 1e-5 };
+                let mut delta = DVector::zeros(n);
+                for f in 0..nb {
+                    if rank[f] == colour {
+                        delta[6 * f + dof] = step;
+                    }
+                }
+                let (rc, _, s) = residual(
+                    system,
+                    &moved(system, &poses, &delta),
+                    Some(&sol.state),
+                    options,
+                )?;
+                iterations += s.iterations;
+                for f in (0..nb).filter(|&f| rank[f] == colour) {
+                    for g in (0..nb).filter(|&g| group[g] == group[f]) {
+                        for i in 0..6 {
+                            jac[(6 * g + i, 6 * f + dof)] = (rc[6 * g + i] - r[6 * g + i]) / step;
+                        }
+                    }
+                }
+            }
         }
         // Levenberg–Marquardt: a shift of 1e-6 of the largest stiffness keeps directions
         // without stiffness (free yaw) in place.
@@ -125,7 +438,7 @@ pub fn solve_with_bodies(
         let mut lambda = 1.0;
         loop {
             let trial = moved(system, &poses, &(&step * lambda));
-            let (rt, tt, st) = residual(system, &trial, options)?;
+            let (rt, tt, st) = residual(system, &trial, Some(&sol.state), options)?;
             iterations += st.iterations;
             if rt.norm() < r.norm() || lambda < 1e-3 {
                 poses = trial;

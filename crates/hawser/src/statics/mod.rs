@@ -9,5 +9,7 @@ mod newton;
 mod release;
 
 pub use bodies::solve_with_bodies;
-pub use newton::{StaticOptions, StaticSolution, catenary_seed, evaluate, residual, solve};
+pub use newton::{
+    StaticOptions, StaticSolution, catenary_seed, evaluate, residual, set_tow_velocities, solve,
+};
 pub use release::solve_with_release;

@@ -437,13 +437,13 @@ fn check_supported(system: &System) -> Result<(), StaticsError> {
             }
         }
         // The statics is solved at t = 0, where ramped waves are still calm.
-        let drifting = !env.is_still_at(0.0);
+        let drifting = !env.is_still_at(0.0) || system.tow_velocity != Vec3::zeros();
         if net.norm() > 1e-9 * force_scale(system) || drifting {
             return Err(StaticsError::Unsupported {
                 points: names.join(", "),
                 net_force: net.norm(),
                 what: if drifting {
-                    "and a current or the waves push them".to_string()
+                    "and a current, the waves or the tow push them".to_string()
                 } else {
                     "weight, buoyancy and point forces".to_string()
                 },
@@ -459,7 +459,55 @@ fn check_supported(system: &System) -> Result<(), StaticsError> {
 /// bodies held at their initial pose) from a catenary seed (`initial` is not used) and carried
 /// over by [`System::state_from_twin`]: free bodies start at their initial pose, at rest, so
 /// give them a pose near their equilibrium.
+///
+/// A steady tow ([`System::tow_velocity`] V ≠ 0) is solved in the frame moving with the
+/// vessel: every load is evaluated with every material point moving at V (drag on u − V,
+/// seabed friction against V), prescribed points, bodies and obstacles at their t = 0 places,
+/// and the returned state moves at V: line nodes, free points and free bodies (line tangents
+/// and body rotations at rest), so that a run started from it carries on steadily.
 pub fn solve(
+    system: &System,
+    initial: Option<&[Real]>,
+    options: &StaticOptions,
+) -> Result<StaticSolution, StaticsError> {
+    let mut sol = solve_at_rest(system, initial, options)?;
+    if system.tow_velocity != Vec3::zeros() {
+        set_tow_velocities(system, &mut sol.state);
+    }
+    Ok(sol)
+}
+
+/// Writes the steady tow's velocities into `y`: [`System::tow_velocity`] for every line node
+/// (zero for `hermite` tangents), free point and free body (zero angular velocity); with a zero
+/// tow velocity, everything at rest.
+pub fn set_tow_velocities(system: &System, y: &mut [Real]) {
+    let v = system.tow_velocity;
+    for (li, l) in system.lines.iter().enumerate() {
+        if l.dg.is_some() {
+            continue;
+        }
+        let o = system.layout.line_offset[li];
+        let m = system.layout.line_interior[li];
+        for j in 1..l.vectors() - 1 {
+            let x = if l.is_tangent(j) { Vec3::zeros() } else { v };
+            set3(&mut y[o + 3 * m..], j - 1, &x);
+        }
+    }
+    for &p in &system.free_points {
+        let o = system.layout.point_offset[p].expect("free point");
+        set3(&mut y[o..], 1, &v);
+    }
+    for &b in &system.free_bodies {
+        let o = system.layout.body_offset[b].expect("free body");
+        let mut k = crate::bodies::read_state(&y[o..o + crate::bodies::STATE_LEN]);
+        k.velocity = v;
+        k.angular_velocity = Vec3::zeros();
+        crate::bodies::write_state(&k, &mut y[o..o + crate::bodies::STATE_LEN]);
+    }
+}
+
+/// [`solve`] with every velocity of the returned state zero.
+fn solve_at_rest(
     system: &System,
     initial: Option<&[Real]>,
     options: &StaticOptions,
