@@ -71,6 +71,9 @@ pub struct SystemLine {
     pub end_b: usize,
     /// The discontinuous Galerkin discretisation of a `dg` line.
     pub dg: Option<Box<DgLine>>,
+    /// The line's winch: its unstretched length follows the winch's schedule, and its
+    /// `mesh` is the mesh at t = 0 ([`Workspace::winches`] holds the current one).
+    pub winch: Option<crate::model::Winch>,
 }
 
 impl SystemLine {
@@ -297,6 +300,20 @@ pub struct LineWork {
     pub node_tension: Vec<Real>,
 }
 
+/// The current state of a line on a winch, updated at the start of every evaluation
+/// ([`System::update_winches`]).
+#[derive(Clone, Debug)]
+pub struct WinchWork {
+    /// The line's mesh rescaled to the current unstretched length L(t), with σ = L̇/L.
+    pub mesh: Mesh,
+    /// Unstretched length at t = 0, L(0) [m].
+    pub initial_length: Real,
+    /// Current unstretched length L(t) = L(0) + payout [m].
+    pub length: Real,
+    /// Payout, its rate and acceleration at the time of the last evaluation.
+    pub state: crate::model::WinchState,
+}
+
 /// All scratch of the right-hand side, sized once: no allocation in the time loop.
 #[derive(Clone, Debug)]
 pub struct Workspace {
@@ -312,6 +329,8 @@ pub struct Workspace {
     pub dg: Vec<Option<DgWorkspace>>,
     /// Per body: its kinematics (free bodies: accelerations solved by the last evaluation).
     pub bodies: Vec<crate::model::RigidKinematics>,
+    /// Per line: the current mesh and length of a line on a winch (`None` for other lines).
+    pub winches: Vec<Option<WinchWork>>,
 }
 
 /// Identifies the place in the model a state entry belongs to.
@@ -395,6 +414,7 @@ impl System {
                 end_a,
                 end_b,
                 dg,
+                winch: l.winch.clone(),
             });
         }
         let mut system = Self::from_parts(model.environment.clone(), lines, points, bodies)?;
@@ -751,6 +771,45 @@ impl System {
                 .map(|l| l.dg.as_deref().map(DgWorkspace::new))
                 .collect(),
             bodies: self.bodies.iter().map(|b| b.initial_kinematics()).collect(),
+            winches: self
+                .lines
+                .iter()
+                .map(|l| {
+                    l.winch.as_ref().map(|_| WinchWork {
+                        mesh: l.mesh.clone(),
+                        initial_length: l.mesh.length(),
+                        length: l.mesh.length(),
+                        state: Default::default(),
+                    })
+                })
+                .collect(),
+        }
+    }
+
+    /// Sets every winch line's current mesh to its unstretched length at time t [s]:
+    /// L(t) = L(0) + payout(t), each element l₀(t) = l₀(0) L(t)/L(0), σ = L̇/L
+    /// ([`Mesh::rescale`]). Called at the start of every evaluation; no allocation.
+    pub fn update_winches(&self, t: Real, ws: &mut Workspace) {
+        for (l, w) in self.lines.iter().zip(ws.winches.iter_mut()) {
+            let (Some(winch), Some(w)) = (&l.winch, w.as_mut()) else {
+                continue;
+            };
+            let state = winch.state(t);
+            let length = w.initial_length + state.payout;
+            w.state = state;
+            w.length = length;
+            w.mesh
+                .rescale(&l.mesh, length / w.initial_length, state.rate / length);
+        }
+    }
+
+    /// The current mesh of a line: for a line on a winch, rescaled to its length at the
+    /// time of the last evaluation in `ws`; otherwise the line's own.
+    #[inline]
+    pub fn line_mesh<'a>(&'a self, ws: &'a Workspace, line: usize) -> &'a Mesh {
+        match &ws.winches[line] {
+            Some(w) => &w.mesh,
+            None => &self.lines[line].mesh,
         }
     }
 
@@ -831,6 +890,7 @@ impl System {
     /// Each integral uses the formulation's own quadrature, so the potential is the one whose
     /// gradient the formulation's forces are. Fills `ws`'s line vectors and point kinematics.
     pub fn mechanical_energy(&self, t: Real, y: &[Real], ws: &mut Workspace) -> Energy {
+        self.update_winches(t, ws);
         self.point_kinematics(t, y, ws);
         self.gather_lines(y, ws);
         let g = self.environment.gravity;
@@ -847,13 +907,14 @@ impl System {
                 continue;
             }
             let (q, qdot) = (&ws.lines[li].position, &ws.lines[li].velocity);
-            for e in 0..l.mesh.elements() {
+            let mesh = self.line_mesh(ws, li);
+            for e in 0..mesh.elements() {
                 energy += match &l.kind {
                     LineKind::Fe { mass_matrix } => {
-                        crate::formulation::fe::element_energy(&l.mesh, *mass_matrix, g, q, qdot, e)
+                        crate::formulation::fe::element_energy(mesh, *mass_matrix, g, q, qdot, e)
                     }
                     LineKind::Hermite(options) => {
-                        crate::formulation::hermite::element_energy(&l.mesh, options, g, q, qdot, e)
+                        crate::formulation::hermite::element_energy(mesh, options, g, q, qdot, e)
                     }
                     LineKind::Dg => unreachable!("dg lines are summed above"),
                 };
@@ -1125,6 +1186,7 @@ impl System {
     /// [`System::assemble`] after [`System::point_kinematics`] (and, for `dg` lines,
     /// [`System::evaluate_dg_lines`]) at the same (t, y).
     fn assemble_loads(&self, t: Real, y: &[Real], ws: &mut Workspace) {
+        self.update_winches(t, ws);
         self.gather_lines(y, ws);
         let options = LoadOptions {
             current_factor: 1.0,
@@ -1145,8 +1207,12 @@ impl System {
                 };
                 continue;
             }
+            let mesh = match &ws.winches[li] {
+                Some(w) => &w.mesh,
+                None => &l.mesh,
+            };
             line_forces(
-                &l.mesh,
+                mesh,
                 &l.kind,
                 &self.environment,
                 t,
@@ -1300,10 +1366,11 @@ impl System {
     /// √(EA/γ0) metres of unstretched cable per second); and the line and element that set it.
     pub fn wave_step(&self, ws: &Workspace, c_k: Real) -> (Real, usize, usize) {
         let mut best = (Real::INFINITY, 0, 0);
-        for (li, l) in self.lines.iter().enumerate() {
+        for li in 0..self.lines.len() {
             let el = &ws.lines[li].elements;
-            for (e, &k) in l.mesh.element_section.iter().enumerate() {
-                let s = &l.mesh.sections[k];
+            let mesh = self.line_mesh(ws, li);
+            for (e, &k) in mesh.element_section.iter().enumerate() {
+                let s = &mesh.sections[k];
                 let gamma = s.line_type.mass_per_length;
                 let axial = s.law.stiffness.max_tangent() / gamma;
                 let transverse = el.tension[e].max(0.0) / gamma;
@@ -1407,7 +1474,22 @@ impl System {
                 }
                 continue;
             }
-            let n = l.mesh.elements();
+            // A line on a winch: its shortest elements (at its shortest length over the
+            // schedule) give the largest stiffness and damping rows, 2 EA/l₀ and 2c/l₀ over a
+            // mass ∝ l₀ (the rate grows as 1/l₀); its longest reaches the seabed first.
+            let scaled;
+            let (mesh, longest) = match &l.winch {
+                Some(w) => {
+                    let ((low, _), (high, _)) = w.payout_range();
+                    let length = l.mesh.length();
+                    let mut m = l.mesh.clone();
+                    m.rescale(&l.mesh, (length + low) / length, 0.0);
+                    scaled = m;
+                    (&scaled, length + high)
+                }
+                None => (&l.mesh, l.mesh.length()),
+            };
+            let n = mesh.elements();
             let hermite = matches!(l.kind, LineKind::Hermite(_));
             let mass_factor = if l.kind.consistent_mass() {
                 1.0 / 3.0
@@ -1420,9 +1502,8 @@ impl System {
                 .position
                 .z
                 .min(self.points[l.end_b].position.z);
-            let reaches_bed = env.depth.is_finite()
-                && seabed.stiffness > 0.0
-                && low - l.mesh.length() <= env.seabed_z();
+            let reaches_bed =
+                env.depth.is_finite() && seabed.stiffness > 0.0 && low - longest <= env.seabed_z();
             let mut rows = vec![NodeRows::default(); n + 1];
             let describe = |what: &str, at: String, s: &crate::formulation::SectionProperties| {
                 format!(
@@ -1433,7 +1514,7 @@ impl System {
                 )
             };
             for e in 0..n {
-                let s = l.mesh.section(e);
+                let s = mesh.section(e);
                 let lt = &s.line_type;
                 let l0 = s.element_length;
                 let gamma = lt.mass_per_length
@@ -1499,11 +1580,7 @@ impl System {
                 let (lambda, what) = row.bound();
                 if lambda > worst {
                     worst = lambda;
-                    culprit = describe(
-                        what,
-                        format!("node {node}"),
-                        l.mesh.section(node.min(n - 1)),
-                    );
+                    culprit = describe(what, format!("node {node}"), mesh.section(node.min(n - 1)));
                 }
             }
         }

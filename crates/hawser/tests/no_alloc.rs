@@ -8,7 +8,8 @@
 //! sharing a free point (the dense shared-point solve) with a prescribed, time-series end, in
 //! water with current, an irregular sea, drag, added mass and seabed contact, under each
 //! scheme; the same with a fixed sphere and a moving cylinder in contact with a line; and the
-//! same with one `hermite` line with bending (and the obstacles), and with one `dg` line.
+//! same with one `hermite` line with bending (and the obstacles), the same with both lines on
+//! winches, and with one `dg` line.
 
 mod alloc_count;
 mod common;
@@ -151,6 +152,7 @@ fn time_loop_does_not_allocate() {
         clamp: [None; 2],
         end_a: LineEnd::Point(1),
         end_b: LineEnd::Point(2),
+        winch: None,
     });
     for scheme in [Scheme::Rk4, Scheme::SspRk3, Scheme::ThreeLevel] {
         check("two lines on a shared buoy", &model, scheme);
@@ -210,6 +212,31 @@ fn time_loop_does_not_allocate() {
     for scheme in [Scheme::Rk4, Scheme::SspRk3, Scheme::ThreeLevel] {
         check("hermite and fe lines on a shared buoy", &model, scheme);
     }
+
+    // Both lines on winches (hauling in, then paying out, with ramps within the steps
+    // checked): the rescaled meshes are updated in place at every evaluation.
+    let winch = Winch {
+        end: WinchEnd::A,
+        stages: vec![
+            WinchStage {
+                duration: 0.02,
+                payout_rate: -0.5,
+            },
+            WinchStage {
+                duration: 0.02,
+                payout_rate: 0.5,
+            },
+        ],
+        ramp_time: 0.01,
+        minimum_length: 0.0,
+    };
+    model.lines[0].winch = Some(winch.clone());
+    model.lines[1].winch = Some(winch);
+    for scheme in [Scheme::Rk4, Scheme::SspRk3, Scheme::ThreeLevel] {
+        check("hermite and fe lines on winches", &model, scheme);
+    }
+    model.lines[0].winch = None;
+    model.lines[1].winch = None;
 
     // The lower line in discontinuous Galerkin (P = 4) with bending: its end traction on
     // the shared buoy (explicit coupling) and the outputs it fills. Runge–Kutta only (the

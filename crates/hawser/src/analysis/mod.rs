@@ -152,6 +152,71 @@ pub enum Channel {
         /// Obstacle index in the environment.
         obstacle: usize,
     },
+    /// Unstretched length of a line [m]: L(t) of a line on a winch, its fixed length
+    /// otherwise.
+    LineLength {
+        /// Line index.
+        line: usize,
+    },
+    /// Stretched length of a line [m] ([`stretched_length`]).
+    LineStretchedLength {
+        /// Line index.
+        line: usize,
+    },
+    /// Relative stretch of a line [-]: stretched length / unstretched length − 1.
+    LineStretch {
+        /// Line index.
+        line: usize,
+    },
+    /// Winch tension [N]: the magnitude of the force the line exerts on the attachment at its
+    /// winch's end (as [`Channel::EndTension`] there). Lines with a winch only.
+    WinchTension {
+        /// Line index.
+        line: usize,
+    },
+}
+
+/// Stretched length [m] of line `line` from a workspace that holds an evaluation: `fe`, the
+/// sum of its element chords |r_{i+1} − r_i|; `hermite`, ∫ |r'| ds over each cubic element
+/// by its four-point Gauss rule (the rule of its forces); `dg`, Σ l_e (λ_a + λ_b)/2 with λ
+/// the stretch 1 + ε at the element's two ends (trapezoidal). Unstretched lengths are the
+/// current ones ([`System::line_mesh`]).
+pub fn stretched_length(system: &System, ws: &Workspace, line: usize) -> Real {
+    use crate::formulation::{LineKind, hermite};
+    let l = &system.lines[line];
+    let mesh = system.line_mesh(ws, line);
+    let lw = &ws.lines[line];
+    let n = mesh.elements();
+    match l.kind {
+        LineKind::Fe { .. } => (0..n)
+            .map(|e| (lw.position[e + 1] - lw.position[e]).norm())
+            .sum(),
+        LineKind::Hermite(_) => (0..n)
+            .map(|e| {
+                let h = mesh.section(e).element_length;
+                hermite::GAUSS
+                    .iter()
+                    .map(|&(xi, w)| {
+                        w * h
+                            * hermite::point_on_element(mesh, &lw.position, e, xi)
+                                .1
+                                .norm()
+                    })
+                    .sum::<Real>()
+            })
+            .sum(),
+        LineKind::Dg => (0..n)
+            .map(|e| mesh.section(e).element_length * (1.0 + lw.elements.strain[e]))
+            .sum(),
+    }
+}
+
+/// Unstretched length [m] of line `line` at the last evaluation in `ws`.
+pub fn unstretched_length(system: &System, ws: &Workspace, line: usize) -> Real {
+    match &ws.winches[line] {
+        Some(w) => w.length,
+        None => system.lines[line].mesh.length(),
+    }
 }
 
 /// Channel suffixes of a body's motion, velocity and line load.
@@ -229,6 +294,10 @@ impl Channel {
                     system.environment.obstacles[obstacle].name
                 )
             }
+            Channel::LineLength { line: l } => format!("{}.length", line(l)),
+            Channel::LineStretchedLength { line: l } => format!("{}.stretched_length", line(l)),
+            Channel::LineStretch { line: l } => format!("{}.stretch", line(l)),
+            Channel::WinchTension { line: l } => format!("{}.winch_tension", line(l)),
         }
     }
 
@@ -241,14 +310,17 @@ impl Channel {
             | Channel::NodeTension { .. }
             | Channel::ElementShearForce { .. }
             | Channel::PointForce { .. }
-            | Channel::ObstacleForce { .. } => "N",
+            | Channel::ObstacleForce { .. }
+            | Channel::WinchTension { .. } => "N",
             Channel::ElementCurvature { .. } => "1/m",
             Channel::ElementBendingMoment { .. } => "N·m",
             Channel::NodePosition { .. }
             | Channel::PointPosition { .. }
-            | Channel::ObstacleContactLength { .. } => "m",
+            | Channel::ObstacleContactLength { .. }
+            | Channel::LineLength { .. }
+            | Channel::LineStretchedLength { .. } => "m",
             Channel::NodeVelocity { .. } | Channel::PointVelocity { .. } => "m/s",
-            Channel::ElementStrain { .. } => "-",
+            Channel::ElementStrain { .. } | Channel::LineStretch { .. } => "-",
             Channel::BodyMotion { dof, .. } => ["m", "deg"][dof / 3],
             Channel::BodyVelocity { dof, .. } => ["m/s", "rad/s"][dof / 3],
             Channel::BodyLineLoad { dof, .. } => ["N", "N·m"][dof / 3],
@@ -353,6 +425,18 @@ impl Channel {
             Channel::ObstacleForce { .. } | Channel::ObstacleContactLength { .. } => {
                 self.value_at(system, ws, 0.0)
             }
+            Channel::LineLength { line } => unstretched_length(system, ws, line),
+            Channel::LineStretchedLength { line } => stretched_length(system, ws, line),
+            Channel::LineStretch { line } => {
+                stretched_length(system, ws, line) / unstretched_length(system, ws, line) - 1.0
+            }
+            Channel::WinchTension { line } => {
+                let end_b = system.lines[line]
+                    .winch
+                    .as_ref()
+                    .is_some_and(|w| w.at_end_b());
+                system.end_force(ws, line, end_b).norm()
+            }
         }
     }
 
@@ -379,6 +463,12 @@ impl Channel {
             Channel::ObstacleForce { obstacle, .. }
             | Channel::ObstacleContactLength { obstacle } => {
                 obstacle < system.environment.obstacles.len()
+            }
+            Channel::LineLength { line }
+            | Channel::LineStretchedLength { line }
+            | Channel::LineStretch { line } => line < system.lines.len(),
+            Channel::WinchTension { line } => {
+                system.lines.get(line).is_some_and(|l| l.winch.is_some())
             }
         }
     }

@@ -69,14 +69,13 @@ fn contacts(
     }
     for (li, (l, lw)) in system.lines.iter().zip(&ws.lines).enumerate() {
         let (q, qdot) = (&lw.position[..], &lw.velocity[..]);
+        let mesh = system.line_mesh(ws, li);
         match l.kind {
             LineKind::Fe { .. } => {
-                fe::obstacle_contacts(&l.mesh, obstacles, time, q, qdot, |k, _, f, w| {
-                    visit(k, f, w)
-                })
+                fe::obstacle_contacts(mesh, obstacles, time, q, qdot, |k, _, f, w| visit(k, f, w))
             }
             LineKind::Hermite(_) => {
-                hermite::obstacle_contacts(&l.mesh, obstacles, time, q, qdot, |k, _, _, f, w| {
+                hermite::obstacle_contacts(mesh, obstacles, time, q, qdot, |k, _, _, f, w| {
                     visit(k, f, w)
                 })
             }

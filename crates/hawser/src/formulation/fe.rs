@@ -67,7 +67,9 @@ pub fn line_forces(
         let length = delta.norm();
         let t = delta * (1.0 / length);
         let strain = length * sec.inverse_length - 1.0;
-        let strain_rate = t.dot(&(vb - va)) * sec.inverse_length;
+        // ε̇ = t·(v_b − v_a)/L0 (eq. 14), less σ(1 + ε) on a winch (Mesh::length_rate).
+        let strain_rate =
+            t.dot(&(vb - va)) * sec.inverse_length - line.length_rate * (1.0 + strain);
         let tension = sec.law.tension(strain, strain_rate);
         elements.tension[e] = tension;
         elements.strain[e] = strain;

@@ -202,6 +202,8 @@ pub fn line_forces(
     let rho_w = env.water_density;
     let bed_z = env.seabed_z();
     let still_water = env.is_still_water();
+    // σ = L̇/L of a line on a winch ([`Mesh::length_rate`]).
+    let sigma = mesh.length_rate;
     let mut blocks = blocks;
     if let Some(b) = blocks.as_deref_mut() {
         b.clear();
@@ -223,8 +225,14 @@ pub fn line_forces(
             let w = wg * l;
             let r = combine(&s, &qe);
             let r1 = combine(&d1, &qe);
-            let v = combine(&s, &ve);
-            let v1 = combine(&d1, &ve);
+            let mut v = combine(&s, &ve);
+            let mut v1 = combine(&d1, &ve);
+            if sigma != 0.0 {
+                // On a winch l(t) = l(0) L(t)/L(0): the rates at fixed ξ of r = Σ s_i q_i and
+                // r' = Σ s_i' q_i include ∂s_i/∂l l̇ (s₂, s₄ ∝ l; s₁', s₃' ∝ 1/l).
+                v += (qe[1] * s[1] + qe[3] * s[3]) * sigma;
+                v1 -= (qe[0] * d1[0] + qe[2] * d1[2]) * sigma;
+            }
             let stretch = r1.norm();
             let tau = r1 / stretch;
             // Axial: Q_i −= ∫ T ∂ε/∂r' s_i' ds.
@@ -236,7 +244,13 @@ pub fn line_forces(
             }
             // Bending: Q_i −= ∫ (EI r'' + ζ_b ṙ'') s_i'' ds.
             if bending {
-                let moment = (combine(&d2, &qe) * ei + combine(&d2, &ve) * zeta_b) * w;
+                let mut v2 = combine(&d2, &ve);
+                if sigma != 0.0 {
+                    // s₁'', s₃'' ∝ 1/l², s₂'', s₄'' ∝ 1/l.
+                    v2 -= ((qe[0] * d2[0] + qe[2] * d2[2]) * 2.0 + qe[1] * d2[1] + qe[3] * d2[3])
+                        * sigma;
+                }
+                let moment = (combine(&d2, &qe) * ei + v2 * zeta_b) * w;
                 for i in 0..4 {
                     fe[i] -= moment * d2[i];
                 }
@@ -299,7 +313,7 @@ pub fn line_forces(
         // Element results at the midpoint.
         let (_, d1, d2, d3) = shape(0.5, l);
         let r1 = combine(&d1, &qe);
-        let v1 = combine(&d1, &ve);
+        let v1 = combine(&d1, &ve) - (qe[0] * d1[0] + qe[2] * d1[2]) * sigma;
         let r2 = combine(&d2, &qe);
         let stretch = r1.norm();
         let (strain, rate, direction) = axial_strain(&r1, &v1, options.strain);

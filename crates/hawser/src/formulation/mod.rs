@@ -72,6 +72,10 @@ pub struct Mesh {
     pub sections: Vec<SectionProperties>,
     /// Section index of each element.
     pub element_section: Vec<usize>,
+    /// Relative rate of change σ = L̇/L [1/s] of the unstretched length of a line on a winch
+    /// (0 otherwise). Every element length scales with L(t) (docs/winches.md), so at fixed
+    /// nodes the strain rate gains −σ (1 + ε): ε̇ = d/dt (ℓ/l₀) = ℓ̇/l₀ − σ ℓ/l₀.
+    pub length_rate: Real,
 }
 
 impl Mesh {
@@ -86,7 +90,22 @@ impl Mesh {
         Self {
             sections: out,
             element_section,
+            length_rate: 0.0,
         }
+    }
+
+    /// Makes this mesh (a copy of `base`) the mesh of `base`'s line rescaled to `factor`
+    /// [-] times its unstretched length, changing at the relative rate `length_rate` σ
+    /// [1/s]: every element length l₀ = factor · l₀(base). The mass per unit unstretched
+    /// length, the axial law and its damping coefficient [N·s] stay those of the line type
+    /// (MoorDyn v2 rescales its segments the same way and keeps the damping). No allocation:
+    /// the winch's mesh is updated in place at every right-hand side.
+    pub fn rescale(&mut self, base: &Mesh, factor: Real, length_rate: Real) {
+        for (s, b) in self.sections.iter_mut().zip(&base.sections) {
+            s.element_length = b.element_length * factor;
+            s.inverse_length = 1.0 / s.element_length;
+        }
+        self.length_rate = length_rate;
     }
 
     /// Number of elements N.

@@ -120,6 +120,9 @@ pub struct Line {
     pub end_a: LineEnd,
     /// Attachment of end B.
     pub end_b: LineEnd,
+    /// A winch changing the line's unstretched length on a schedule (`fe` and `hermite`
+    /// lines of one section; [`crate::model::Winch`]); `None`: fixed length.
+    pub winch: Option<crate::model::Winch>,
 }
 
 impl Line {

@@ -8,6 +8,7 @@ mod motion;
 mod point;
 mod rigid_motion;
 mod steady_tow;
+mod winch;
 
 pub use body::{Body, BodyKind, Displacement, Thrust, Wind};
 pub use line::{Formulation, Line, LineEnd, LineType, MassMatrix, Section, StrainMeasure};
@@ -18,6 +19,7 @@ pub use rigid_motion::{
     euler_kinematics,
 };
 pub use steady_tow::{steady_point_velocity, steady_rigid_velocity, tow_velocity};
+pub use winch::{Winch, WinchEnd, WinchStage, WinchState};
 
 use crate::error::ModelError;
 use crate::math::Real;
@@ -218,6 +220,26 @@ impl Model {
                         format!("line {} (#{li}): clamp", l.name),
                         "must be a non-zero direction",
                     );
+                }
+            }
+            if let Some(w) = &l.winch {
+                let what = format!("line {} (#{li}): winch", l.name);
+                if l.formulation == Formulation::Dg {
+                    return bad(
+                        what,
+                        "is not available on `dg` lines (their element lengths are built into \
+                         the modal operators): use `formulation = \"fe\"` or `\"hermite\"`",
+                    );
+                }
+                if l.sections.len() != 1 {
+                    return bad(
+                        what,
+                        "needs a line of one section (a winch rescales the whole line): put \
+                         the winch on a single-section line joined to the rest by a free point",
+                    );
+                }
+                if let Err(why) = w.check(l.length()) {
+                    return bad(what, &why);
                 }
             }
             if l.formulation == Formulation::Dg {

@@ -433,6 +433,7 @@ pub fn single_line(
             clamp: [None; 2],
             end_a: LineEnd::Point(0),
             end_b: LineEnd::Point(1),
+            winch: None,
         }],
         points: vec![a, b],
         bodies: Vec::new(),
