@@ -138,10 +138,12 @@ impl RunWriter {
         }
         writeln!(self.timeseries)?;
         self.timeseries.flush()?;
-        for (li, l) in system.lines.iter().enumerate() {
+        for li in 0..system.lines.len() {
             let lw = &ws.lines[li];
+            // The current mesh: a line on a winch changes its unstretched length.
+            let mesh = system.line_mesh(ws, li);
             self.detectors[li].push(time, &lw.elements.tension, &lw.elements.strain, |e| {
-                0.5 * (l.mesh.arc_length(e) + l.mesh.arc_length(e + 1))
+                0.5 * (mesh.arc_length(e) + mesh.arc_length(e + 1))
             });
         }
         if let Some(interval) = self.snapshot_interval
@@ -156,7 +158,7 @@ impl RunWriter {
                     writeln!(
                         w,
                         "{time},{i},{},{},{},{},{t}",
-                        l.mesh.arc_length(i) + 0.0,
+                        system.line_mesh(ws, li).arc_length(i) + 0.0,
                         p.x,
                         p.y,
                         p.z

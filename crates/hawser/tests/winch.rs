@@ -208,6 +208,19 @@ fn lowering_follows_weight_plus_inertia(formulation: Formulation) {
         DAMPING * RATE / l_max
     );
     assert!(damping < damping_bound, "{damping} N");
+    // 4. The relative stretch at the end (holding at L = 27 m): the hanging line's tension
+    // T(s) = W_p + w (L − s) stretches it by ∫ T/EA ds = (W_p L + w L²/2)/EA, exactly
+    // what the chords (`fe`: each element's tension is T at its midpoint) and the Gauss
+    // rule (`hermite`) integrate; the residual oscillation changes it by at most its tension
+    // amplitude over EA.
+    let last = rec.rows.last().unwrap();
+    let l = last.length;
+    let stretch = (payload_wet * l + 0.5 * line_wet * l * l) / EA / l;
+    eprintln!(
+        "{formulation:?}: stretch {:.6e} at L = {l} m, analytic {stretch:.6e}",
+        last.stretch
+    );
+    assert!((last.stretch - stretch).abs() < oscillation / EA);
     assert!(DAMPING * RATE / l_max > 100.0 * damping_bound);
     assert!(worst_length < 1e-13 * l_max, "{worst_length}");
     assert!(

@@ -923,6 +923,7 @@ fn convert_lines(c: &mut Converter, s: &Section, points: &[PointSpec]) -> (Vec<L
             elements: Some(spanned(&t[5], segments.unwrap_or(1))),
             order: None,
             sections: Vec::new(),
+            winch: None,
         });
     }
     (out, any_outputs)

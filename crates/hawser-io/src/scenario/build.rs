@@ -22,6 +22,7 @@ use std::path::Path;
 use toml::Spanned;
 
 mod bodies;
+mod winch;
 pub use bodies::orientation_from_degrees;
 
 /// A scenario read from a file: the model, its output channels and where things are.
@@ -3117,7 +3118,12 @@ fn build_lines(
             }),
             end_a: LineEnd::Point(end_a),
             end_b: LineEnd::Point(end_b),
+            winch: None,
         });
+        if let Some(w) = &l.winch {
+            let line = out.last_mut().expect("just pushed");
+            line.winch = winch::build_winch(b, w, &k("winch"), line);
+        }
     }
     out
 }
@@ -3536,6 +3542,13 @@ fn build_channels(
             out.push(OutputChannel::new(Channel::EndTension { line: li, end_b }));
         }
     }
+    // A winch line's length and winch tension.
+    for (li, l) in model.lines.iter().enumerate() {
+        if l.winch.is_some() {
+            out.push(OutputChannel::new(Channel::LineLength { line: li }));
+            out.push(OutputChannel::new(Channel::WinchTension { line: li }));
+        }
+    }
     for (pi, p) in model.points.iter().enumerate() {
         if matches!(p.kind, PointKind::Free { .. }) {
             for axis in 0..3 {
@@ -3597,8 +3610,14 @@ fn build_channels(
                     let n = model.lines[li].elements();
                     format!(
                         "line `{first}` has nodes node0 (end A) … node{n} (end B) and elements \
-                         element0 … element{}",
-                        n.saturating_sub(1)
+                         element0 … element{}, and the channels {first}.length, \
+                         {first}.stretched_length, {first}.stretch{}",
+                        n.saturating_sub(1),
+                        if model.lines[li].winch.is_some() {
+                            format!(" and {first}.winch_tension")
+                        } else {
+                            String::new()
+                        }
                     )
                 } else if model.point_index(first).is_some() {
                     format!("point `{first}` has channels {first}.x|y|z|vx|vy|vz|fx|fy|fz")
@@ -3626,7 +3645,7 @@ fn build_channels(
                 };
                 let d = b
                     .diag(Some(c.span()), &format!("simulation.channels[{ci}]"), msg)
-                    .expected("LINE.end_a|end_b.tension|node_force|fx|fy|fz, LINE.nodeK.tension|x|y|z|vx|vy|vz, LINE.elementK.strain, POINT.x|y|z|vx|vy|vz|fx|fy|fz, BODY.x|y|z|roll|pitch|yaw|vx|…|wz|fx|…|mz, OBSTACLE.force_x|force_y|force_z|contact_length")
+                    .expected("LINE.end_a|end_b.tension|node_force|fx|fy|fz, LINE.nodeK.tension|x|y|z|vx|vy|vz, LINE.elementK.strain, LINE.length|stretched_length|stretch|winch_tension, POINT.x|y|z|vx|vy|vz|fx|fy|fz, BODY.x|y|z|roll|pitch|yaw|vx|…|wz|fx|…|mz, OBSTACLE.force_x|force_y|force_z|contact_length")
                     .hint(hint);
                 b.push(d);
             }
@@ -3647,6 +3666,18 @@ pub fn parse_channel(name: &str, model: &Model) -> Result<Channel, String> {
     if let Some(li) = model.line_index(parts[0]) {
         let n = model.lines[li].elements();
         match parts.as_slice() {
+            [_, "length"] => return Ok(Channel::LineLength { line: li }),
+            [_, "stretched_length"] => return Ok(Channel::LineStretchedLength { line: li }),
+            [_, "stretch"] => return Ok(Channel::LineStretch { line: li }),
+            [_, "winch_tension"] => {
+                if model.lines[li].winch.is_none() {
+                    return Err(format!(
+                        "line `{}` has no winch, so no winch tension",
+                        parts[0]
+                    ));
+                }
+                return Ok(Channel::WinchTension { line: li });
+            }
             [_, end @ ("end_a" | "end_b"), q] => {
                 let end_b = *end == "end_b";
                 match *q {

@@ -704,6 +704,54 @@ pub struct LineSpec {
     /// Sections from end A to end B.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub sections: Vec<SectionSpec>,
+    /// A winch paying the line out or hauling it in on a schedule (`fe` and `hermite` lines
+    /// of one section; docs/winches.md); none by default.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub winch: Option<WinchSpec>,
+}
+
+/// The line end a winch is at.
+#[derive(Clone, Copy, Debug, Deserialize, Serialize, JsonSchema, PartialEq, Eq)]
+pub enum WinchEndSpec {
+    /// End A (`end_a`).
+    A,
+    /// End B (`end_b`).
+    B,
+}
+
+/// `[lines.winch]`: the line's unstretched length follows a schedule of stages from t = 0,
+/// its length at t = 0 being the line's `length`.
+#[derive(Debug, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct WinchSpec {
+    /// `"A"` or `"B"`: the end the winch is at; `LINE.winch_tension` is the tension there.
+    #[schemars(with = "WinchEndSpec")]
+    pub end: Spanned<WinchEndSpec>,
+    /// Stages from t = 0, each `{ duration = s, payout_rate = m/s }` (> 0 pays out, < 0
+    /// hauls in); the winch holds after the last.
+    pub stages: Vec<WinchStageSpec>,
+    /// Time over which the rate changes at the start of each stage and after the last, by a
+    /// half-cosine [s]; default 0 (at once). No longer than any stage.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub ramp_time: Option<Spanned<f64>>,
+    /// Shortest unstretched length the schedule may reach [m]; default 0 (the length must
+    /// stay > 0).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub minimum_length: Option<Spanned<f64>>,
+}
+
+/// One stage of a winch schedule.
+#[derive(Debug, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct WinchStageSpec {
+    /// Duration [s], > 0.
+    #[schemars(with = "f64")]
+    pub duration: Spanned<f64>,
+    /// Payout rate of unstretched line [m/s]: > 0 pays out, < 0 hauls in, 0 holds.
+    #[schemars(with = "f64")]
+    pub payout_rate: Spanned<f64>,
 }
 
 /// How a body moves.
