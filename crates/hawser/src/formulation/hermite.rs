@@ -31,6 +31,11 @@
 //!   ([`crate::physics::obstacles`], [`obstacle_contacts`]) per unit unstretched length at the
 //!   Gauss points, distributed with s_i.
 //!
+//! - on a winch (docs/winches.md) the element length l scales with the line, and s₂, s₄ (∝ l),
+//!   s₁', s₃' (∝ 1/l) and the second derivatives change with it: the rates of r, r' and r''
+//!   at fixed ξ gain σ (s₂ t_a + s₄ t_b), −σ (s₁' r_a + s₃' r_b) and
+//!   −σ (2 s₁'' r_a + 2 s₃'' r_b + s₂'' t_a + s₄'' t_b), σ = L̇/L ([`Mesh::length_rate`]).
+//!
 //! The element couples the four consecutive vectors of its nodes (see
 //! [`vector_index`]), so the line's matrices are block-banded with bandwidth 3.
 
