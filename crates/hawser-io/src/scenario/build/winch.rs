@@ -13,6 +13,9 @@ pub(super) fn build_winch(
     line: &Line,
 ) -> Option<Winch> {
     let k = |x: &str| format!("{key}.{x}");
+    if line.sections.is_empty() {
+        return None; // the line's own diagnostic says why
+    }
     let mut ok = true;
     if line.formulation == Formulation::Dg {
         let d = b
