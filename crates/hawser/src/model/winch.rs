@@ -274,7 +274,8 @@ mod tests {
     }
 
     /// The payout is the integral of the rate and the rate the integral of the acceleration
-    /// (Simpson's rule on 2000 intervals per stage: error ~1e-12 for these smooth pieces),
+    /// (Simpson's rule on 2000 intervals per piece between ramp ends, where the jerk jumps:
+    /// error ~1e-13 for these smooth pieces),
     /// and stage payouts follow r D − (r − r_p) T_r / 2.
     #[test]
     fn payout_rate_and_acceleration_are_consistent() {
@@ -297,7 +298,14 @@ mod tests {
                 * h
                 / 3.0
         };
-        for (a, b) in [(0.0, 4.0), (4.0, 10.0), (10.0, 13.0)] {
+        for (a, b) in [
+            (0.0, 2.0),
+            (2.0, 4.0),
+            (4.0, 6.0),
+            (6.0, 10.0),
+            (10.0, 12.0),
+            (12.0, 13.0),
+        ] {
             let dp = w.state(b).payout - w.state(a).payout;
             let int = simpson(&|t| w.state(t).rate, a, b);
             assert!((dp - int).abs() < 1e-11, "{a}..{b}: {dp} vs {int}");
@@ -316,7 +324,8 @@ mod tests {
         assert_eq!(w.state(-1.0), WinchState::default());
     }
 
-    /// The extremes found from the boundaries and zero crossings match a dense scan.
+    /// The extremes found from the boundaries and zero crossings match a dense scan (step h =
+    /// 1e-4 s: at a smooth extreme the scan misses by at most ½ max|L̈| h² ≈ 5e-9 m).
     #[test]
     fn payout_range_matches_a_scan() {
         let w = schedule();
@@ -328,7 +337,7 @@ mod tests {
             shi = shi.max(p);
         }
         assert!(
-            (lo - slo).abs() < 1e-9 && (hi - shi).abs() < 1e-9,
+            (lo - slo).abs() < 1e-8 && (hi - shi).abs() < 1e-8 && lo <= slo && hi >= shi,
             "{lo} {slo} {hi} {shi}"
         );
         // The largest payout is where the second stage's ramp crosses zero rate.
