@@ -14,6 +14,7 @@ use hawser::model::{
 use hawser::physics::waves::{
     IrregularSea, RegularWave, SeaState, Spectrum, Stretching, WaveSpec, Waves,
 };
+use hawser::validation::signal::fft;
 use std::f64::consts::PI;
 
 const G: Real = 9.80665;
@@ -870,40 +871,6 @@ fn jonswap_heave_response_spectrum_is_rao_squared_times_the_sea() {
          of ∫|H|²S",
         100.0 * worst
     );
-}
-
-/// Radix-2 FFT in place (as in tests/waves.rs).
-fn fft(re: &mut [Real], im: &mut [Real]) {
-    let n = re.len();
-    let mut j = 0;
-    for i in 1..n {
-        let mut bit = n >> 1;
-        while j & bit != 0 {
-            j ^= bit;
-            bit >>= 1;
-        }
-        j |= bit;
-        if i < j {
-            re.swap(i, j);
-            im.swap(i, j);
-        }
-    }
-    let mut len = 2;
-    while len <= n {
-        let ang = -2.0 * PI / len as Real;
-        for start in (0..n).step_by(len) {
-            for k in 0..len / 2 {
-                let (s, c) = (ang * k as Real).sin_cos();
-                let (a, b) = (start + k, start + k + len / 2);
-                let (xr, xi) = (re[b] * c - im[b] * s, re[b] * s + im[b] * c);
-                re[b] = re[a] - xr;
-                im[b] = im[a] - xi;
-                re[a] += xr;
-                im[a] += xi;
-            }
-        }
-        len <<= 1;
-    }
 }
 
 /// A 6-DOF RAO table varying with heading, in a short-crested sea with a build-up ramp, on a

@@ -14,6 +14,7 @@ use hawser::physics::waves::{
 };
 use hawser::simulation::{Observer, Simulation};
 use hawser::system::{System, Workspace};
+use hawser::validation::signal::fft;
 use std::f64::consts::PI;
 
 const G: Real = 9.80665;
@@ -464,40 +465,6 @@ fn jonswap_normalisation_recovers_the_significant_height() {
         assert!(close(m0, 9.0 / 16.0, 1e-8), "γ {gamma}: m0 {m0}");
         let dnv = 1.0 - 0.287 * gamma.ln();
         assert!(close(jonswap_normalisation(gamma), dnv, 0.02), "γ {gamma}");
-    }
-}
-
-/// Radix-2 FFT in place (re, im), length a power of two.
-fn fft(re: &mut [Real], im: &mut [Real]) {
-    let n = re.len();
-    let mut j = 0;
-    for i in 1..n {
-        let mut bit = n >> 1;
-        while j & bit != 0 {
-            j ^= bit;
-            bit >>= 1;
-        }
-        j |= bit;
-        if i < j {
-            re.swap(i, j);
-            im.swap(i, j);
-        }
-    }
-    let mut len = 2;
-    while len <= n {
-        let ang = -2.0 * PI / len as Real;
-        for start in (0..n).step_by(len) {
-            for k in 0..len / 2 {
-                let (s, c) = (ang * k as Real).sin_cos();
-                let (a, b) = (start + k, start + k + len / 2);
-                let (xr, xi) = (re[b] * c - im[b] * s, re[b] * s + im[b] * c);
-                re[b] = re[a] - xr;
-                im[b] = im[a] - xi;
-                re[a] += xr;
-                im[a] += xi;
-            }
-        }
-        len <<= 1;
     }
 }
 

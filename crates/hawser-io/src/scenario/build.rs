@@ -77,6 +77,22 @@ impl<'a> Builder<'a> {
         Diagnostic::new(self.file, self.source, span, key, message)
     }
 
+    /// Refuses an object name that cannot be a channel prefix (empty, or with `.`, `,` or a
+    /// quote); `kind` is "point", "line", …, `example` a channel it would name.
+    fn check_channel_name(&mut self, name: &Spanned<String>, key: &str, kind: &str, example: &str) {
+        let n = name.get_ref();
+        if n.contains(['.', ',', '"']) || n.is_empty() {
+            let d = self
+                .diag(
+                    Some(name.span()),
+                    key,
+                    format!("{kind} names must be non-empty without `.`, `,` or quotes"),
+                )
+                .hint(format!("they become channel names such as `{example}`"));
+            self.push(d);
+        }
+    }
+
     fn push(&mut self, d: Diagnostic) {
         self.errors.push(d);
     }
@@ -1534,16 +1550,7 @@ fn build_points(
                 ));
             b.push(d);
         }
-        if name.contains(['.', ',', '"']) || name.is_empty() {
-            let d = b
-                .diag(
-                    Some(p.name.span()),
-                    &k("name"),
-                    "point names must be non-empty without `.`, `,` or quotes",
-                )
-                .hint("they become channel names such as `buoy.z`");
-            b.push(d);
-        }
+        b.check_channel_name(&p.name, &k("name"), "point", "buoy.z");
         let kind = *p.kind.get_ref();
         let kind_name = match kind {
             PointKindSpec::Fixed => "a fixed point",
@@ -2862,16 +2869,7 @@ fn build_lines(
                 ));
             b.push(d);
         }
-        if name.contains(['.', ',', '"']) || name.is_empty() {
-            let d = b
-                .diag(
-                    Some(l.name.span()),
-                    &k("name"),
-                    "line names must be non-empty without `.`, `,` or quotes",
-                )
-                .hint("they become channel names such as `L1.end_b.tension`");
-            b.push(d);
-        }
+        b.check_channel_name(&l.name, &k("name"), "line", "L1.end_b.tension");
         let end = |b: &mut Builder, s: &Spanned<String>, key: &str| -> usize {
             match points.get(s.get_ref()) {
                 Some(&p) => p,
@@ -3172,16 +3170,7 @@ fn build_obstacles(b: &mut Builder, scenario: &Scenario, env: &Environment) -> V
                 ));
             b.push(d);
         }
-        if name.contains(['.', ',', '"']) || name.is_empty() {
-            let d = b
-                .diag(
-                    Some(o.name.span()),
-                    &k("name"),
-                    "obstacle names must be non-empty without `.`, `,` or quotes",
-                )
-                .hint("they become channel names such as `drum.force_x`");
-            b.push(d);
-        }
+        b.check_channel_name(&o.name, &k("name"), "obstacle", "drum.force_x");
         let clash = scenario
             .lines
             .iter()

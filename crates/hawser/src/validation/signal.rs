@@ -1,4 +1,4 @@
-//! Sampled signals: amplitude spectrum, level crossings, peaks.
+//! Sampled signals: amplitude spectrum, FFT, level crossings, peaks.
 
 use crate::math::Real;
 
@@ -81,6 +81,41 @@ pub fn value_at(time: &[Real], x: &[Real], t: Real) -> Real {
     }
     let f = (t - time[i - 1]) / (time[i] - time[i - 1]);
     x[i - 1] + f * (x[i] - x[i - 1])
+}
+
+/// Radix-2 decimation-in-time FFT in place: (re, im) ← Σ_j x_j e^(−2πi jk/n), n = re.len() a
+/// power of two (spectra of long generated sea and response records in the tests).
+pub fn fft(re: &mut [Real], im: &mut [Real]) {
+    let n = re.len();
+    let mut j = 0;
+    for i in 1..n {
+        let mut bit = n >> 1;
+        while j & bit != 0 {
+            j ^= bit;
+            bit >>= 1;
+        }
+        j |= bit;
+        if i < j {
+            re.swap(i, j);
+            im.swap(i, j);
+        }
+    }
+    let mut len = 2;
+    while len <= n {
+        let ang = -2.0 * std::f64::consts::PI / len as Real;
+        for start in (0..n).step_by(len) {
+            for k in 0..len / 2 {
+                let (s, c) = (ang * k as Real).sin_cos();
+                let (a, b) = (start + k, start + k + len / 2);
+                let (xr, xi) = (re[b] * c - im[b] * s, re[b] * s + im[b] * c);
+                re[b] = re[a] - xr;
+                im[b] = im[a] - xi;
+                re[a] += xr;
+                im[a] += xi;
+            }
+        }
+        len <<= 1;
+    }
 }
 
 #[cfg(test)]

@@ -42,6 +42,9 @@ pub struct DgSection {
     pub basis: Basis,
     /// Largest axial wave speed √(max T'/γ0) [m/s] (DG paper eq. 25).
     pub wave_speed: Real,
+    /// Modal filter profile per mode, φ_k = ((k − 1)/(P − 1))^[`FILTER_EXPONENT`] for k ≥ 2
+    /// and 0 for k < 2 ([`DgLine::modal_filter`]); all 0 when P < 2.
+    pub filter_profile: Vec<Real>,
 }
 
 /// One element: where it is on the line, in the state and in the scratch arrays.
@@ -233,10 +236,21 @@ impl DgLine {
                 start += h;
             }
             bending |= t.bending_stiffness > 0.0 || t.bending_damping > 0.0;
+            let p = spec.order as Real;
+            let filter_profile = (0..m)
+                .map(|k| {
+                    if k < 2 {
+                        0.0
+                    } else {
+                        ((k - 1) as Real / (p - 1.0)).powi(FILTER_EXPONENT)
+                    }
+                })
+                .collect();
             out.push(DgSection {
                 properties: SectionProperties::new(t, h),
                 wave_speed: (t.axial_stiffness.max_tangent() / t.mass_per_length).sqrt(),
                 basis,
+                filter_profile,
             });
         }
         Self {

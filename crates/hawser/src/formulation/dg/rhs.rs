@@ -10,7 +10,7 @@
 //! are the same scheme), and sources are projected, (2k + 1)/2 Σ_q w_q φ_k(ξ_q) G(ξ_q).
 
 use super::basis::Basis;
-use super::line::{DgLine, EndLoad, EndState, FILTER_EXPONENT, Rotation, Translation};
+use super::line::{DgLine, EndLoad, EndState, Rotation, Translation};
 use crate::formulation::fluid_load;
 use crate::math::{Real, Vec3, add3, get3, set3, solve3};
 use crate::physics::environment::Environment;
@@ -454,8 +454,7 @@ impl DgLine {
             if self.modal_filter > 0.0 && m > 2 {
                 let p = (m - 1) as Real;
                 let sigma = self.modal_filter * sec.wave_speed * (2.0 * p + 1.0) / el.length;
-                for k in 2..m {
-                    let phi = ((k - 1) as Real / (p - 1.0)).powi(FILTER_EXPONENT);
+                for (k, phi) in sec.filter_profile.iter().enumerate().skip(2) {
                     for c in 3 * k..3 * k + 3 {
                         dv[c] -= sigma * phi * v[c];
                     }
