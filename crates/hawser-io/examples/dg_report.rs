@@ -5,8 +5,9 @@
 //! cargo run --release -p hawser-io --example dg_report -- ropos   # the 48 ROPOS cases, ~1.5 h
 //! cargo run --release -p hawser-io --example dg_report -- ropos-mesh  # 200 m on 20 and 40 elements
 //! cargo run --release -p hawser-io --example dg_report -- ropos-body  # the cage as a rigid body
+//! cargo run --release -p hawser-io --example dg_report -- ropos body f=0.2 1730 200  # rigid-body cage subset
 //! cargo run --release -p hawser-io --example dg_report            # the report, ~1 min
-//! cargo run --release -p hawser-io --example dg_report -- cost [cantilever|snap|ropos]
+//! cargo run --release -p hawser-io --example dg_report -- cost [cantilever|snap|snap-dg|ropos]
 //! ```
 //!
 //! `cost` prints the tables of BENCHMARKS.md ("dg: accuracy against cost"): the wall time each
@@ -71,8 +72,21 @@ fn main() {
     match args.first().map(String::as_str) {
         Some("koh") => koh(),
         Some("ropos") => {
-            let only: Vec<Real> = args[1..].iter().map(|a| a.parse().unwrap()).collect();
-            ropos(&only)
+            // `ropos [body] [f=F]... [L]...`: `body` runs the cage as a rigid body
+            // (examples/ropos_tether_body.toml, stored in ropos_rigid.json); `f=F` keeps only
+            // those frequencies; lengths keep only those lengths.
+            let body = args[1..].iter().any(|a| a == "body");
+            let frequencies: Vec<Real> = args[1..]
+                .iter()
+                .filter_map(|a| a.strip_prefix("f="))
+                .map(|a| a.parse().unwrap())
+                .collect();
+            let only: Vec<Real> = args[1..]
+                .iter()
+                .filter(|a| *a != "body" && !a.starts_with("f="))
+                .map(|a| a.parse().unwrap())
+                .collect();
+            ropos(&only, &frequencies, body)
         }
         Some("cost") => cost(),
         Some("ropos-mesh") => ropos_mesh(),
@@ -264,15 +278,24 @@ struct RoposRecord {
     /// Cage and ship tension from 0.25 τ before to 2.5 τ after the first cage snap (τ = L/c),
     /// at most 300 samples: (t, T_ship, T_cage).
     first_snap: Vec<(Real, Real, Real)>,
+    /// The dg modal velocity filter's coefficient c_f of the run (docs/dg.md, Discretisation
+    /// item 6); `None` for the runs stored before the filter existed.
+    #[serde(default)]
+    modal_filter: Option<Real>,
 }
 
 fn snap_tuple(s: Option<tether::Snap>) -> Option<(Real, Real, Real, Real)> {
     s.map(|s| (s.time, s.before, s.peak, s.peak_time))
 }
 
-fn ropos(only: &[Real]) {
-    let base = load("ropos_tether.toml");
-    let path = data_dir().join("ropos.json");
+fn ropos(only: &[Real], only_frequencies: &[Real], body: bool) {
+    let (file, stored) = if body {
+        ("ropos_tether_body.toml", "ropos_rigid.json")
+    } else {
+        ("ropos_tether.toml", "ropos.json")
+    };
+    let base = load(file);
+    let path = data_dir().join(stored);
     let mut records: Vec<RoposRecord> = std::fs::read_to_string(&path)
         .ok()
         .and_then(|s| serde_json::from_str(&s).ok())
@@ -286,6 +309,9 @@ fn ropos(only: &[Real]) {
     for length in lengths {
         for &alpha in &ALPHAS {
             for &frequency in &FREQUENCIES {
+                if !only_frequencies.is_empty() && !only_frequencies.contains(&frequency) {
+                    continue;
+                }
                 let model = tether::case(&base, length, alpha, frequency, ROPOS_PERIODS);
                 let c = tether::wave_speed(&model);
                 let run = run_tether(&model).unwrap_or_else(|e| {
@@ -349,6 +375,7 @@ fn ropos(only: &[Real]) {
                     taut_path: s.taut_path,
                     ship_last_periods,
                     first_snap,
+                    modal_filter: Some(model.lines[0].modal_filter),
                 };
                 eprintln!(
                     "L {length:6} α {alpha:5} f {frequency:4}: dt {:.2e} s, {:.1} s wall; ship \
@@ -1002,11 +1029,27 @@ fn ropos_section(w: &mut String, img: &Path) {
         w,
         "\n### The 48 cases\n\nShip-end tension extremes after the build-up; the first snap at \
          the cage (time, tension before the front, peak) and its arrival at the ship (time, \
-         peak); travel = ship − cage time against L/c.\n\n\
+         peak); travel = ship − cage time against L/c. {}\n\n\
          | L [m] | α | f [Hz] | Δt [s] | wall [s] | T_ship min [kN] | T_ship max [kN] | slack \
          (at the ship) | cage snap t [s] | cage before → peak [kN] | ship arrival t [s] | ship \
          peak [kN] | travel [s] | L/c [s] | travel error |\n\
-         |---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+         |---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|",
+        {
+            let filtered = records.iter().filter(|r| r.modal_filter.is_some()).count();
+            if filtered == records.len() {
+                "Every case ran with the dg modal velocity filter (docs/dg.md, Discretisation \
+                 item 6)."
+                    .to_string()
+            } else {
+                format!(
+                    "The {filtered} rows marked § were rerun with the dg modal velocity filter \
+                     (docs/dg.md, Discretisation item 6; `dg_report ropos f=0.2 1730 200`); the \
+                     other {} predate the filter (they were run without it, and the verdicts \
+                     below mix both).",
+                    records.len() - filtered
+                )
+            }
+        }
     );
     // |travel / (L/c) − 1| at L = 1730 m (the paper's case), and every length's errors.
     let mut worst_travel: Real = 0.0;
@@ -1039,9 +1082,10 @@ fn ropos_section(w: &mut String, img: &Path) {
         }
         let _ = writeln!(
             w,
-            "| {:.0} | {} | {:.2} | {:.1e} | {:.0} | {:.1} | {:.1} | {} | {ct} | {cb} | {st} | {sp} | \
+            "| {:.0}{} | {} | {:.2} | {:.1e} | {:.0} | {:.1} | {:.1} | {} | {ct} | {cb} | {st} | {sp} | \
              {} | {tau:.4} | {} |",
             r.length,
+            if r.modal_filter.is_some() { " §" } else { "" },
             r.alpha,
             r.frequency,
             r.step,
@@ -1260,8 +1304,9 @@ fn ropos_section(w: &mut String, img: &Path) {
              centre). Over 30 s (`dg_report ropos-body`) it gives the same ship tension range, \
              {:.1}–{:.1} kN against {:.1}–{:.1} kN, and the same first snap at the cage, {} \
              against {}: at 1730 m the snap is a heave event, and the point mass carries the \
-             heave added mass and drag. The 48 cases above keep the point mass; rerunning them \
-             with the body is a change of the scenario file and `validation::tether::case`.",
+             heave added mass and drag. The 48 cases above keep the point mass; \
+             `validation::tether::case` moves a rigid-body cage too, and `dg_report ropos body` \
+             runs the cases with it (below).",
             b.ship_min / 1e3,
             b.ship_max / 1e3,
             p.ship_min / 1e3,
@@ -1269,6 +1314,56 @@ fn ropos_section(w: &mut String, img: &Path) {
             snap(b),
             snap(p)
         );
+    }
+    if let Some(rigid) = read::<Vec<RoposRecord>>("ropos_rigid.json")
+        && !rigid.is_empty()
+    {
+        let _ = writeln!(
+            w,
+            "\n**The cases with the rigid-body cage** (`dg_report ropos body f=0.2 1730 200`: \
+             the {} cases below, each against the point-mass case of the table above; the \
+             other cases were not run with the body). Ship tension after the build-up, first \
+             snap at the cage (time, peak) and its travel to the ship, point mass → rigid \
+             body:\n\n\
+             | L [m] | α | f [Hz] | T_ship min [kN] | T_ship max [kN] | cage snap t [s] | cage \
+             snap peak [kN] | travel [s] | wall [s] |\n\
+             |---|---|---|---|---|---|---|---|---|",
+            rigid.len()
+        );
+        let snap = |r: &RoposRecord| r.cage_snap.map_or("–".into(), |c| format!("{:.3}", c.0));
+        let peak_of = |r: &RoposRecord| {
+            r.cage_snap
+                .map_or("–".into(), |c| format!("{:.1}", c.2 / 1e3))
+        };
+        let travel = |r: &RoposRecord| match (r.cage_snap, r.ship_snap) {
+            (Some(c), Some(s)) => format!("{:.4}", s.0 - c.0),
+            _ => "–".into(),
+        };
+        for b in &rigid {
+            let Some(p) = find(b.length, b.alpha, b.frequency) else {
+                continue;
+            };
+            let _ = writeln!(
+                w,
+                "| {:.0} | {} | {:.2} | {:.1} → {:.1} | {:.1} → {:.1} | {} → {} | {} → {} | \
+                 {} → {} | {:.0} → {:.0} |",
+                b.length,
+                b.alpha,
+                b.frequency,
+                p.ship_min / 1e3,
+                b.ship_min / 1e3,
+                p.ship_max / 1e3,
+                b.ship_max / 1e3,
+                snap(p),
+                snap(b),
+                peak_of(p),
+                peak_of(b),
+                travel(p),
+                travel(b),
+                p.wall_seconds,
+                b.wall_seconds
+            );
+        }
     }
     // Plots: Fig. 5 (ship tension over the last two periods) and Fig. 6a (the first snap at
     // L = 200 m, f = 0.2 Hz).
@@ -1662,15 +1757,17 @@ fn cost() {
             &rows,
         );
     }
-    if want("snap") {
+    if want("snap") || want("snap-dg") {
         // The undamped snapping cable: values only (the peak of an undamped front has no
-        // converged value for dg, see BENCHMARKS.md).
+        // converged value for dg, see BENCHMARKS.md). `snap-dg` runs the dg rows only.
         let mut rows = Vec::new();
-        for n in [5, 10, 20, 40, 80] {
-            rows.push(snap_peak(Fe, n, 4));
-        }
-        for n in [3, 5, 10, 20] {
-            rows.push(snap_peak(Hermite, n, 4));
+        if want("snap") {
+            for n in [5, 10, 20, 40, 80] {
+                rows.push(snap_peak(Fe, n, 4));
+            }
+            for n in [3, 5, 10, 20] {
+                rows.push(snap_peak(Hermite, n, 4));
+            }
         }
         for p in [2, 4, 6] {
             for n in [2, 3, 5, 10, 20] {
