@@ -120,3 +120,42 @@ fn bending_matters_only_for_short_tethers() {
     );
     assert!(short_peak > 2.0 * long_peak || short_time > 2.0 * long_time);
 }
+
+/// A case of the study from `examples/ropos_tether_body.toml` (the cage as a rigid body on a
+/// bridle): `case` seeds the body so that its bridle is L below the ship (to 1e-9 m, rounding),
+/// and at L = 200 m the statics hang the cage on the shortened tether: the ship end carries the
+/// tether's wet weight γ0 (1 − ρ_w/ρ) g L more than the cage end and the cage end the body's
+/// wet weight (m − ρ_w V) g, both within the statics' 1e-4 (as in
+/// `tether_wet_weight_at_1730_m`). (The statics also find the cage from the 1730 m seed; the
+/// seed matters for the initial guess only.)
+#[test]
+fn rigid_body_cage_follows_the_length() {
+    let path =
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples/ropos_tether_body.toml");
+    let base = hawser_io::scenario::load(&path).unwrap().model;
+    let mut m = case(&base, 200.0, 1.0, 0.2, 1.0);
+    let body = &m.bodies[0];
+    let offset = match m.points[1].kind {
+        hawser::model::PointKind::Body { offset, .. } => offset,
+        _ => unreachable!("the bridle is a body point"),
+    };
+    let bridle = body.position + body.orientation * offset;
+    let seed_error =
+        (bridle - (m.points[0].position - hawser::math::Vec3::new(0.0, 0.0, 200.0))).norm();
+    assert!(seed_error < 1e-9, "bridle seeded at {bridle:?}");
+    m.settings.duration = 0.0;
+    let r = run_tether(&m).unwrap();
+    let (ship, cage) = (r.ship_tension[0], r.cage_tension[0]);
+    let t = &m.line_types[0];
+    let g = m.environment.gravity;
+    let rho_w = m.environment.water_density;
+    let tether_wet = t.mass_per_length * (1.0 - rho_w / (t.mass_per_length / t.area())) * g * 200.0;
+    let body = &m.bodies[0];
+    let cage_wet = (body.mass - rho_w * body.displacement.volume()) * g;
+    eprintln!(
+        "L 200 m, rigid-body cage: ship {ship:.1} N, cage {cage:.1} N; tether wet weight \
+         {tether_wet:.1} N, cage wet weight {cage_wet:.1} N"
+    );
+    assert!(((ship - cage) / tether_wet - 1.0).abs() < 1e-4);
+    assert!((cage / cage_wet - 1.0).abs() < 1e-4);
+}

@@ -59,7 +59,17 @@ pub fn case(base: &Model, length: Real, alpha: Real, frequency: Real, periods: R
             *ramp = RAMP_PERIODS / frequency;
         }
         let top = m.points[ship].position;
-        m.points[cage].position = top - Vec3::new(0.0, 0.0, length);
+        let target = top - Vec3::new(0.0, 0.0, length);
+        match m.points[cage].kind {
+            // The cage as a rigid body: the body moves so that its bridle point is L below
+            // the ship (the body's orientation and the bridle offset kept).
+            PointKind::Body { body, offset } => {
+                let b = &mut m.bodies[body];
+                let bridle = b.position + b.orientation * offset;
+                b.position += target - bridle;
+            }
+            _ => m.points[cage].position = target,
+        }
     }
     m.settings.duration = (RAMP_PERIODS + periods) / frequency;
     let tau = length / wave_speed(&m);
