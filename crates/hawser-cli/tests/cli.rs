@@ -228,3 +228,92 @@ fn bench_dg_counts_modal_degrees_of_freedom() {
     let refused = hawser(&["bench", file, "--order", "2", "--duration", "0.02"]);
     assert_eq!(refused.status.code(), Some(2));
 }
+
+/// `hawser bench --bodies both` runs the eight buoys as rigid bodies and as point masses on
+/// the same lines, `--bodies points --waves all` the same lines in still water, a regular wave
+/// and two JONSWAP seas; both print their columns, and the JSON gives each run's difference
+/// from the matching baseline and the cost of the fluid kinematics alone. No timing is
+/// asserted (the machine is shared); only that the numbers exist and are finite or positive.
+#[test]
+fn bench_compares_bodies_with_points_and_seas_with_still_water() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let file = root.join("scripts/bench/eight_buoys.toml");
+    let file = file.to_str().unwrap();
+    let common = ["--mass", "lumped", "--dt", "0.004", "--duration", "0.02"];
+    let run = |extra: &[&str], json: bool| {
+        let mut args = vec!["bench", file];
+        args.extend_from_slice(extra);
+        args.extend_from_slice(&common);
+        if json {
+            args.push("--json");
+        }
+        let out = hawser(&args);
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        out.stdout
+    };
+    let bodies = ["--bodies", "both"];
+    let waves = ["--bodies", "points", "--waves", "all"];
+    let text = String::from_utf8_lossy(&run(&bodies, false)).to_string()
+        + &String::from_utf8_lossy(&run(&waves, false));
+    for column in [
+        "waves",
+        "bodies",
+        "us/step",
+        "node-steps/s",
+        "us/body/step",
+        "ns/node/step",
+        "ns per u + a evaluation",
+        "jonswap:200",
+    ] {
+        assert!(text.contains(column), "no {column:?} in\n{text}");
+    }
+    let b: serde_json::Value = serde_json::from_slice(&run(&bodies, true)).unwrap();
+    let w: serde_json::Value = serde_json::from_slice(&run(&waves, true)).unwrap();
+    let (b_runs, w_runs) = (b["runs"].as_array().unwrap(), w["runs"].as_array().unwrap());
+    assert_eq!(
+        (b_runs.len(), w_runs.len()),
+        (2, 4),
+        "bodies/points; 4 seas"
+    );
+    let steps = &b_runs[0]["steps"];
+    for r in b_runs.iter().chain(w_runs) {
+        // The same 8 lines of 10 elements and the same steps every time.
+        assert_eq!(r["nodes"], 88, "{r}");
+        assert_eq!(&r["steps"], steps, "{r}");
+        let points = r["bodies_replaced_by_points"].as_u64().unwrap();
+        let bodies = r["free_bodies"].as_u64().unwrap();
+        assert_eq!((points, bodies), if points > 0 { (8, 0) } else { (0, 8) });
+        assert!(r["us_per_step"].as_f64().unwrap() > 0.0);
+        if bodies > 0 {
+            assert!(
+                r["body_overhead_us_per_body_step"]
+                    .as_f64()
+                    .unwrap()
+                    .is_finite()
+            );
+        }
+        if r["waves"] != "still" && r["waves"] != "as-is" {
+            assert!(
+                r["kinematics_ns_per_node_step"]
+                    .as_f64()
+                    .unwrap()
+                    .is_finite()
+            );
+        }
+    }
+    let k = w["kinematics"].as_array().unwrap();
+    let labels: Vec<_> = k.iter().map(|k| k["waves"].as_str().unwrap()).collect();
+    assert_eq!(labels, ["still", "regular", "jonswap:50", "jonswap:200"]);
+    assert!(
+        k.iter()
+            .all(|k| k["ns_per_evaluation"].as_f64().unwrap() > 0.0)
+    );
+    for bad in [["--bodies", "some"], ["--waves", "jonswap:0"]] {
+        let out = hawser(&["bench", file, bad[0], bad[1], "--duration", "0.02"]);
+        assert_eq!(out.status.code(), Some(2), "{bad:?}");
+    }
+}
