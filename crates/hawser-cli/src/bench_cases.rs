@@ -198,8 +198,7 @@ pub fn kinematics_ns(environment: &Environment, points: usize, times: usize) -> 
         for k in 0..times {
             let t = 5.0 + 0.01 * k as Real;
             for p in &positions {
-                let u = environment.fluid_velocity(p, t);
-                let a = environment.fluid_acceleration(p, t);
+                let (u, a) = environment.fluid_kinematics(p, t);
                 sum += u.x + a.z;
             }
         }

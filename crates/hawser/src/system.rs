@@ -1035,13 +1035,13 @@ impl System {
         let submerged = k.position.z < 0.0;
         let mut f = Vec3::new(0.0, 0.0, -mass * env.gravity) + force * load_factor;
         let mut m = *mass;
+        let (uw, aw) = env.fluid_kinematics(&k.position, t);
         if submerged {
             f.z += rho * volume * env.gravity;
             m += rho * volume * added_mass_coefficient;
-            let aw = env.fluid_acceleration(&k.position, t);
             f += aw * (rho * volume * (1.0 + added_mass_coefficient));
         }
-        let rel = env.fluid_velocity(&k.position, t) * load_factor - k.velocity;
+        let rel = uw * load_factor - k.velocity;
         f += rel * (0.5 * rho * drag_area * rel.norm());
         if let Some(contact) = &self.points[p].seabed_contact {
             f += contact.force(env.seabed_z(), &k.position, &k.velocity, &env.seabed);
@@ -1595,7 +1595,9 @@ impl System {
             }
         }
         for &b in &self.free_bodies {
-            let (lambda, what) = self.bodies[b].body.own_rate();
+            let (lambda, what) = self.bodies[b]
+                .body
+                .own_rate(self.environment.water_density, self.environment.gravity);
             if lambda > worst {
                 worst = lambda;
                 culprit = format!("{what} of body {}", self.bodies[b].body.name);

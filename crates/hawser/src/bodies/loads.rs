@@ -140,7 +140,7 @@ impl Body {
                 (Vec3::zeros(), Vec3::zeros())
             } else {
                 let x_p = k.position + p;
-                (env.fluid_velocity(&x_p, t), env.fluid_acceleration(&x_p, t))
+                env.fluid_kinematics(&x_p, t)
             };
             at_p += rho * wet.volume * a_w + a_t * a_w;
 

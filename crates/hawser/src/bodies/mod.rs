@@ -100,8 +100,8 @@ impl crate::model::Body {
     /// shape (A_wp its waterplane area upright), the linear drag rates b_i / (m + A_i) and
     /// b_j / (I_j + A_j) (the smallest principal inertia for the rotations). Quadratic drag is
     /// left out: its rate ρ C A |u| / (m + A) is far below the lines' at any speed a tether
-    /// reaches. Water density 1025 kg/m³, g 9.81 m/s² (an upper-end estimate).
-    pub fn own_rate(&self) -> (Real, &'static str) {
+    /// reaches. `water_density` [kg/m³] and `gravity` [m/s²] are the environment's.
+    pub fn own_rate(&self, water_density: Real, gravity: Real) -> (Real, &'static str) {
         use crate::model::Displacement;
         let m = self.mass;
         let a = self.added_mass;
@@ -118,7 +118,7 @@ impl crate::model::Body {
             .min()
             .max(Real::MIN_POSITIVE);
         let mut best = (
-            (1025.0 * 9.81 * waterplane / (m + a[2])).sqrt(),
+            (water_density * gravity * waterplane / (m + a[2])).sqrt(),
             "hydrostatic heave",
         );
         for i in 0..6 {
@@ -129,5 +129,37 @@ impl crate::model::Body {
             }
         }
         best
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::math::{Mat3, Real};
+    use crate::model::{Body, Displacement};
+
+    /// The stable-step bound of a floating cylinder is its hydrostatic heave frequency
+    /// √(ρ g π r² / (m + A₃₃)) with the environment's density and gravity (fresh water on
+    /// another planet moves it), and a larger linear-drag rate takes over when it is faster.
+    #[test]
+    fn own_rate_is_the_heave_frequency_with_the_environments_water() {
+        let mut body = Body::new("buoy", 2000.0, Mat3::identity() * 500.0);
+        body.displacement = Displacement::Cylinder {
+            radius: 0.8,
+            height: 3.0,
+        };
+        body.added_mass = nalgebra::Vector6::new(0.0, 0.0, 600.0, 0.0, 0.0, 0.0);
+        let area = std::f64::consts::PI * 0.64;
+        for (rho, g) in [(1025.0, 9.81), (1000.0, 3.71)] {
+            let (rate, what) = body.own_rate(rho, g);
+            let expected: Real = (rho * g * area / 2600.0).sqrt();
+            assert!(
+                (rate - expected).abs() <= 1e-12 * expected,
+                "{rate} vs {expected}"
+            );
+            assert_eq!(what, "hydrostatic heave");
+        }
+        body.linear_drag[0] = 2000.0 * 10.0;
+        let (rate, what) = body.own_rate(1025.0, 9.81);
+        assert_eq!((rate, what), (10.0, "linear drag"));
     }
 }

@@ -282,7 +282,8 @@ pub fn fluid_load(
     if still_water {
         return drag_force(&lt.drag, rho, lt.diameter, root_stretch, tau, &-v);
     }
-    let relative = env.fluid_velocity(r, time) * current_factor - v;
+    let (velocity, acceleration) = env.fluid_kinematics(r, time);
+    let relative = velocity * current_factor - v;
     drag_force(&lt.drag, rho, lt.diameter, root_stretch, tau, &relative)
         + fluid_inertia_force(
             rho,
@@ -290,7 +291,7 @@ pub fn fluid_load(
             lt.normal_added_mass,
             lt.tangential_added_mass,
             tau,
-            &env.fluid_acceleration(r, time),
+            &acceleration,
         )
 }
 

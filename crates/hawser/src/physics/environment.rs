@@ -140,6 +140,28 @@ impl Environment {
         }
     }
 
+    /// Fluid velocity [m/s] and local acceleration ∂u/∂t [m/s²] at a point [m] and time [s]
+    /// together: [`Self::fluid_velocity`] and [`Self::fluid_acceleration`] from one sum over
+    /// the wave components instead of two. Morison's equation needs both at every quadrature
+    /// point, and the wave sum is the dominant cost of a line in waves (BENCHMARKS.md, "Wave
+    /// kinematics").
+    #[inline]
+    pub fn fluid_kinematics(&self, position: &Vec3, time: Real) -> (Vec3, Vec3) {
+        match &self.waves {
+            Waves::None if position.z < 0.0 => (self.current.velocity(position.z), Vec3::zeros()),
+            Waves::None => (Vec3::zeros(), Vec3::zeros()),
+            Waves::Airy(field) => {
+                let k = field.kinematics(position, time);
+                let velocity = if k.submerged {
+                    self.current.velocity(position.z) + k.velocity
+                } else {
+                    Vec3::zeros()
+                };
+                (velocity, k.acceleration)
+            }
+        }
+    }
+
     /// Surface elevation η [m] at (x, y) [m] and time [s]: 0 without waves.
     #[inline]
     pub fn surface_elevation(&self, x: Real, y: Real, time: Real) -> Real {
@@ -184,6 +206,40 @@ impl Environment {
 mod tests {
     use super::*;
     use crate::physics::waves::{RegularWave, SeaState, Stretching, WaveSpec};
+
+    /// The combined kinematics are the separate calls exactly (same sum, same order of
+    /// operations), under a current and a ramped regular wave, above and below the surface,
+    /// during and after the ramp, and in still water with a current.
+    #[test]
+    fn fluid_kinematics_is_velocity_and_acceleration_together() {
+        let spec = WaveSpec {
+            sea: SeaState::Regular(RegularWave {
+                height: 2.0,
+                period: 7.0,
+                direction: 0.3,
+            }),
+            ramp_time: 10.0,
+            stretching: Stretching::Wheeler,
+        };
+        let mut env = Environment {
+            waves: Waves::new(&spec, 60.0, STANDARD_GRAVITY).unwrap(),
+            current: Current::Uniform(Vec3::new(0.4, -0.1, 0.0)),
+            ..Default::default()
+        };
+        for waves in [true, false] {
+            if !waves {
+                env.waves = Waves::None;
+            }
+            for z in [-55.0, -10.0, -0.3, 0.0, 0.4, 1.2] {
+                for t in [0.0, 3.0, 11.0, 40.0] {
+                    let p = Vec3::new(3.0, -7.0, z);
+                    let (u, a) = env.fluid_kinematics(&p, t);
+                    assert_eq!(u, env.fluid_velocity(&p, t), "z {z}, t {t}");
+                    assert_eq!(a, env.fluid_acceleration(&p, t), "z {z}, t {t}");
+                }
+            }
+        }
+    }
 
     #[test]
     fn ramped_waves_are_still_at_the_start() {
