@@ -285,3 +285,87 @@ fn a_line_on_a_manoeuvring_body_follows_the_body_point() {
     assert!(worst_p < 1e-9, "{worst_p}");
     assert!(worst_v < 1e-9, "{worst_v}");
 }
+
+/// `OBJECT.relative_to.REFERENCE.x|y|z` (the elastic-link paper's "position of the vehicle
+/// relative to the vessel", §5). Over the manoeuvre, which turns the ship through 120°:
+/// the tow point relative to the ship is its body-fixed offset (−30, 4, −2) m (1e-9 m: the
+/// positions are O(100 m), rotated and subtracted in double precision); the towed weight
+/// relative to the ship equals R_z(ψ)ᵀ (x_weight − x_ship) built here from the recorded yaw
+/// and positions (the manoeuvre keeps roll and pitch at zero), and relative to the tow point
+/// (a point: global axes) the plain difference, both to 1e-9 m.
+#[test]
+fn relative_position_channels_follow_the_ship_axes() {
+    let mut text = scenario(MANOEUVRE, "");
+    text = text.replace(
+        r#"channels = ["#,
+        r#"channels = ["towpoint.relative_to.ship.x", "towpoint.relative_to.ship.y", "towpoint.relative_to.ship.z", "weight.relative_to.ship.x", "weight.relative_to.ship.y", "weight.relative_to.ship.z", "weight.relative_to.towpoint.x", "weight.relative_to.towpoint.y", "weight.relative_to.towpoint.z", "towpoint.x", "towpoint.y", "towpoint.z", "#,
+    );
+    let s = scenario::parse(Path::new("scenario.toml"), &text).unwrap_or_else(|e| panic!("{e}"));
+    let system = System::new(&s.model).unwrap();
+    let statics = solve(&system, None, &StaticOptions::default()).expect("statics");
+    let mut sim = Simulation::new(&system, &s.model.settings, statics.state).unwrap();
+    let by_name: std::collections::HashMap<String, Channel> = s
+        .channels
+        .iter()
+        .map(|c| (c.channel.name(&system), c.channel))
+        .collect();
+    let get = |n: &str| *by_name.get(n).unwrap_or_else(|| panic!("no channel {n}"));
+    let triple = |prefix: &str| ["x", "y", "z"].map(|a| get(&format!("{prefix}.{a}")));
+    let tow_ship = triple("towpoint.relative_to.ship");
+    let weight_ship = triple("weight.relative_to.ship");
+    let weight_tow = triple("weight.relative_to.towpoint");
+    let (ship, weight, tow) = (triple("ship"), triple("weight"), triple("towpoint"));
+    let (ship_yaw, ship_roll, ship_pitch) = (get("ship.yaw"), get("ship.roll"), get("ship.pitch"));
+    let offset = Vec3::new(-30.0, 4.0, -2.0);
+    let (mut worst, mut turned, mut samples) = (0.0 as Real, 0.0 as Real, 0);
+    let mut check = |sys: &System, ws: &hawser::system::Workspace| {
+        let v = |c: [Channel; 3]| Vec3::from(c.map(|c| c.value(sys, ws)));
+        let yaw = ship_yaw.value(sys, ws).to_radians();
+        assert!(ship_roll.value(sys, ws).abs() < 1e-12 && ship_pitch.value(sys, ws).abs() < 1e-12);
+        let rz = Quat::from_axis_angle(&Vec3::z_axis(), yaw);
+        let expected = rz.inverse_transform_vector(&(v(weight) - v(ship)));
+        worst = worst
+            .max((v(tow_ship) - offset).norm())
+            .max((v(weight_ship) - expected).norm())
+            .max((v(weight_tow) - (v(weight) - v(tow))).norm());
+        turned = turned.max((yaw - 30f64.to_radians()).abs());
+        samples += 1;
+    };
+    struct Probe<'a, F: FnMut(&System, &hawser::system::Workspace)>(&'a mut F);
+    impl<F: FnMut(&System, &hawser::system::Workspace)> hawser::simulation::Observer for Probe<'_, F> {
+        fn sample(
+            &mut self,
+            system: &System,
+            _time: Real,
+            _state: &[Real],
+            ws: &hawser::system::Workspace,
+        ) {
+            (self.0)(system, ws)
+        }
+    }
+    sim.run(s.model.settings.duration, &mut Probe(&mut check))
+        .expect("the run completes");
+    eprintln!(
+        "{samples} samples; relative positions against the recorded positions and yaw: {worst:.2e} m; \
+         heading changed by up to {:.1}°",
+        turned.to_degrees()
+    );
+    assert_eq!(samples, 121);
+    assert!(turned > 100f64.to_radians(), "the ship must turn: {turned}");
+    assert!(worst < 1e-9, "{worst}");
+}
+
+/// Bad relative-position channels say what is wrong.
+#[test]
+fn bad_relative_position_channels_are_refused() {
+    let s = scenario::parse(Path::new("scenario.toml"), &scenario(MANOEUVRE, "")).unwrap();
+    for (name, needle) in [
+        ("weight.relative_to.nowhere.x", "no point or body"),
+        ("weight.relative_to.weight.x", "relative to itself"),
+        ("weight.relative_to.ship.w", "not an axis"),
+    ] {
+        let e = scenario::build::parse_channel(name, &s.model).unwrap_err();
+        assert!(e.contains(needle), "{name}: {e}");
+    }
+    assert!(scenario::build::parse_channel("ship.relative_to.towpoint.z", &s.model).is_ok());
+}

@@ -4,7 +4,7 @@
 use super::diagnostics::{Diagnostic, ScenarioError, closest, line_number};
 use super::schema::*;
 use crate::results::OutputChannel;
-use hawser::analysis::Channel;
+use hawser::analysis::{Channel, Object};
 use hawser::math::{Quat, Vec3};
 use hawser::model::*;
 use hawser::physics::environment::{Current, Environment};
@@ -3624,6 +3624,7 @@ fn build_channels(
                 } else {
                     let names = model.lines.iter().map(|l| l.name.as_str());
                     let names = names.chain(model.points.iter().map(|p| p.name.as_str()));
+                    let names = names.chain(model.bodies.iter().map(|b| b.name.as_str()));
                     let names =
                         names.chain(model.environment.obstacles.iter().map(|o| o.name.as_str()));
                     match closest(first, names) {
@@ -3634,7 +3635,7 @@ fn build_channels(
                 };
                 let d = b
                     .diag(Some(c.span()), &format!("simulation.channels[{ci}]"), msg)
-                    .expected("LINE.end_a|end_b.tension|node_force|fx|fy|fz, LINE.nodeK.tension|x|y|z|vx|vy|vz, LINE.elementK.strain, LINE.length|stretched_length|stretch|winch_tension, POINT.x|y|z|vx|vy|vz|fx|fy|fz, BODY.x|y|z|roll|pitch|yaw|vx|…|wz|fx|…|mz, OBSTACLE.force_x|force_y|force_z|contact_length")
+                    .expected("LINE.end_a|end_b.tension|node_force|fx|fy|fz, LINE.nodeK.tension|x|y|z|vx|vy|vz, LINE.elementK.strain, LINE.length|stretched_length|stretch|winch_tension, POINT.x|y|z|vx|vy|vz|fx|fy|fz, BODY.x|y|z|roll|pitch|yaw|vx|…|wz|fx|…|mz, POINT|BODY.relative_to.POINT|BODY.x|y|z, OBSTACLE.force_x|force_y|force_z|contact_length")
                     .hint(hint);
                 b.push(d);
             }
@@ -3742,6 +3743,38 @@ pub fn parse_channel(name: &str, model: &Model) -> Result<Channel, String> {
             _ => {}
         }
         return Err(format!("unknown channel `{name}`"));
+    }
+    let find_object = |n: &str| {
+        model.point_index(n).map(Object::Point).or_else(|| {
+            model
+                .bodies
+                .iter()
+                .position(|b| b.name == n)
+                .map(Object::Body)
+        })
+    };
+    if let [o, "relative_to", r, q] = parts.as_slice()
+        && let Some(object) = find_object(o)
+    {
+        let Some(reference) = find_object(r) else {
+            return Err(format!(
+                "`{r}` in `{name}` is no point or body: the reference of a relative position \
+                 is a point (global axes) or a body (its axes)"
+            ));
+        };
+        if reference == object {
+            return Err(format!(
+                "`{name}` is a position relative to itself, always zero"
+            ));
+        }
+        let Some(axis) = axis(q) else {
+            return Err(format!("`{q}` in `{name}` is not an axis: use x, y or z"));
+        };
+        return Ok(Channel::RelativePosition {
+            object,
+            reference,
+            axis,
+        });
     }
     if let Some(pi) = model.point_index(parts[0]) {
         if let [_, q] = parts.as_slice() {

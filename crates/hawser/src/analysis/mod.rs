@@ -174,6 +174,55 @@ pub enum Channel {
         /// Line index.
         line: usize,
     },
+    /// Position of an object relative to a reference [m] (the elastic-link paper's "position
+    /// of the vehicle relative to the vessel", §5): the object's position (a point's, or a
+    /// body's origin) minus the reference's, in the reference body's axes,
+    /// Rᵀ (x_object − x_reference) with R the reference's orientation, or in global axes
+    /// when the reference is a point.
+    RelativePosition {
+        /// The object whose position is reported.
+        object: Object,
+        /// The reference it is measured from.
+        reference: Object,
+        /// 0, 1, 2 for x, y, z (of the reference body's axes, or global).
+        axis: usize,
+    },
+}
+
+/// A point or a body, as the object or reference of [`Channel::RelativePosition`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Object {
+    /// Point index.
+    Point(usize),
+    /// Body index.
+    Body(usize),
+}
+
+impl Object {
+    fn name(self, system: &System) -> &str {
+        match self {
+            Object::Point(p) => &system.points[p].name,
+            Object::Body(b) => &system.bodies[b].body.name,
+        }
+    }
+
+    fn position(self, ws: &Workspace) -> crate::math::Vec3 {
+        match self {
+            Object::Point(p) => ws.points[p].position,
+            Object::Body(b) => ws.bodies[b].position,
+        }
+    }
+}
+
+/// Position of `object` relative to `reference` [m] from a workspace that holds an
+/// evaluation: Rᵀ (x_object − x_reference) in the axes of a reference body, the global
+/// difference for a reference point ([`Channel::RelativePosition`]).
+pub fn relative_position(ws: &Workspace, object: Object, reference: Object) -> crate::math::Vec3 {
+    let d = object.position(ws) - reference.position(ws);
+    match reference {
+        Object::Body(b) => ws.bodies[b].orientation.inverse_transform_vector(&d),
+        Object::Point(_) => d,
+    }
 }
 
 /// Stretched length [m] of line `line` from a workspace that holds an evaluation: `fe`, the
@@ -298,6 +347,16 @@ impl Channel {
             Channel::LineStretchedLength { line: l } => format!("{}.stretched_length", line(l)),
             Channel::LineStretch { line: l } => format!("{}.stretch", line(l)),
             Channel::WinchTension { line: l } => format!("{}.winch_tension", line(l)),
+            Channel::RelativePosition {
+                object,
+                reference,
+                axis,
+            } => format!(
+                "{}.relative_to.{}.{}",
+                object.name(system),
+                reference.name(system),
+                AXES[axis]
+            ),
         }
     }
 
@@ -318,7 +377,8 @@ impl Channel {
             | Channel::PointPosition { .. }
             | Channel::ObstacleContactLength { .. }
             | Channel::LineLength { .. }
-            | Channel::LineStretchedLength { .. } => "m",
+            | Channel::LineStretchedLength { .. }
+            | Channel::RelativePosition { .. } => "m",
             Channel::NodeVelocity { .. } | Channel::PointVelocity { .. } => "m/s",
             Channel::ElementStrain { .. } | Channel::LineStretch { .. } => "-",
             Channel::BodyMotion { dof, .. } => ["m", "deg"][dof / 3],
@@ -371,6 +431,11 @@ impl Channel {
                 ws.lines[line].elements.shear_force[element]
             }
             Channel::PointPosition { point, axis } => ws.points[point].position[axis],
+            Channel::RelativePosition {
+                object,
+                reference,
+                axis,
+            } => relative_position(ws, object, reference)[axis],
             Channel::PointVelocity { point, axis } => ws.points[point].velocity[axis],
             Channel::PointForce { point, axis } => system
                 .lines
@@ -469,6 +534,17 @@ impl Channel {
             | Channel::LineStretch { line } => line < system.lines.len(),
             Channel::WinchTension { line } => {
                 system.lines.get(line).is_some_and(|l| l.winch.is_some())
+            }
+            Channel::RelativePosition {
+                object,
+                reference,
+                axis,
+            } => {
+                let exists = |o: Object| match o {
+                    Object::Point(p) => p < system.points.len(),
+                    Object::Body(b) => b < system.bodies.len(),
+                };
+                exists(object) && exists(reference) && axis < 3
             }
         }
     }
