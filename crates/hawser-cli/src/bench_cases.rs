@@ -178,12 +178,19 @@ pub fn bodies_as_points(model: &mut Model) -> usize {
     free.iter().filter(|f| **f).count()
 }
 
-/// Wall time of one evaluation of the fluid velocity and acceleration
-/// ([`Environment::fluid_velocity`], [`Environment::fluid_acceleration`]) [ns], averaged over
+/// Wall time of one evaluation of the fluid velocity and acceleration [ns], averaged over
 /// `points` points spread over the water column from z = −0.9 h to the mean surface along the
 /// waves' direction, each evaluated at `times` instants 0.01 s apart; best of 3. The sum of
-/// the results is returned too so that the work cannot be optimised away.
-pub fn kinematics_ns(environment: &Environment, points: usize, times: usize) -> (f64, f64) {
+/// the results is returned too so that the work cannot be optimised away. `separate`: by
+/// [`Environment::fluid_velocity`] and [`Environment::fluid_acceleration`], two wave sums
+/// (how the lines evaluated them before [`Environment::fluid_kinematics`], kept as the
+/// reference of the saving); otherwise by `fluid_kinematics`, one sum, as the lines do.
+pub fn kinematics_ns(
+    environment: &Environment,
+    points: usize,
+    times: usize,
+    separate: bool,
+) -> (f64, f64) {
     let depth = environment.depth.min(1000.0);
     let positions: Vec<Vec3> = (0..points)
         .map(|i| {
@@ -198,7 +205,14 @@ pub fn kinematics_ns(environment: &Environment, points: usize, times: usize) -> 
         for k in 0..times {
             let t = 5.0 + 0.01 * k as Real;
             for p in &positions {
-                let (u, a) = environment.fluid_kinematics(p, t);
+                let (u, a) = if separate {
+                    (
+                        environment.fluid_velocity(p, t),
+                        environment.fluid_acceleration(p, t),
+                    )
+                } else {
+                    environment.fluid_kinematics(p, t)
+                };
                 sum += u.x + a.z;
             }
         }
