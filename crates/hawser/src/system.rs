@@ -1504,6 +1504,24 @@ impl System {
                 .min(self.points[l.end_b].position.z);
             let reaches_bed =
                 env.depth.is_finite() && seabed.stiffness > 0.0 && low - longest <= env.seabed_z();
+            // The obstacles this line may touch, as the seabed: a fixed one within its length
+            // of an end (its bounding ball), a moving one always. Each adds its contact
+            // stiffness k and damping c per unit length over a node's share of the line;
+            // several add (a node wedged between two). Friction is left out: its slope
+            // μ N π / v_μ grows with the normal force N, which here is the tension's pull
+            // round the obstacle, unknown before the run (the seabed's is the wet weight).
+            let touching: Vec<&crate::physics::obstacles::Obstacle> = env
+                .obstacles
+                .iter()
+                .filter(|o| {
+                    !matches!(o.motion, crate::model::Motion::Fixed { .. })
+                        || [l.end_a, l.end_b].iter().any(|&p| {
+                            let centre = o.kinematics(0.0).centre;
+                            (self.points[p].position - centre).norm() - o.bounding_radius()
+                                <= longest
+                        })
+                })
+                .collect();
             let mut rows = vec![NodeRows::default(); n + 1];
             let describe = |what: &str, at: String, s: &crate::formulation::SectionProperties| {
                 format!(
@@ -1536,6 +1554,10 @@ impl System {
                         add.friction_damping = seabed.friction_slope(wet, 0.5 * l0) * 0.5 * l0;
                     }
                 }
+                for o in &touching {
+                    add.obstacle_stiffness += o.stiffness * 0.5 * l0;
+                    add.obstacle_damping += o.damping_per_length(lt.mass_per_length) * 0.5 * l0;
+                }
                 if hermite {
                     // Element bound (Irons): the assembled line's frequencies are below the
                     // element's, whose pencils scale as λ EA/(γ l²) and λ_b EI/(γ l⁴); the
@@ -1549,6 +1571,8 @@ impl System {
                         contact_stiffness: 2.0 * add.contact_stiffness,
                         contact_damping: 2.0 * add.contact_damping,
                         friction_damping: 2.0 * add.friction_damping,
+                        obstacle_damping: 2.0 * add.obstacle_damping,
+                        obstacle_stiffness: 2.0 * add.obstacle_stiffness,
                     };
                     let (lambda, what) = element.bound();
                     if lambda > worst {
@@ -1699,6 +1723,8 @@ struct NodeRows {
     friction_damping: Real,
     bending_damping: Real,
     bending_stiffness: Real,
+    obstacle_damping: Real,
+    obstacle_stiffness: Real,
 }
 
 impl NodeRows {
@@ -1711,6 +1737,8 @@ impl NodeRows {
         self.friction_damping += o.friction_damping;
         self.bending_damping += o.bending_damping;
         self.bending_stiffness += o.bending_stiffness;
+        self.obstacle_damping += o.obstacle_damping;
+        self.obstacle_stiffness += o.obstacle_stiffness;
     }
 
     /// Bound on |λ| [1/s] and the term that sets it.
@@ -1733,6 +1761,11 @@ impl NodeRows {
             ),
             (self.bending_damping / m, "bending damping"),
             ((self.bending_stiffness / m).sqrt(), "bending stiffness"),
+            (self.obstacle_damping / m, "obstacle contact damping"),
+            (
+                (self.obstacle_stiffness / m).sqrt(),
+                "obstacle contact stiffness",
+            ),
         ]
         .into_iter()
         .fold((0.0, "nothing"), |a, b| if b.0 > a.0 { b } else { a })

@@ -332,6 +332,21 @@ fn drape(
     elements: usize,
     duration: Real,
 ) -> (System, Vec<Real>, ObstacleLoad) {
+    drape_with(formulation, elements, duration, 2.0e5, |system| {
+        0.5 * system.stable_step(Scheme::Rk4).0
+    })
+    .expect("the drape settles")
+}
+
+/// [`drape`] with the sphere's contact stiffness [N/m²] and the fixed RK4 step [s] chosen by
+/// `step`; `Err` with the solver's message if the run diverges.
+fn drape_with(
+    formulation: Formulation,
+    elements: usize,
+    duration: Real,
+    stiffness: Real,
+    step: impl Fn(&System) -> Real,
+) -> Result<(System, Vec<Real>, ObstacleLoad), String> {
     let (r, d) = (1.0, 0.03);
     let rc = r + 0.5 * d;
     let a = 1.5;
@@ -367,7 +382,7 @@ fn drape(
         name: "ball".into(),
         shape: ObstacleShape::Sphere { radius: r },
         motion: Motion::Fixed { position: centre },
-        stiffness: 2.0e5,
+        stiffness,
         damping: ObstacleDamping::Ratio(1.0),
         friction_coefficient: 0.5,
         friction_velocity: 0.01,
@@ -378,15 +393,22 @@ fn drape(
     system.set_line_shape(&mut y, 0, |s| (path.at(s) + shift, Vec3::zeros()));
     v::set_point_state(&system, &mut y, 0, path.at(0.0) + shift, Vec3::zeros());
     v::set_point_state(&system, &mut y, 1, path.at(length) + shift, Vec3::zeros());
-    let dt = 0.5 * system.stable_step(Scheme::Rk4).0;
-    let mut sim = Simulation::new(&system, &v::fixed_step_settings(dt, Scheme::Rk4), y).unwrap();
+    let dt = step(&system);
+    // Unchecked: the stiff-obstacle test runs a step beyond the estimate on purpose.
+    let mut sim =
+        Simulation::new_unchecked(&system, &v::fixed_step_settings(dt, Scheme::Rk4), y).unwrap();
     let (mut mean, mut count) = (ObstacleLoad::default(), 0.0);
     let mut loads = [ObstacleLoad::default()];
     while sim.time < duration {
-        sim.step().unwrap();
+        sim.step().map_err(|e| e.to_string())?;
         if sim.time > duration - 1.0 {
             let t = sim.time;
-            obstacle_forces(&system, sim.evaluate().unwrap(), t, &mut loads);
+            obstacle_forces(
+                &system,
+                sim.evaluate().map_err(|e| e.to_string())?,
+                t,
+                &mut loads,
+            );
             mean.force += loads[0].force;
             mean.contact_length += loads[0].contact_length;
             count += 1.0;
@@ -395,7 +417,48 @@ fn drape(
     mean.force /= count;
     mean.contact_length /= count;
     let y = sim.state.clone();
-    (system, y, mean)
+    Ok((system, y, mean))
+}
+
+/// The stable step honours a stiff obstacle. With k = 2e9 N/m² on a 2 kg/m line the contact
+/// rate √(k/γ) = 3.2e4 rad/s, and its critical damping's 2√(k/γ), exceed the line's own axial
+/// rate, so the automatic step must come from the contact: `stable_step` names it, and the
+/// drape runs at 0.9 of that step for 1 s with the sphere carrying it. The step the line alone
+/// allows (the same system without the sphere, 14.6× longer) diverges in the same run (at
+/// 0.12 s), so the contact term is what keeps the run alive. (At k = 2e8 the line's own step,
+/// 4.6× the estimate, happened to survive: the estimate is conservative for a one-sided
+/// contact whose force vanishes when the node bounces off.)
+#[test]
+fn stable_step_honours_a_stiff_obstacle() {
+    let stiff = 2.0e9;
+    let (_, y, mean) = drape_with(Formulation::Fe, 60, 1.0, stiff, |system| {
+        let (dt, culprit) = system.stable_step(Scheme::Rk4);
+        eprintln!("stable step {dt:.3e} s, set by {culprit}");
+        assert!(culprit.contains("obstacle contact"), "{culprit}");
+        0.9 * dt
+    })
+    .expect("the run at 0.9 of the stable step settles");
+    assert!(y.iter().all(|v| v.is_finite()));
+    let w = (2.0 - 1025.0 * PI * 0.03 * 0.03 / 4.0) * G;
+    eprintln!("mean sphere load over the last 1 s {:?} N", mean.force);
+    // Settling within the second: the sphere carries at least the weight of the cable on it.
+    assert!(-mean.force.z > w * PI, "{:?}", mean.force);
+    let without = drape_with(Formulation::Fe, 60, 1.0, stiff, |system| {
+        let mut bare = system.clone();
+        bare.environment.obstacles.clear();
+        let (dt_line, culprit) = bare.stable_step(Scheme::Rk4);
+        let (dt, _) = system.stable_step(Scheme::Rk4);
+        eprintln!(
+            "without the sphere: {dt_line:.3e} s ({culprit}), {:.2}× longer",
+            dt_line / dt
+        );
+        assert!(dt_line > 2.0 * dt);
+        0.9 * dt_line
+    });
+    assert!(
+        without.is_err(),
+        "the line's own step should not survive the contact"
+    );
 }
 
 /// (b) A line dropped on a sphere comes to rest draped over it; at its top the penalty law
