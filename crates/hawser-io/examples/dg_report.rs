@@ -3,11 +3,11 @@
 //! ```sh
 //! cargo run --release -p hawser-io --example dg_report -- koh     # Koh's swinging cable, ~15 min
 //! cargo run --release -p hawser-io --example dg_report -- koh dg ei0 ei  # only those dg runs
-//! cargo run --release -p hawser-io --example dg_report -- ropos   # the 48 ROPOS cases, ~1.5 h
-//! cargo run --release -p hawser-io --example dg_report -- ropos-mesh  # 200 m on 20 and 40 elements
-//! cargo run --release -p hawser-io --example dg_report -- ropos-body  # the cage as a rigid body
-//! cargo run --release -p hawser-io --example dg_report -- ropos body f=0.2 1730 200  # rigid-body cage subset
-//! cargo run --release -p hawser-io --example dg_report            # the report, ~1 min
+//! cargo run --release -p hawser-io --example dg_report -- ropos body  # the 48 ROPOS cases, rigid-body cage
+//! cargo run --release -p hawser-io --example dg_report -- ropos   # the same with a point-mass cage
+//! cargo run --release -p hawser-io --example dg_report -- ropos body f=0.2 1730 200  # a subset
+//! cargo run --release -p hawser-io --example dg_report -- ropos-mesh [body]  # 200 m on 20 and 40 elements
+//! cargo run --release -p hawser-io --example dg_report            # the report, several minutes
 //! cargo run --release -p hawser-io --example dg_report -- cost [cantilever|snap|snap-dg|ropos]
 //! ```
 //!
@@ -90,12 +90,11 @@ fn main() {
             ropos(&only, &frequencies, body)
         }
         Some("cost") => cost(),
-        Some("ropos-mesh") => ropos_mesh(),
-        Some("ropos-body") => ropos_body(),
+        Some("ropos-mesh") => ropos_mesh(args[1..].iter().any(|a| a == "body")),
         Some("report") | None => report(),
         Some(other) => {
             eprintln!(
-                "unknown mode `{other}`: expected koh, ropos [L...], ropos-mesh, ropos-body, cost \
+                "unknown mode `{other}`: expected koh, ropos [body] [L...], ropos-mesh [body], cost \
                  or report"
             );
             std::process::exit(2);
@@ -451,10 +450,21 @@ struct MeshRecord {
     elements: usize,
     ship_max: Real,
     cage_snap_peak: Option<Real>,
+    /// The dg modal velocity filter's coefficient c_f; `None` for the runs stored before the
+    /// filter existed.
+    #[serde(default)]
+    modal_filter: Option<Real>,
 }
 
-fn ropos_mesh() {
-    let base = load("ropos_tether.toml");
+/// `ropos-mesh [body]`: the mesh check, with the point-mass cage (ropos_mesh.json) or the
+/// rigid-body cage (ropos_mesh_rigid.json).
+fn ropos_mesh(body: bool) {
+    let (file, stored) = if body {
+        ("ropos_tether_body.toml", "ropos_mesh_rigid.json")
+    } else {
+        ("ropos_tether.toml", "ropos_mesh.json")
+    };
+    let base = load(file);
     let mut records = Vec::new();
     for alpha in [0.0, 1.0] {
         for elements in [20, 40] {
@@ -472,69 +482,11 @@ fn ropos_mesh() {
                 elements,
                 ship_max: s.ship_max,
                 cage_snap_peak: s.cage_snap.map(|c| c.peak),
+                modal_filter: Some(m.lines[0].modal_filter),
             });
         }
     }
-    let path = data_dir().join("ropos_mesh.json");
-    std::fs::write(&path, serde_json::to_string(&records).unwrap()).unwrap();
-    eprintln!("wrote {}", path.display());
-}
-
-/// The cage as a point mass (`examples/ropos_tether.toml`) and as a rigid body
-/// (`examples/ropos_tether_body.toml`), L = 1730 m, α = 1, f = 0.2 Hz, 30 s.
-#[derive(Serialize, Deserialize)]
-struct BodyRecord {
-    cage: String,
-    static_ship: Real,
-    static_cage: Real,
-    ship_min: Real,
-    ship_max: Real,
-    cage_snap: Option<(Real, Real, Real, Real)>,
-    ship_snap: Option<(Real, Real, Real, Real)>,
-    wall_seconds: Real,
-    /// Ship tension from 20 s on, every 10 ms: (t, T).
-    ship: Vec<(Real, Real)>,
-}
-
-fn ropos_body() {
-    let mut records = Vec::new();
-    for (file, cage) in [
-        ("ropos_tether.toml", "point mass"),
-        ("ropos_tether_body.toml", "rigid body"),
-    ] {
-        let mut m = load(file);
-        m.settings.duration = 30.0;
-        m.settings.output_interval = 1e-3;
-        let run = run_tether(&m).unwrap();
-        let s = summarise(&run, 1730.0, tether::wave_speed(&m), RAMP_PERIODS / 0.2);
-        eprintln!(
-            "{cage}: ship {:.1}..{:.1} kN, cage snap {:?}, travel {:?}, {:.1} s wall",
-            s.ship_min / 1e3,
-            s.ship_max / 1e3,
-            s.cage_snap,
-            s.travel_time(),
-            run.wall_seconds
-        );
-        records.push(BodyRecord {
-            cage: cage.into(),
-            static_ship: s.static_ship,
-            static_cage: s.static_cage,
-            ship_min: s.ship_min,
-            ship_max: s.ship_max,
-            cage_snap: snap_tuple(s.cage_snap),
-            ship_snap: snap_tuple(s.ship_snap),
-            wall_seconds: run.wall_seconds,
-            ship: run
-                .time
-                .iter()
-                .zip(&run.ship_tension)
-                .filter(|(t, _)| **t >= 20.0)
-                .step_by(10)
-                .map(|(&t, &x)| sig2((t, x)))
-                .collect(),
-        });
-    }
-    let path = data_dir().join("ropos_body.json");
+    let path = data_dir().join(stored);
     std::fs::write(&path, serde_json::to_string(&records).unwrap()).unwrap();
     eprintln!("wrote {}", path.display());
 }
@@ -1050,98 +1002,160 @@ fn koh_section(w: &mut String, img: &Path) {
     }
 }
 
-fn ropos_section(w: &mut String, img: &Path) {
-    let base = load("ropos_tether.toml");
-    let c = tether::wave_speed(&base);
-    let _ = writeln!(
-        w,
-        "\n## The ROPOS deep-water tether (DG paper §6)\n\n\
-         A cage hangs from a ship on a tether; the fairlead moves on a circular orbit of radius \
-         a = 2 m in the vertical x–z plane. The study of §6.2 over L ∈ {{200, 500, 975, 1730}} \
-         m, EI = α·2.62 kN·m² with α ∈ {{0, 1, 10, 100}}, f ∈ {{0.10, 0.20, 0.25}} Hz: 48 runs \
-         of `examples/ropos_tether.toml` (L = 1730 m, α = 1, f = 0.2 Hz) with L, EI and f \
-         changed ([`validation::tether::case`](../../crates/hawser/src/validation/tether.rs)). \
-         Table 3 and SPEC §7: tether γ0 3.01 kg/m, ρ 7153 kg/m³, D 0.03 m, C_Mn 1, C_Mt 0, \
-         C_Dn 1.0, C_Dt 0.02, EA 45.5 MN, ζ 45.5 kN·s; cage 4995 kg, ρ 8448 kg/m³, D 3.01 m, \
-         H 4.2 m, added mass 9200 kg (heave), C_Dn 1.3, C_Dt 2.7. N = 20, P = 4, SSP-RK3 at \
-         0.8 of the stable step. c = √(EA/γ0) = {c:.0} m/s.\n\n\
-         How it is modelled:\n\n\
-         - **Tether buoyancy and added mass on the steel area.** The paper's eqs. 13–14 take \
-         the area A = γ0/ρ = 4.21e-4 m² (ρ = 7153 kg/m³), which gives its tether wet weight of \
-         44 kN at 1730 m; drag acts on the nominal D = 0.03 m (eq. 17). hawser has one \
-         diameter for all three, so the line type has d = √(4γ0/(πρ)) = 23.15 mm and drag \
-         coefficients scaled by D/d = 1.2961 (C_Dn 1.2961, C_Dt 0.02592): the same forces. \
-         With A from D = 0.03 m the wet weight would be 38.8 kN.\n\
-         - **The cage is a point mass in the 48 cases** (the study was set up before rigid \
-         bodies landed; a comparison with the rigid body follows the tables). A free point has \
-         one added-mass coefficient and one drag area for every direction, so the issue's \
-         direction-dependent added mass and drag are **not** modelled by it: both take the \
-         dominant, vertical values, added mass 9200 kg \
-         (C_a = 9200/(ρ_w V) = 15.18 on V = 4995/8448 m³) and drag area C_Dt·πD²/4 = \
-         2.7 × 7.116 = 19.21 m². In surge the paper's cylinder has C_Dn·D·H = 16.43 m² \
-         (ours is 17 % higher) and added mass from C_M 7.1; the tether attaches at the point \
-         itself (no lever arm, no pitch). The vertical response that makes the snap is modelled \
-         as the paper has it; the horizontal response of the cage to the orbit is approximate.\n\
-         - **The ship** is a prescribed `circular-orbit` point at z = 0, built up over two \
-         periods (quintic ramp), then {ROPOS_PERIODS} steady periods. Statistics of the \
-         ship tension are taken after the build-up.\n\
-         - **Slack** is a sample with some element's strain ≤ 0. **The first snap** at the \
-         cage is at the first sample taut again after the first slack: its time is when the \
-         cage tension has risen by half of the jump from the last slack sample to the peak \
-         within L/c after; **its arrival at the ship** is when the ship tension has risen by \
-         half of its jump within [½, 3/2]·L/c after that \
-         ([`validation::tether::summarise`](../../crates/hawser/src/validation/tether.rs)). \
-         Samples every L/c/200 or finer (0.1–1 ms).\n\
-         - **Slack end tension in dg.** While the lower tether is slack, the cage-end tension \
-         is not zero but 0.4–2 kN: the `dg` end traction includes the Lax–Friedrichs impedance \
-         term Z(ν_cage − ν⁺) (docs/dg.md, boundary conditions), Z = √(EA γ0) = 11.7 kN·s/m, \
-         with a mismatch of ~0.1 m/s between the cage and the slack line end. The element \
-         strain, not the end tension, decides slack here."
-    );
-    let Some(records): Option<Vec<RoposRecord>> = read("ropos.json") else {
-        let _ = writeln!(w, "\n(no results stored: run `dg_report ropos`)");
-        return;
-    };
-    let find = |l: Real, a: Real, f: Real| {
-        records
-            .iter()
-            .find(|r| r.length == l && r.alpha == a && r.frequency == f)
-    };
-    let _ = writeln!(
-        w,
-        "\n### The 48 cases\n\nShip-end tension extremes after the build-up; the first snap at \
-         the cage (time, tension before the front, peak) and its arrival at the ship (time, \
-         peak); travel = ship − cage time against L/c. {}\n\n\
-         | L [m] | α | f [Hz] | Δt [s] | wall [s] | T_ship min [kN] | T_ship max [kN] | slack \
-         (at the ship) | cage snap t [s] | cage before → peak [kN] | ship arrival t [s] | ship \
-         peak [kN] | travel [s] | L/c [s] | travel error |\n\
-         |---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|",
-        {
-            let filtered = records.iter().filter(|r| r.modal_filter.is_some()).count();
-            if filtered == 0 {
-                "These runs predate the dg modal velocity filter (docs/dg.md, Discretisation \
-                 item 6) and were not rerun with it (`dg_report ropos` reruns them, about 25 min \
-                 of wall time on an idle machine, and marks the rerun rows)."
-                    .to_string()
-            } else if filtered == records.len() {
-                "Every case ran with the dg modal velocity filter (docs/dg.md, Discretisation \
-                 item 6)."
-                    .to_string()
-            } else {
-                format!(
-                    "The {filtered} rows marked § were rerun with the dg modal velocity filter \
-                     (docs/dg.md, Discretisation item 6; `dg_report ropos f=0.2 1730 200`); the \
-                     other {} predate the filter (they were run without it, and the verdicts \
-                     below mix both).",
-                    records.len() - filtered
-                )
+fn find_case(records: &[RoposRecord], l: Real, a: Real, f: Real) -> Option<&RoposRecord> {
+    records
+        .iter()
+        .find(|r| r.length == l && r.alpha == a && r.frequency == f)
+}
+
+/// The paper's §6 observations evaluated on one stored study (48 cases).
+struct RoposChecks {
+    /// Static ship minus cage tension at 1730 m [N].
+    wet: Option<Real>,
+    /// Cases at 0.2 and 0.25 Hz with slack and a snap, of all cases there; cases at 0.1 Hz
+    /// with slack, of all cases there.
+    fast_slack: usize,
+    fast: usize,
+    slow_slack: usize,
+    slow: usize,
+    /// Snaps at 1730 m whose front ran up a taut tether, the largest |travel/(L/c) − 1| of
+    /// them and that case's travel − L/c [s].
+    snaps: usize,
+    worst_travel: Real,
+    worst_travel_seconds: Real,
+    /// (L, travel/(L/c) − 1) of every snap whose front ran up a taut tether.
+    travel_errors: Vec<(Real, Real)>,
+    /// Snaps whose front ran into a slack stretch near the ship.
+    through_slack: usize,
+    /// Lengths at which the element at the ship went slack in some case.
+    ship_slack_lengths: Vec<Real>,
+    /// From α = 0 to 100 per (L, f) with a first snap in both: (L, |Δ cage time| [s],
+    /// |Δ cage peak| relative, |Δ steady ship maximum| relative).
+    change: Vec<(Real, Real, Real, Real)>,
+}
+
+impl RoposChecks {
+    fn new(records: &[RoposRecord]) -> Self {
+        let count =
+            |pred: &dyn Fn(&RoposRecord) -> bool| records.iter().filter(|r| pred(r)).count();
+        let mut c = RoposChecks {
+            wet: find_case(records, 1730.0, 1.0, 0.2).map(|r| r.static_ship - r.static_cage),
+            fast_slack: count(&|r| r.frequency > 0.15 && r.slack && r.cage_snap.is_some()),
+            fast: count(&|r| r.frequency > 0.15),
+            slow_slack: count(&|r| r.frequency < 0.15 && r.slack),
+            slow: count(&|r| r.frequency < 0.15),
+            snaps: count(&|r| r.ship_snap.is_some() && r.taut_path && r.length == 1730.0),
+            worst_travel: 0.0,
+            worst_travel_seconds: 0.0,
+            travel_errors: Vec::new(),
+            through_slack: count(&|r| r.ship_snap.is_some() && !r.taut_path),
+            ship_slack_lengths: LENGTHS
+                .iter()
+                .copied()
+                .filter(|&l| records.iter().any(|r| r.length == l && r.ship_slack))
+                .collect(),
+            change: Vec::new(),
+        };
+        for r in records {
+            let (Some(cs), Some(ss)) = (r.cage_snap, r.ship_snap) else {
+                continue;
+            };
+            if !r.taut_path {
+                continue;
+            }
+            let tau = r.length / r.wave_speed;
+            let e = (ss.0 - cs.0) / tau - 1.0;
+            c.travel_errors.push((r.length, e));
+            if r.length == 1730.0 && e.abs() > c.worst_travel {
+                c.worst_travel = e.abs();
+                c.worst_travel_seconds = ss.0 - cs.0 - tau;
             }
         }
+        for &l in &LENGTHS {
+            for f in [0.2, 0.25] {
+                let (Some(a), Some(b)) = (
+                    find_case(records, l, 0.0, f),
+                    find_case(records, l, 100.0, f),
+                ) else {
+                    continue;
+                };
+                let (Some(ca), Some(cb)) = (a.cage_snap, b.cage_snap) else {
+                    continue;
+                };
+                c.change.push((
+                    l,
+                    (cb.0 - ca.0).abs(),
+                    (cb.2 / ca.2 - 1.0).abs(),
+                    (b.ship_max / a.ship_max - 1.0).abs(),
+                ));
+            }
+        }
+        c
+    }
+
+    fn wet_holds(&self) -> bool {
+        self.wet.is_some_and(|x| (x / 44e3 - 1.0).abs() < 0.01)
+    }
+
+    fn pattern_holds(&self) -> bool {
+        self.fast_slack == self.fast && self.slow_slack == 0 && self.fast + self.slow == 48
+    }
+
+    fn travel_holds(&self) -> bool {
+        self.snaps > 0 && self.worst_travel < 0.02
+    }
+
+    /// The range of travel-time errors at length `l` [%].
+    fn range(&self, l: Real) -> String {
+        let e: Vec<Real> = self
+            .travel_errors
+            .iter()
+            .filter(|x| x.0 == l)
+            .map(|x| 100.0 * x.1)
+            .collect();
+        if e.is_empty() {
+            return "no snap with a taut path".into();
+        }
+        let lo = e.iter().copied().fold(Real::INFINITY, Real::min);
+        let hi = e.iter().copied().fold(Real::NEG_INFINITY, Real::max);
+        format!("{lo:+.1} to {hi:+.1} %")
+    }
+
+    /// Largest changes from α = 0 to 100 at the long (975, 1730 m) or the short (200,
+    /// 500 m) tethers: (cage snap time [s], cage snap peak, steady ship maximum).
+    fn worst(&self, long: bool) -> (Real, Real, Real) {
+        self.change
+            .iter()
+            .filter(|c| (c.0 >= 975.0) == long)
+            .fold((0.0, 0.0, 0.0), |m, c| {
+                (m.0.max(c.1), m.1.max(c.2), m.2.max(c.3))
+            })
+    }
+
+    /// Bending matters more for the short tethers: changes at least twice as large in the
+    /// first snap's time or peak and in the steady maximum.
+    fn bending_holds(&self) -> bool {
+        let (long, short) = (self.worst(true), self.worst(false));
+        !self.change.is_empty()
+            && (short.0 > 2.0 * long.0 || short.1 > 2.0 * long.1)
+            && short.2 > 2.0 * long.2
+    }
+}
+
+fn holds(ok: bool) -> &'static str {
+    if ok { "**holds**" } else { "**does not hold**" }
+}
+
+/// The table of the 48 cases of one study.
+fn ropos_table(w: &mut String, records: &[RoposRecord]) {
+    let _ = writeln!(
+        w,
+        "| L [m] | α | f [Hz] | Δt [s] | wall [s] | T_ship min [kN] | T_ship max [kN] | slack \
+         (at the ship) | cage snap t [s] | cage before → peak [kN] | ship arrival t [s] | ship \
+         peak [kN] | travel [s] | L/c [s] | travel error |\n\
+         |---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
     );
-    // |travel / (L/c) − 1| at L = 1730 m (the paper's case), and every length's errors.
-    let mut worst_travel: Real = 0.0;
-    let mut travel_errors: Vec<(Real, Real)> = Vec::new();
-    for r in &records {
+    for r in records {
         let tau = r.length / r.wave_speed;
         let (ct, cb, cp) = r.cage_snap.map_or(("–".into(), "–".into(), 0.0), |s| {
             (
@@ -1158,21 +1172,12 @@ fn ropos_section(w: &mut String, img: &Path) {
             ),
             _ => ("–".into(), "–".into(), None),
         };
-        if let Some(t) = travel
-            && r.taut_path
-        {
-            let e = t / tau - 1.0;
-            travel_errors.push((r.length, e));
-            if r.length == 1730.0 {
-                worst_travel = worst_travel.max(e.abs());
-            }
-        }
         let _ = writeln!(
             w,
-            "| {:.0}{} | {} | {:.2} | {:.1e} | {:.0} | {:.1} | {:.1} | {} | {ct} | {cb} | {st} | {sp} | \
-             {} | {tau:.4} | {} |",
+            "| {:.0}{} | {} | {:.2} | {:.1e} | {:.0} | {:.1} | {:.1} | {} | {ct} | {cb} | {st} | \
+             {sp} | {} | {tau:.4} | {} |",
             r.length,
-            if r.modal_filter.is_some() { " §" } else { "" },
+            if r.modal_filter.is_some() { "" } else { " §" },
             r.alpha,
             r.frequency,
             r.step,
@@ -1192,65 +1197,143 @@ fn ropos_section(w: &mut String, img: &Path) {
             )),
         );
     }
-    // The paper's claims.
-    let wet = find(1730.0, 1.0, 0.2).map(|r| r.static_ship - r.static_cage);
-    let count = |pred: &dyn Fn(&RoposRecord) -> bool| records.iter().filter(|r| pred(r)).count();
-    let fast_slack = count(&|r| r.frequency > 0.15 && r.slack && r.cage_snap.is_some());
-    let fast = count(&|r| r.frequency > 0.15);
-    let slow_slack = count(&|r| r.frequency < 0.15 && r.slack);
-    let slow = count(&|r| r.frequency < 0.15);
-    let holds = |ok: bool| if ok { "**holds**" } else { "**does not hold**" };
-    let snaps = count(&|r| r.ship_snap.is_some() && r.taut_path && r.length == 1730.0);
-    let range = |l: Real| {
-        let e: Vec<Real> = travel_errors
-            .iter()
-            .filter(|x| x.0 == l)
-            .map(|x| 100.0 * x.1)
-            .collect();
-        let lo = e.iter().copied().fold(Real::INFINITY, Real::min);
-        let hi = e.iter().copied().fold(Real::NEG_INFINITY, Real::max);
-        format!("{lo:+.1} to {hi:+.1} %")
+}
+
+/// A sentence on the dg modal velocity filter in the runs of a study.
+fn filter_note(records: &[RoposRecord]) -> String {
+    let filtered = records.iter().filter(|r| r.modal_filter.is_some()).count();
+    if filtered == records.len() {
+        "Every case ran with the dg modal velocity filter (docs/dg.md, Discretisation item 6)."
+            .into()
+    } else {
+        format!(
+            "{filtered} of the {} cases ran with the dg modal velocity filter (docs/dg.md, \
+             Discretisation item 6); the rows marked § predate it.",
+            records.len()
+        )
+    }
+}
+
+fn ropos_section(w: &mut String, img: &Path) {
+    let base = load("ropos_tether_body.toml");
+    let c = tether::wave_speed(&base);
+    let _ = writeln!(
+        w,
+        "\n## The ROPOS deep-water tether (DG paper §6)\n\n\
+         A cage hangs from a ship on a tether; the fairlead moves on a circular orbit of radius \
+         a = 2 m in the vertical x–z plane. The study of §6.2 over L ∈ {{200, 500, 975, 1730}} \
+         m, EI = α·2.62 kN·m² with α ∈ {{0, 1, 10, 100}}, f ∈ {{0.10, 0.20, 0.25}} Hz: 48 runs \
+         of `examples/ropos_tether_body.toml` (L = 1730 m, α = 1, f = 0.2 Hz, the cage as a \
+         rigid body) with L, EI and f changed \
+         ([`validation::tether::case`](../../crates/hawser/src/validation/tether.rs), which \
+         also moves the cage to hang L below the ship), and the same 48 with the cage as a \
+         point mass (`examples/ropos_tether.toml`) for comparison. Table 3 and SPEC §7: \
+         tether γ0 3.01 kg/m, ρ 7153 kg/m³, D 0.03 m, C_Mn 1, C_Mt 0, C_Dn 1.0, C_Dt 0.02, \
+         EA 45.5 MN, ζ 45.5 kN·s; cage 4995 kg, ρ 8448 kg/m³, D 3.01 m, H 4.2 m, added mass \
+         9200 kg (heave), C_Dn 1.3, C_Dt 2.7. N = 20, P = 4, SSP-RK3 at 0.8 of the stable \
+         step. c = √(EA/γ0) = {c:.0} m/s.\n\n\
+         How it is modelled:\n\n\
+         - **Tether buoyancy and added mass on the steel area.** The paper's eqs. 13–14 take \
+         the area A = γ0/ρ = 4.21e-4 m² (ρ = 7153 kg/m³), which gives its tether wet weight of \
+         44 kN at 1730 m; drag acts on the nominal D = 0.03 m (eq. 17). hawser has one \
+         diameter for all three, so the line type has d = √(4γ0/(πρ)) = 23.15 mm and drag \
+         coefficients scaled by D/d = 1.2961 (C_Dn 1.2961, C_Dt 0.02592): the same forces. \
+         With A from D = 0.03 m the wet weight would be 38.8 kN.\n\
+         - **The cage is a free rigid body** (six degrees of freedom; the parameters of \
+         `examples/ropos_cage_body.toml`): mass 4995 kg displacing 4995/8448 = 0.5913 m³, \
+         drag C_Dn 1.3 on D·H = 12.64 m² sideways and C_Dt 2.7 on πD²/4 = 7.12 m² vertically \
+         (the issue's direction-dependent drag), added mass 9200 kg in every direction (the \
+         paper's heave value; Table 3 gives the same C_M, 7.1, in surge and heave), pitch and \
+         roll inertia 19e3 kg·m² (yaw 5.7e3, a solid cylinder's ratio), and the tether on a \
+         bridle 2.1 m above its centre, so the cage pitches when the tether pulls sideways.\n\
+         - **The point-mass cage** of the comparison is a free point: one added-mass \
+         coefficient and one drag area for every direction, both at the heave values (added \
+         mass 9200 kg, drag area 2.7 × 7.116 = 19.21 m², 17 % above the body's sideways \
+         1.3 × 12.64 = 16.43 m²), the tether attached at the point itself (no lever arm, no \
+         pitch).\n\
+         - **The ship** is a prescribed `circular-orbit` point at z = 0, built up over two \
+         periods (quintic ramp), then {ROPOS_PERIODS} steady periods. Statistics of the \
+         ship tension are taken after the build-up.\n\
+         - **Slack** is a sample with some element's strain ≤ 0. **The first snap** at the \
+         cage is at the first sample taut again after the first slack: its time is when the \
+         cage tension has risen by half of the jump from the last slack sample to the peak \
+         within L/c after; **its arrival at the ship** is when the ship tension has risen by \
+         half of its jump within [½, 3/2]·L/c after that \
+         ([`validation::tether::summarise`](../../crates/hawser/src/validation/tether.rs)). \
+         Samples every L/c/200 or finer (0.1–1 ms).\n\
+         - **Slack end tension in dg.** While the lower tether is slack, the cage-end tension \
+         is not zero: the `dg` end traction includes the Lax–Friedrichs impedance term \
+         Z(ν_cage − ν⁺) (docs/dg.md, boundary conditions), Z = √(EA γ0) = 11.7 kN·s/m, \
+         which is nonzero whenever the cage and the slack line end move apart. The element \
+         strain, not the end tension, decides slack here."
+    );
+    let Some(records): Option<Vec<RoposRecord>> = read("ropos_rigid.json") else {
+        let _ = writeln!(w, "\n(no results stored: run `dg_report ropos body`)");
+        return;
     };
-    let through_slack = count(&|r| r.ship_snap.is_some() && !r.taut_path);
+    let find = |l: Real, a: Real, f: Real| find_case(&records, l, a, f);
+    let _ = writeln!(
+        w,
+        "\n### The 48 cases (rigid-body cage)\n\n`dg_report ropos body`, stored in \
+         `data/ropos_rigid.json`. Ship-end tension extremes after the build-up; the first snap \
+         at the cage (time, tension before the front, peak) and its arrival at the ship (time, \
+         peak); travel = ship − cage time against L/c. {}\n",
+        filter_note(&records)
+    );
+    ropos_table(w, &records);
+    let k = RoposChecks::new(&records);
     let _ = writeln!(
         w,
         "\n(†) The front ran into a slack stretch near the ship (the element at the ship was \
          slack at some sample between the cage snap and its arrival): a snap front entering \
          slack cable moves slower than c, at c √(ε⁺/(ε⁺ − ε⁻)) between the strain ε⁺ > 0 \
          behind it and ε⁻ < 0 ahead (the jump conditions of T = EA max(ε, 0)), so its travel \
-         time exceeds L/c. These {through_slack} cases (short tethers, which go slack at the \
-         ship too when the fairlead moves down fastest) are not part of the L/c check."
+         time exceeds L/c. These {} cases are not part of the L/c check.",
+        k.through_slack
     );
+    let lengths = |ls: &[Real]| {
+        ls.iter()
+            .map(|l| format!("{l:.0}"))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
     let _ = writeln!(
         w,
-        "\n### The paper's observations, checked\n\n\
+        "\n### The paper's observations, checked (rigid-body cage)\n\n\
          - **Tether wet weight 44 kN at 1730 m** (§6.1; static ship minus cage tension): \
-         {} (γ0(1 − ρ_w/ρ)gL = 43.75 kN; within 1 % of 44 kN: {}; test \
-         `ropos_tether::tether_wet_weight_at_1730_m`).\n\
+         {} (γ0(1 − ρ_w/ρ)gL = 43.75 kN; within 1 % of 44 kN: {}; tests \
+         `ropos_tether::tether_wet_weight_at_1730_m` (point mass, statics) and \
+         `ropos_tether::stored_rigid_body_study` (these stored runs)).\n\
          - **Slack and snap at 0.2 and 0.25 Hz, none at 0.1 Hz** (§6.2): slack with a snap in \
-         {fast_slack} of the {fast} cases at 0.2 and 0.25 Hz; slack in {slow_slack} of the \
-         {slow} cases at 0.1 Hz: {}.\n\
+         {} of the {} cases at 0.2 and 0.25 Hz; slack in {} of the {} cases at 0.1 Hz: {}.\n\
          - **The snap reaches the ship L/c after it leaves the cage** (c = {c:.0} m/s; the \
          paper's 3870 m/s and 0.445 s, stated for its L = 1730 m): at 1730 m the largest \
-         travel-time error of the {snaps} snaps is {:.2} %; within 2 %: {}. For the shorter \
-         tethers the measured times are {} (975 m), {} (500 m) and {} (200 m) off L/c, so \
-         the 2 % does **not** hold there, for reasons of the event rather than of the wave \
-         speed: (1) the snap at the cage builds up in steps over 10–30 ms (partial snaps while \
-         the element at the cage is still slack: at 500 m, α = 1, 0.2 Hz the cage tension \
-         jumps at 8.875, 8.895 and 8.900 s), and the axial damping spreads the front over \
-         ≈ 10–50 ms, both comparable to L/c = 51–250 ms; the first steps send fronts that \
-         reach the ship before the half-jump time at the cage says, so the measured travel is \
-         short by a few ms, as at 1730 m (−3.9 ms there, −0.9 %); (2) at 200 and 500 m the \
-         tether also goes slack at the ship (T_ship min 0), and (†) a front running into \
-         slack cable is slower than c.",
-        wet.map_or("not run".into(), |x| format!("{:.2} kN", x / 1e3)),
-        holds(wet.is_some_and(|x| (x / 44e3 - 1.0).abs() < 0.01)),
-        holds(fast_slack == fast && slow_slack == 0 && fast + slow == 48),
-        100.0 * worst_travel,
-        holds(snaps > 0 && worst_travel < 0.02),
-        range(975.0),
-        range(500.0),
-        range(200.0)
+         travel-time error of the {} snaps is {:.2} % ({:+.1} ms); within 2 %: {}. For the \
+         shorter tethers the measured times are {} (975 m), {} (500 m) and {} (200 m) off \
+         L/c, so the 2 % does **not** hold there, for reasons of the event rather than of the \
+         wave speed: (1) the snap at the cage builds up over several ms (partial snaps while \
+         the element at the cage is still slack), and the axial damping spreads the front \
+         over ≈ 10–50 ms, both comparable to L/c = 51–250 ms; the first partial snaps send \
+         fronts that reach the ship before the half-jump time at the cage says, so the \
+         measured travel is short, as at 1730 m by a few ms; (2) the element at the ship \
+         also goes slack in some cases at L = {} m, and (†) a front running into slack cable \
+         is slower than c.",
+        k.wet
+            .map_or("not run".into(), |x| format!("{:.2} kN", x / 1e3)),
+        holds(k.wet_holds()),
+        k.fast_slack,
+        k.fast,
+        k.slow_slack,
+        k.slow,
+        holds(k.pattern_holds()),
+        k.snaps,
+        100.0 * k.worst_travel,
+        1e3 * k.worst_travel_seconds,
+        holds(k.travel_holds()),
+        k.range(975.0),
+        k.range(500.0),
+        k.range(200.0),
+        lengths(&k.ship_slack_lengths),
     );
     let _ = writeln!(
         w,
@@ -1264,8 +1347,6 @@ fn ropos_section(w: &mut String, img: &Path) {
          α 0 → 100 | ship peak α 0 → 100 | steady T_ship max α 0 → 100 |\n\
          |---|---|---|---|---|---|---|"
     );
-    // Largest change of the cage snap's time [s] and relative peak, per length.
-    let mut change = Vec::new();
     for &l in &LENGTHS {
         for f in [0.2, 0.25] {
             let (Some(a), Some(b)) = (find(l, 0.0, f), find(l, 100.0, f)) else {
@@ -1274,13 +1355,6 @@ fn ropos_section(w: &mut String, img: &Path) {
             let (Some(ca), Some(cb)) = (a.cage_snap, b.cage_snap) else {
                 continue;
             };
-            let steady = b.ship_max / a.ship_max - 1.0;
-            change.push((
-                l,
-                (cb.0 - ca.0).abs(),
-                (cb.2 / ca.2 - 1.0).abs(),
-                steady.abs(),
-            ));
             let ship = match (a.ship_snap, b.ship_snap) {
                 (Some(x), Some(y)) => (
                     format!("{:+.1}", 1e3 * (y.0 - x.0)),
@@ -1295,19 +1369,11 @@ fn ropos_section(w: &mut String, img: &Path) {
                 ship.0,
                 100.0 * (cb.2 / ca.2 - 1.0),
                 ship.1,
-                100.0 * steady
+                100.0 * (b.ship_max / a.ship_max - 1.0)
             );
         }
     }
-    let worst = |long: bool| {
-        change
-            .iter()
-            .filter(|c| (c.0 >= 975.0) == long)
-            .fold((0.0 as Real, 0.0 as Real, 0.0 as Real), |m, c| {
-                (m.0.max(c.1), m.1.max(c.2), m.2.max(c.3))
-            })
-    };
-    let (long, short) = (worst(true), worst(false));
+    let (long, short) = (k.worst(true), k.worst(false));
     let _ = writeln!(
         w,
         "\nLargest changes from α = 0 to 100 at L = 975 and 1730 m: first cage snap {:.2} ms \
@@ -1320,15 +1386,19 @@ fn ropos_section(w: &mut String, img: &Path) {
         1e3 * short.0,
         100.0 * short.1,
         100.0 * short.2,
-        holds(
-            !change.is_empty()
-                && (short.0 > 2.0 * long.0 || short.1 > 2.0 * long.1)
-                && short.2 > 2.0 * long.2
-        )
+        holds(k.bending_holds())
     );
-    if let Some(mesh) = read::<Vec<MeshRecord>>("ropos_mesh.json") {
+    // The 200 m tether on 20 and 40 elements: the rigid-body mesh check if stored, else the
+    // point-mass one.
+    let mesh = read::<Vec<MeshRecord>>("ropos_mesh_rigid.json")
+        .map(|m| ("rigid-body", "ropos-mesh body", m))
+        .or_else(|| {
+            read::<Vec<MeshRecord>>("ropos_mesh.json").map(|m| ("point-mass", "ropos-mesh", m))
+        });
+    if let Some((cage, command, mesh)) = mesh {
         let get = |a: Real, n: usize| mesh.iter().find(|r| r.alpha == a && r.elements == n);
-        let at500 = change
+        let at500 = k
+            .change
             .iter()
             .filter(|c| c.0 == 500.0)
             .fold((0.0 as Real, 0.0 as Real), |m, c| {
@@ -1343,122 +1413,53 @@ fn ropos_section(w: &mut String, img: &Path) {
         if let (Some(a20), Some(a40), Some(b20), Some(b40)) =
             (get(0.0, 20), get(0.0, 40), get(1.0, 20), get(1.0, 40))
         {
-            let _ = writeln!(
-                w,
-                "\n**At 200 m the tether without bending is not mesh-converged** \
-                 (`dg_report ropos-mesh`: 0.2 Hz, two periods after the build-up, P = 4): the \
-                 largest ship tension is {:.0} kN on 20 elements and {:.0} kN on 40 with α = 0, \
-                 against {:.1} and {:.1} kN with α = 1. As for Koh's cable, a perfectly flexible \
-                 line that goes slack and snaps taut again forms kinks that the mesh resolves \
-                 ever more sharply; the smallest bending stiffness of the study (α = 1, \
-                 2.62 kN·m²) regularises it. The α = 0 rows at 200 m (and the 200 m entries of \
-                 the comparison above) are therefore properties of the 20-element mesh, not of \
-                 the tether; the paper's \"smaller and earlier snap with α = 0\" cannot be \
-                 confirmed or refuted at 200 m with a mesh-dependent α = 0 solution; the \
-                 verdict above holds on the 500 m cases alone (first snap changed by up to \
-                 {:.1} ms and {:.1} %, against {:.2} ms and {:.2} % at 975 and 1730 m). For \
-                 α ≥ 1 the steady ship maximum at 200 m and 0.2 Hz is {:.1}–{:.1} kN: bending \
-                 beyond α = 1 hardly changes it.",
-                a20.ship_max / 1e3,
-                a40.ship_max / 1e3,
-                b20.ship_max / 1e3,
-                b40.ship_max / 1e3,
-                1e3 * at500.0,
-                100.0 * at500.1,
-                1e3 * long.0,
-                100.0 * long.1,
-                stiff.0 / 1e3,
-                stiff.1 / 1e3
-            );
-        }
-    }
-    if let Some(body) = read::<Vec<BodyRecord>>("ropos_body.json")
-        && body.len() == 2
-    {
-        let (p, b) = (&body[0], &body[1]);
-        let snap = |r: &BodyRecord| {
-            r.cage_snap.map_or("–".into(), |c| {
-                format!("{:.4} s, {:.2} kN", c.0, c.2 / 1e3)
-            })
-        };
-        let _ = writeln!(
-            w,
-            "\n**Point mass against rigid body.** Rigid bodies landed while this study ran \
-             (issue 6). `examples/ropos_tether_body.toml` is the 1730 m, α = 1, 0.2 Hz case with \
-             the cage as a free rigid body (the parameters of `examples/ropos_cage_body.toml`: \
-             added mass 9200 kg in every direction, drag C_D 1.3 on D·H sideways and 2.7 on \
-             πD²/4 vertically, pitch inertia 19e3 kg·m², the tether on a bridle 2.1 m above the \
-             centre). Over 30 s (`dg_report ropos-body`) it gives the same ship tension range, \
-             {:.1}–{:.1} kN against {:.1}–{:.1} kN, and the same first snap at the cage, {} \
-             against {}: at 1730 m the snap is a heave event, and the point mass carries the \
-             heave added mass and drag. The 48 cases above keep the point mass; \
-             `validation::tether::case` moves a rigid-body cage too, and `dg_report ropos body` \
-             runs the cases with it (below).",
-            b.ship_min / 1e3,
-            b.ship_max / 1e3,
-            p.ship_min / 1e3,
-            p.ship_max / 1e3,
-            snap(b),
-            snap(p)
-        );
-    }
-    if let Some(rigid) = read::<Vec<RoposRecord>>("ropos_rigid.json")
-        && !rigid.is_empty()
-    {
-        let _ = writeln!(
-            w,
-            "\n**The cases with the rigid-body cage** (`dg_report ropos body f=0.2 1730 200`: \
-             the {} cases below, each against the point-mass case of the table above; the \
-             other cases were not run with the body). The rigid-body runs use the dg modal \
-             velocity filter; {} of the point-mass rows they are compared with predate it, so \
-             their differences mix the cage model and the filter. Ship tension after the \
-             build-up, first snap at the cage (time, peak) and its travel to the ship, point \
-             mass → rigid body:\n\n\
-             | L [m] | α | f [Hz] | T_ship min [kN] | T_ship max [kN] | cage snap t [s] | cage \
-             snap peak [kN] | travel [s] | wall [s] |\n\
-             |---|---|---|---|---|---|---|---|---|",
-            rigid.len(),
-            rigid
-                .iter()
-                .filter(|b| {
-                    find(b.length, b.alpha, b.frequency).is_some_and(|p| p.modal_filter.is_none())
-                })
-                .count()
-        );
-        let snap = |r: &RoposRecord| r.cage_snap.map_or("–".into(), |c| format!("{:.3}", c.0));
-        let peak_of = |r: &RoposRecord| {
-            r.cage_snap
-                .map_or("–".into(), |c| format!("{:.1}", c.2 / 1e3))
-        };
-        let travel = |r: &RoposRecord| match (r.cage_snap, r.ship_snap) {
-            (Some(c), Some(s)) => format!("{:.4}", s.0 - c.0),
-            _ => "–".into(),
-        };
-        for b in &rigid {
-            let Some(p) = find(b.length, b.alpha, b.frequency) else {
-                continue;
+            let spread = |x: &MeshRecord, y: &MeshRecord| y.ship_max / x.ship_max - 1.0;
+            let filter = if mesh.iter().all(|r| r.modal_filter.is_some()) {
+                "with the modal filter"
+            } else {
+                "run before the modal filter"
             };
             let _ = writeln!(
                 w,
-                "| {:.0} | {} | {:.2} | {:.1} → {:.1} | {:.1} → {:.1} | {} → {} | {} → {} | \
-                 {} → {} | {:.0} → {:.0} |",
-                b.length,
-                b.alpha,
-                b.frequency,
-                p.ship_min / 1e3,
-                b.ship_min / 1e3,
-                p.ship_max / 1e3,
-                b.ship_max / 1e3,
-                snap(p),
-                snap(b),
-                peak_of(p),
-                peak_of(b),
-                travel(p),
-                travel(b),
-                p.wall_seconds,
-                b.wall_seconds
+                "\n**The 200 m tether on a finer mesh** (`dg_report {command}`: the {cage} \
+                 cage, {filter}; 0.2 Hz, two periods after the build-up, P = 4): the largest \
+                 ship tension is {:.1} kN on 20 elements and {:.1} kN on 40 with α = 0 \
+                 ({:+.1} %), against {:.1} and {:.1} kN with α = 1 ({:+.1} %).",
+                a20.ship_max / 1e3,
+                a40.ship_max / 1e3,
+                100.0 * spread(a20, a40),
+                b20.ship_max / 1e3,
+                b40.ship_max / 1e3,
+                100.0 * spread(b20, b40),
             );
+            if spread(a20, a40).abs() > 0.05 && spread(b20, b40).abs() < 0.01 {
+                let _ = writeln!(
+                    w,
+                    "Without bending it is not mesh-converged. As for Koh's cable, a perfectly \
+                     flexible line that goes slack and snaps taut again forms kinks that the \
+                     mesh resolves ever more sharply; the smallest bending stiffness of the \
+                     study (α = 1, 2.62 kN·m²) regularises it. The α = 0 rows at 200 m (and the \
+                     200 m entries of the comparison above) are therefore properties of the \
+                     20-element mesh, not of the tether; the paper's \"smaller and earlier \
+                     snap with α = 0\" cannot be confirmed or refuted at 200 m with a \
+                     mesh-dependent α = 0 solution; the bending verdict holds on the 500 m \
+                     cases alone (first snap changed by up to {:.1} ms and {:.1} %, against \
+                     {:.2} ms and {:.2} % at 975 and 1730 m): {}. For α ≥ 1 the steady ship \
+                     maximum at 200 m and 0.2 Hz is {:.1}–{:.1} kN: bending beyond α = 1 \
+                     hardly changes it.",
+                    1e3 * at500.0,
+                    100.0 * at500.1,
+                    1e3 * long.0,
+                    100.0 * long.1,
+                    holds(at500.0 > 2.0 * long.0 || at500.1 > 2.0 * long.1),
+                    stiff.0 / 1e3,
+                    stiff.1 / 1e3
+                );
+            }
         }
+    }
+    if let Some(point) = read::<Vec<RoposRecord>>("ropos.json") {
+        ropos_comparison(w, &point, &records);
     }
     // Plots: Fig. 5 (ship tension over the last two periods) and Fig. 6a (the first snap at
     // L = 200 m, f = 0.2 Hz).
@@ -1482,7 +1483,9 @@ fn ropos_section(w: &mut String, img: &Path) {
             img,
             &plot(
                 &format!("ropos_ship_{:.0}", 100.0 * f),
-                &format!("ROPOS: ship tension over the last two periods, f = {f} Hz"),
+                &format!(
+                    "ROPOS, rigid-body cage: ship tension over the last two periods, f = {f} Hz"
+                ),
                 "t − t0 [s]",
                 "T_ship [kN]",
                 false,
@@ -1514,7 +1517,8 @@ fn ropos_section(w: &mut String, img: &Path) {
             &plot(
                 &format!("ropos_first_snap_{l:.0}"),
                 &format!(
-                    "ROPOS: the first snap, L = {l:.0} m, f = 0.2 Hz (t0: its time at the cage)"
+                    "ROPOS, rigid-body cage: the first snap, L = {l:.0} m, f = 0.2 Hz (t0: its \
+                     time at the cage)"
                 ),
                 "t − t0 [s]",
                 "T [kN]",
@@ -1523,6 +1527,113 @@ fn ropos_section(w: &mut String, img: &Path) {
             ),
         ));
     }
+}
+
+/// The point-mass study against the rigid-body one: the checks on the point mass, and per
+/// (L, f) the largest differences over α, point mass → rigid body.
+fn ropos_comparison(w: &mut String, point: &[RoposRecord], rigid: &[RoposRecord]) {
+    let p = RoposChecks::new(point);
+    let (long, short) = (p.worst(true), p.worst(false));
+    let _ = writeln!(
+        w,
+        "\n### Point mass against rigid body\n\n\
+         The same 48 cases with the cage as a point mass (`dg_report ropos`, stored in \
+         `data/ropos.json`; {}). The paper's checks on them: wet weight {} ({}); slack with a \
+         snap in {} of the {} cases at 0.2 and 0.25 Hz and slack in {} of the {} at 0.1 Hz \
+         ({}); at 1730 m the largest travel-time error of the {} snaps {:.2} % ({}); travel \
+         errors {} (975 m), {} (500 m), {} (200 m); bending changes the first cage snap by up \
+         to {:.2} ms and {:.2} % and the steady ship maximum by {:.2} % at 975 and 1730 m, by \
+         {:.2} ms, {:.2} % and {:.2} % at 200 and 500 m ({}).\n\n\
+         Per length and frequency, the largest difference over the four α, point mass → \
+         rigid body (signed, rigid body minus point mass, with the α where it occurs): the \
+         ship tension's extremes after the build-up, the first snap at the cage (time and \
+         peak), its peak at the ship and its travel time:\n\n\
+         | L [m] | f [Hz] | T_ship min [kN] | T_ship max | cage snap t [ms] | cage snap peak | \
+         ship snap peak | travel [ms] |\n|---|---|---|---|---|---|---|---|",
+        filter_note(point),
+        p.wet
+            .map_or("not run".into(), |x| format!("{:.2} kN", x / 1e3)),
+        holds(p.wet_holds()),
+        p.fast_slack,
+        p.fast,
+        p.slow_slack,
+        p.slow,
+        holds(p.pattern_holds()),
+        p.snaps,
+        100.0 * p.worst_travel,
+        holds(p.travel_holds()),
+        p.range(975.0),
+        p.range(500.0),
+        p.range(200.0),
+        1e3 * long.0,
+        100.0 * long.1,
+        100.0 * long.2,
+        1e3 * short.0,
+        100.0 * short.1,
+        100.0 * short.2,
+        holds(p.bending_holds()),
+    );
+    // The signed difference of largest magnitude over α and where it occurs.
+    let largest = |l: Real, f: Real, d: &dyn Fn(&RoposRecord, &RoposRecord) -> Option<Real>| {
+        ALPHAS
+            .iter()
+            .filter_map(|&a| {
+                let x = find_case(point, l, a, f)?;
+                let y = find_case(rigid, l, a, f)?;
+                Some((a, d(x, y)?))
+            })
+            .fold(None, |m: Option<(Real, Real)>, (a, v)| match m {
+                Some((_, mv)) if mv.abs() >= v.abs() => m,
+                _ => Some((a, v)),
+            })
+    };
+    let cell = |x: Option<(Real, Real)>, digits: usize, unit: &str| {
+        x.map_or("–".into(), |(a, v)| {
+            format!("{v:+.digits$}{unit} (α {a})")
+        })
+    };
+    let rel = |x: Real, y: Real| 100.0 * (y / x - 1.0);
+    let travel = |r: &RoposRecord| match (r.cage_snap, r.ship_snap) {
+        (Some(c), Some(s)) => Some(s.0 - c.0),
+        _ => None,
+    };
+    // Largest relative change of the steady ship maximum and of the first cage snap's peak,
+    // and of the snap time, at the long and the short tethers.
+    let mut worst = [(0.0 as Real, 0.0 as Real, 0.0 as Real); 2];
+    for &l in &LENGTHS {
+        for f in FREQUENCIES {
+            let min = largest(l, f, &|x, y| Some((y.ship_min - x.ship_min) / 1e3));
+            let max = largest(l, f, &|x, y| Some(rel(x.ship_max, y.ship_max)));
+            let ct = largest(l, f, &|x, y| Some(1e3 * (y.cage_snap?.0 - x.cage_snap?.0)));
+            let cp = largest(l, f, &|x, y| Some(rel(x.cage_snap?.2, y.cage_snap?.2)));
+            let sp = largest(l, f, &|x, y| Some(rel(x.ship_snap?.2, y.ship_snap?.2)));
+            let tr = largest(l, f, &|x, y| Some(1e3 * (travel(y)? - travel(x)?)));
+            let i = usize::from(l >= 975.0);
+            let abs = |x: Option<(Real, Real)>| x.map_or(0.0, |v| v.1.abs());
+            worst[i] = (
+                worst[i].0.max(abs(max)),
+                worst[i].1.max(abs(ct)),
+                worst[i].2.max(abs(cp)),
+            );
+            let _ = writeln!(
+                w,
+                "| {l:.0} | {f:.2} | {} | {} | {} | {} | {} | {} |",
+                cell(min, 1, ""),
+                cell(max, 1, " %"),
+                cell(ct, 1, ""),
+                cell(cp, 1, " %"),
+                cell(sp, 1, " %"),
+                cell(tr, 1, ""),
+            );
+        }
+    }
+    let _ = writeln!(
+        w,
+        "\nLargest differences point mass → rigid body at L = 975 and 1730 m: steady ship \
+         maximum {:.2} %, first cage snap {:.1} ms and {:.1} %; at L = 200 and 500 m: {:.1} %, \
+         {:.1} ms and {:.1} %.",
+        worst[1].0, worst[1].1, worst[1].2, worst[0].0, worst[0].1, worst[0].2
+    );
 }
 
 // ---------------------------------------------------------------------------------------------
