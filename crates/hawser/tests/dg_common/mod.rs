@@ -87,6 +87,16 @@ pub fn ring_error(order: usize, elements: usize, beta: Real) -> (Real, usize) {
 /// [`ring_error`] with the L2 error of q = ∂r/∂s as well: (position error, q error,
 /// iterations).
 pub fn ring_errors(order: usize, elements: usize, beta: Real) -> (Real, Real, usize) {
+    ring_errors_with(order, elements, beta, |_| {})
+}
+
+/// [`ring_errors`] on a line adjusted by `setup` (flux settings) before the solve.
+pub fn ring_errors_with(
+    order: usize,
+    elements: usize,
+    beta: Real,
+    setup: impl Fn(&mut DgLine),
+) -> (Real, Real, usize) {
     let mut line = single(
         beam_type(10.0, 100.0, 1.0),
         2.0 * std::f64::consts::PI,
@@ -95,6 +105,7 @@ pub fn ring_errors(order: usize, elements: usize, beta: Real) -> (Real, Real, us
         [EndCondition::CLAMPED, EndCondition::FREE],
     );
     line.beta = beta;
+    setup(&mut line);
     let env = vacuum();
     let mut state = vec![0.0; line.state_len()];
     let circle = |s: Real| Vec3::new(s.sin(), 0.0, s.cos() - 1.0);
@@ -252,9 +263,14 @@ pub fn meshes(order: usize) -> [usize; 3] {
 
 /// Errors and rates for order P: (errors, rates).
 pub fn convergence(order: usize) -> (Vec<Real>, Vec<Real>) {
+    convergence_with(order, |_| {})
+}
+
+/// [`convergence`] on lines adjusted by `setup` (see [`ring_errors_with`]).
+pub fn convergence_with(order: usize, setup: impl Fn(&mut DgLine)) -> (Vec<Real>, Vec<Real>) {
     let errors: Vec<Real> = meshes(order)
         .iter()
-        .map(|&n| ring_error(order, n, 0.0).0)
+        .map(|&n| ring_errors_with(order, n, 0.0, &setup).0)
         .collect();
     let rates = errors.windows(2).map(|e| (e[0] / e[1]).log2()).collect();
     (errors, rates)

@@ -203,6 +203,13 @@ pub struct DgLine {
     /// 1 (momentum, and the rotation of a straight element) are never damped, nor is a line at
     /// rest; the smooth verification cases move by less than their tolerances.
     pub modal_filter: Real,
+    /// Scale [-] of the Lax–Friedrichs dissipation of the axial q–v fluxes (DG paper eqs.
+    /// 24–25): the jump terms ½λ[q] of the q flux and ½Z[ν] of the v flux, interior and at
+    /// velocity ends (T̂ = T⁺ ± s Z (ν_BC − ν⁺)), are multiplied by it. 1 (the default) is
+    /// the paper's Lax–Friedrichs flux; 0 leaves the centred fluxes {ν} and {T î + T_s}.
+    /// For verification only (tests/dg_ring.rs): the dynamics need the dissipation, and the
+    /// impedance a system's free point sees stays Z.
+    pub axial_dissipation: Real,
     state_len: usize,
     point_len: usize,
     mode_len: usize,
@@ -260,6 +267,7 @@ impl DgLine {
             beta: 0.0,
             bending,
             modal_filter: DEFAULT_MODAL_FILTER,
+            axial_dissipation: 1.0,
             state_len: state,
             point_len: point,
             mode_len: mode,

@@ -261,6 +261,7 @@ impl DgLine {
         }
 
         // 2. Fluxes of the q equation (F = v/γ0, DG paper eqs. 24–25).
+        let diss = self.axial_dissipation;
         for i in 1..n {
             let (l, r) = (2 * i - 1, 2 * i);
             let (ql, qr) = (ws.end_q[l], ws.end_q[r]);
@@ -286,7 +287,7 @@ impl DgLine {
                 };
                 (tv(i, qr) - tv(i - 1, ql)) / z
             };
-            ws.flux_q[i] = (ws.end_nu[l] + ws.end_nu[r]) * 0.5 + jump * 0.5;
+            ws.flux_q[i] = (ws.end_nu[l] + ws.end_nu[r]) * 0.5 + jump * (0.5 * diss);
         }
         for (side, (i, p, e)) in [(0, 0, 0), (n, 2 * n - 1, n - 1)].into_iter().enumerate() {
             let lam = self.wave_speed_at(e, ws.end_q[p].norm() - 1.0);
@@ -350,13 +351,14 @@ impl DgLine {
         for i in 1..n {
             let (l, r) = (2 * i - 1, 2 * i);
             ws.flux_v[i] = (ws.end_flux[l] + ws.end_flux[r]) * 0.5
-                + (ws.end_nu[r] - ws.end_nu[l]) * (0.5 * ws.impedance[i]);
+                + (ws.end_nu[r] - ws.end_nu[l]) * (0.5 * diss * ws.impedance[i]);
         }
         for (side, (i, p, sign)) in [(0, 0, -1.0), (n, 2 * n - 1, 1.0)].into_iter().enumerate() {
             ws.flux_v[i] = match self.ends[side].translation {
                 // Mirrored ghost ν⁻ = 2ν_BC − ν⁺, q⁻ = q⁺: T̂ = T⁺ ± Z (ν_BC − ν⁺).
                 Translation::Velocity => {
-                    ws.end_flux[p] + (ends[side].velocity - ws.end_nu[p]) * (sign * ws.impedance[i])
+                    ws.end_flux[p]
+                        + (ends[side].velocity - ws.end_nu[p]) * (sign * diss * ws.impedance[i])
                 }
                 // The force on the line end: T̂(L) = F_B, T̂(0) = −F_A.
                 Translation::Force => ends[side].force * sign,
