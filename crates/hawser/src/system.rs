@@ -402,6 +402,7 @@ impl System {
                     .collect();
                 let mut line = DgLine::new(&specs, [EndCondition::PINNED_JOINT; 2]);
                 line.modal_filter = l.modal_filter;
+                line.shock_filter = l.shock_filter;
                 Box::new(line)
             });
             let LineEnd::Point(end_a) = l.end_a;

@@ -149,6 +149,7 @@ fn time_loop_does_not_allocate() {
         mass_matrix: MassMatrix::Lumped,
         strain_measure: Default::default(),
         modal_filter: hawser::formulation::dg::line::DEFAULT_MODAL_FILTER,
+        shock_filter: 0.0,
         clamp: [None; 2],
         end_a: LineEnd::Point(1),
         end_b: LineEnd::Point(2),

@@ -916,6 +916,7 @@ fn convert_lines(c: &mut Converter, s: &Section, points: &[PointSpec]) -> (Vec<L
             mass_matrix: Some(MassMatrixSpec::Lumped),
             strain: None,
             modal_filter: None,
+            shock_filter: None,
             clamp_a: None,
             clamp_b: None,
             line_type: Some(spanned(&t[1], t[1].text.clone())),

@@ -3091,6 +3091,16 @@ fn build_lines(
                 "the default 0.05 keeps slack dg lines from spurious high-mode velocities; \
                  larger values damp more of the motion (docs/dg.md)",
             ),
+            shock_filter: b.opt(
+                &l.shock_filter,
+                &k("shock_filter"),
+                0.0,
+                Check {
+                    ok: |x| (0.0..=1.0).contains(&x),
+                    expected: "-, 0 to 1 (0: off)",
+                },
+                "0.25 settled the peak of an undamped dg snap with the mesh (docs/dg.md)",
+            ),
             clamp: [(&l.clamp_a, "clamp_a"), (&l.clamp_b, "clamp_b")].map(|(c, key)| {
                 let c = c.as_ref()?;
                 let d = b.vec3(c, &k(key));

@@ -675,6 +675,11 @@ pub struct LineSpec {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<f64>")]
     pub modal_filter: Option<Spanned<f64>>,
+    /// Extra modal filter strength of a `dg` line at fronts [-], 0 to 1; default 0 (off);
+    /// a smoothness sensor per element switches it on (docs/dg.md, shock sensor).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub shock_filter: Option<Spanned<f64>>,
     /// Clamped end A: the direction [-] of the line's tangent there, held fixed (`hermite`);
     /// default pinned.
     #[serde(default, skip_serializing_if = "Option::is_none")]

@@ -113,6 +113,10 @@ pub struct Line {
     /// ([`crate::formulation::dg::DgLine::modal_filter`]; 0 switches it off); ignored by `fe`
     /// and `hermite`.
     pub modal_filter: Real,
+    /// Extra modal filter strength c_s [-] of a `dg` line at fronts, switched on per element
+    /// by a smoothness sensor ([`crate::formulation::dg::DgLine::shock_filter`]; 0, the
+    /// default, switches it off); ignored by `fe` and `hermite`.
+    pub shock_filter: Real,
     /// Clamped ends (A, B): the direction of the line's tangent ∂r/∂s held fixed in space at
     /// that end, pointing from A toward B (formulations with bending); `None`: pinned.
     pub clamp: [Option<crate::math::Vec3>; 2],

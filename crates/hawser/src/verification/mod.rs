@@ -430,6 +430,7 @@ pub fn single_line(
             mass_matrix,
             strain_measure: Default::default(),
             modal_filter: crate::formulation::dg::line::DEFAULT_MODAL_FILTER,
+            shock_filter: 0.0,
             clamp: [None; 2],
             end_a: LineEnd::Point(0),
             end_b: LineEnd::Point(1),

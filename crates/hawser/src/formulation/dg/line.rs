@@ -19,6 +19,17 @@ pub const DEFAULT_MODAL_FILTER: Real = 0.05;
 /// Exponent of the modal filter's profile φ_k = ((k − 1)/(P − 1))^s ([`DgLine::modal_filter`]).
 pub const FILTER_EXPONENT: i32 = 4;
 
+/// Shift of the shock sensor's threshold s0 = −4 log10 P + this ([`DgLine::shock_filter`]):
+/// of 0 and −1 on the undamped snapping cable, −1 gave peaks that settle with the mesh.
+pub const SHOCK_SENSOR_SHIFT: Real = -1.0;
+
+/// Half-width κ (decades) of the shock sensor's ramp ([`DgLine::shock_filter`]).
+pub const SHOCK_SENSOR_WIDTH: Real = 1.0;
+
+/// Strain floor of the shock sensor ([`DgLine::shock_filter`]): an element whose strain is
+/// smaller than this everywhere does not count as a front.
+pub const SHOCK_SENSOR_FLOOR: Real = 1e-6;
+
 /// A section of a `dg` line as the user gives it.
 #[derive(Clone, Debug)]
 pub struct DgSectionSpec {
@@ -203,6 +214,16 @@ pub struct DgLine {
     /// 1 (momentum, and the rotation of a straight element) are never damped, nor is a line at
     /// rest; the smooth verification cases move by less than their tolerances.
     pub modal_filter: Real,
+    /// Extra strength c_s [-] of the modal filter at fronts (0, the default: off). In each
+    /// element of order P ≥ 2 a Persson–Peraire smoothness sensor on the strain ε = |q| − 1,
+    /// S_e = log10(ε̂_P² /(2P + 1) / (Σ_k ε̂_k² /(2k + 1) + [`SHOCK_SENSOR_FLOOR`]²)) (the
+    /// share of the mean square of the strain in its highest Legendre mode), raises the
+    /// filter strength from c_f to c_f + c_s ramp(S_e): 0 below s0 − κ, 1 above s0 + κ and
+    /// ½(1 + sin(π(S_e − s0)/(2κ))) between, s0 = −4 log10 P + [`SHOCK_SENSOR_SHIFT`],
+    /// κ = [`SHOCK_SENSOR_WIDTH`]. Elements where the sensor is off keep the filter of
+    /// [`DgLine::modal_filter`] exactly. For undamped snaps (docs/dg.md, "Shock sensor");
+    /// 0.25 is the value measured there. The stable step counts c_f + c_s.
+    pub shock_filter: Real,
     /// Scale [-] of the Lax–Friedrichs dissipation of the axial q–v fluxes (DG paper eqs.
     /// 24–25): the jump terms ½λ[q] of the q flux and ½Z[ν] of the v flux, interior and at
     /// velocity ends (T̂ = T⁺ ± s Z (ν_BC − ν⁺)), are multiplied by it. 1 (the default) is
@@ -267,6 +288,7 @@ impl DgLine {
             beta: 0.0,
             bending,
             modal_filter: DEFAULT_MODAL_FILTER,
+            shock_filter: 0.0,
             axial_dissipation: 1.0,
             state_len: state,
             point_len: point,

@@ -10,7 +10,10 @@
 //! are the same scheme), and sources are projected, (2k + 1)/2 Σ_q w_q φ_k(ξ_q) G(ξ_q).
 
 use super::basis::Basis;
-use super::line::{DgLine, EndLoad, EndState, Rotation, Translation};
+use super::line::{
+    DgLine, EndLoad, EndState, Rotation, SHOCK_SENSOR_FLOOR, SHOCK_SENSOR_SHIFT,
+    SHOCK_SENSOR_WIDTH, Translation,
+};
 use crate::formulation::fluid_load;
 use crate::math::{Real, Vec3, add3, get3, set3, solve3};
 use crate::physics::environment::Environment;
@@ -452,10 +455,12 @@ impl DgLine {
             let v = &state[el.state + m3..el.state + 2 * m3];
             // The modal velocity filter (see [`DgLine::modal_filter`]): modes k ≥ 2 of v decay
             // at σ_e φ_k, leaving the mean (momentum) and linear (rigid rotation of a straight
-            // element) modes alone.
-            if self.modal_filter > 0.0 && m > 2 {
+            // element) modes alone; the shock sensor ([`DgLine::shock_filter`]) raises its
+            // strength at fronts (exactly c_f where it is off).
+            let strength = self.modal_filter + self.shock_strength(e, ws);
+            if strength > 0.0 && m > 2 {
                 let p = (m - 1) as Real;
-                let sigma = self.modal_filter * sec.wave_speed * (2.0 * p + 1.0) / el.length;
+                let sigma = strength * sec.wave_speed * (2.0 * p + 1.0) / el.length;
                 for (k, phi) in sec.filter_profile.iter().enumerate().skip(2) {
                     for c in 3 * k..3 * k + 3 {
                         dv[c] -= sigma * phi * v[c];
@@ -486,6 +491,48 @@ impl DgLine {
                 moment: -moment(ws.flux_m[n], lb),
             },
         ]
+    }
+
+    /// The shock sensor's extra filter strength c_s ramp(S_e) of element `e` (see
+    /// [`DgLine::shock_filter`]), from the strain at its Gauss points (`ws.stretch`).
+    fn shock_strength(&self, e: usize, ws: &DgWorkspace) -> Real {
+        if self.shock_filter <= 0.0 {
+            return 0.0;
+        }
+        let el = &self.elements[e];
+        let b = &self.section(e).basis;
+        let m = b.modes();
+        if m < 3 {
+            return 0.0;
+        }
+        let stretch = &ws.stretch[el.point..el.point + b.points];
+        // Legendre modes ε̂_k of the strain; the mean square over the element is
+        // Σ_k ε̂_k²/(2k + 1).
+        let (mut top, mut all) = (0.0, 0.0);
+        for k in 0..m {
+            let mut c = 0.0;
+            for (qp, l) in stretch.iter().enumerate() {
+                c += b.weight[qp] * b.phi[qp * m + k] * (l - 1.0);
+            }
+            c *= b.inverse_mass[k];
+            let e2 = c * c / (2 * k + 1) as Real;
+            all += e2;
+            if k == m - 1 {
+                top = e2;
+            }
+        }
+        let s = (top / (all + SHOCK_SENSOR_FLOOR * SHOCK_SENSOR_FLOOR))
+            .max(1e-300)
+            .log10();
+        let s0 = -4.0 * ((m - 1) as Real).log10() + SHOCK_SENSOR_SHIFT;
+        let kappa = SHOCK_SENSOR_WIDTH;
+        if s <= s0 - kappa {
+            0.0
+        } else if s >= s0 + kappa {
+            self.shock_filter
+        } else {
+            0.5 * self.shock_filter * (1.0 + (0.5 * std::f64::consts::PI * (s - s0) / kappa).sin())
+        }
     }
 
     /// The nested LDG chain (DG paper eqs. 18–20, 26–30): κ = ∂î/∂s and κ̇ = ∂î̇/∂s with

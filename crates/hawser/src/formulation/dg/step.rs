@@ -60,9 +60,9 @@ pub fn stable_step(line: &DgLine, safety: Real) -> Real {
         }
         // Damping: real-axis limits, whose rates add to the oscillatory one.
         let mut rate = if inv2 > 0.0 { inv2.sqrt() } else { 0.0 };
-        if line.modal_filter > 0.0 && p >= 2.0 {
+        if line.modal_filter + line.shock_filter > 0.0 && p >= 2.0 {
             // The filter's fastest decay, σ = c_f λ (2P + 1)/h, a real-axis rate.
-            rate += line.modal_filter * sec.wave_speed * (2.0 * p + 1.0) / h;
+            rate += (line.modal_filter + line.shock_filter) * sec.wave_speed * (2.0 * p + 1.0) / h;
         }
         if sec.properties.law.damping > 0.0 {
             rate += sec.properties.law.damping * (p + 1.0).powf(3.25)
