@@ -93,14 +93,12 @@ elements = 10
 "#;
 
 fn mutate(from: &str, to: &str) -> String {
-    assert!(BASE.contains(from), "the scenario has no `{from}`");
-    BASE.replacen(from, to, 1)
+    replaced(BASE, from, to)
 }
 
-/// A bad value on the line of `needle`: located, keyed, with unit and hint; snapshotted.
+/// [`common::bad`], and the scenario must not panic when set up.
 fn bad(text: &str, needle: &str, key: &str) -> String {
-    let msg = error(text);
-    assert_located(&msg, line_of(text, needle), key, true, true);
+    let msg = common::bad(text, needle, key);
     assert!(!panics(text));
     msg
 }

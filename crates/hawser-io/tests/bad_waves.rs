@@ -81,20 +81,8 @@ fn regular_base() -> String {
 }
 
 /// `text` with the first occurrence of `from` replaced by `to` (which must exist).
-fn mutate_in(text: &str, from: &str, to: &str) -> String {
-    assert!(text.contains(from), "the scenario has no `{from}`");
-    text.replacen(from, to, 1)
-}
-
 fn mutate(from: &str, to: &str) -> String {
-    mutate_in(BASE, from, to)
-}
-
-/// A bad value on the line of `needle`: located, keyed, with unit and hint; snapshotted.
-fn bad(text: &str, needle: &str, key: &str) -> String {
-    let msg = error(text);
-    assert_located(&msg, line_of(text, needle), key, true, true);
-    msg
+    replaced(BASE, from, to)
 }
 
 #[test]
@@ -370,14 +358,14 @@ fn gamma_on_a_pierson_moskowitz_sea() {
 
 #[test]
 fn regular_wave_without_period() {
-    let text = mutate_in(&regular_base(), "period = 8.0\n", "");
+    let text = replaced(&regular_base(), "period = 8.0\n", "");
     let msg = bad(&text, "type = \"regular\"", "environment.waves.period");
     insta::assert_snapshot!(msg);
 }
 
 #[test]
 fn negative_wave_height() {
-    let text = mutate_in(&regular_base(), "height = 4.0", "height = -4.0");
+    let text = replaced(&regular_base(), "height = 4.0", "height = -4.0");
     let msg = bad(&text, "height", "environment.waves.height");
     insta::assert_snapshot!(msg);
 }
@@ -386,7 +374,7 @@ fn negative_wave_height() {
 /// (L = 99.7 m, kh = 3.8: 14.1 m).
 #[test]
 fn breaking_wave() {
-    let text = mutate_in(&regular_base(), "height = 4.0", "height = 16.0");
+    let text = replaced(&regular_base(), "height = 4.0", "height = 16.0");
     let msg = bad(&text, "height", "environment.waves.height");
     assert!(msg.contains("breaks"), "{msg}");
     insta::assert_snapshot!(msg);
@@ -394,7 +382,7 @@ fn breaking_wave() {
 
 #[test]
 fn seed_on_a_regular_wave() {
-    let text = mutate_in(
+    let text = replaced(
         &regular_base(),
         "direction = -45.0",
         "direction = -45.0\nseed = 3",

@@ -25,6 +25,21 @@ pub fn line_of(text: &str, needle: &str) -> usize {
     text[..at].matches('\n').count() + 1
 }
 
+/// `text` with the first occurrence of `from` replaced by `to` (which must exist): a valid
+/// base scenario made bad in one place.
+pub fn replaced(text: &str, from: &str, to: &str) -> String {
+    assert!(text.contains(from), "the scenario has no `{from}`");
+    text.replacen(from, to, 1)
+}
+
+/// The error for `text`, a bad value on the line of `needle`: checked to be located there,
+/// to name `key`, and to have a hint and an expected unit or range.
+pub fn bad(text: &str, needle: &str, key: &str) -> String {
+    let msg = error(text);
+    assert_located(&msg, line_of(text, needle), key, true, true);
+    msg
+}
+
 /// Checks the message points at `scenario.toml:LINE:`, names `key` and, if asked, has a hint
 /// and an expected unit or range.
 pub fn assert_located(msg: &str, line: usize, key: &str, hint: bool, expected: bool) {
