@@ -67,10 +67,11 @@ fn snap_peak(elements: usize, order: usize, shock: Real) -> Real {
 }
 
 /// With the sensor (c_s = 0.25) the undamped snap peak settles: 604.7 and 605.8 N on 10 and 20
-/// elements of P = 4 (0.18 % apart) and 607.8 N on 10 of P = 6, all within 0.3 % of their
-/// mean and within 1 % of `fe` on 160 elements (602.6 N). Without it (the modal filter alone)
-/// the same meshes give 601.8, 597.7 and 609.3 N: 0.68 % apart and 1.1 % from their mean, so
-/// this test fails without the sensor.
+/// elements of P = 4 (0.18 % apart; asserted within 0.3 %) and 607.8 N on 10 of P = 6, all
+/// within 0.28 % of their mean (asserted within 0.5 %) and within 1 % of `fe` on 160 elements
+/// (602.6 N). Without it (the modal filter alone) the same meshes give 601.8, 597.7 and
+/// 609.3 N: the P = 4 pair 0.68 % apart and P = 6 1.1 % from their mean, so this test fails
+/// without the sensor.
 #[test]
 fn shock_sensor_settles_the_undamped_snap_peak() {
     let p4 = [snap_peak(10, 4, 0.25), snap_peak(20, 4, 0.25)];

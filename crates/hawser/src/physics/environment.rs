@@ -115,18 +115,7 @@ impl Environment {
     /// at the instantaneous surface η (see [`crate::physics::waves`] for the stretching).
     #[inline]
     pub fn fluid_velocity(&self, position: &Vec3, time: Real) -> Vec3 {
-        match &self.waves {
-            Waves::None if position.z < 0.0 => self.current.velocity(position.z),
-            Waves::None => Vec3::zeros(),
-            Waves::Airy(field) => {
-                let k = field.kinematics(position, time);
-                if k.submerged {
-                    self.current.velocity(position.z) + k.velocity
-                } else {
-                    Vec3::zeros()
-                }
-            }
-        }
+        self.fluid_kinematics(position, time).0
     }
 
     /// Local fluid acceleration ∂u/∂t at a point [m/s²] and time [s]: the waves' (steady
@@ -134,17 +123,14 @@ impl Environment {
     /// terms of Morison's equation take (SPEC §1).
     #[inline]
     pub fn fluid_acceleration(&self, position: &Vec3, time: Real) -> Vec3 {
-        match &self.waves {
-            Waves::None => Vec3::zeros(),
-            Waves::Airy(field) => field.kinematics(position, time).acceleration,
-        }
+        self.fluid_kinematics(position, time).1
     }
 
     /// Fluid velocity [m/s] and local acceleration ∂u/∂t [m/s²] at a point [m] and time [s]
-    /// together: [`Self::fluid_velocity`] and [`Self::fluid_acceleration`] from one sum over
-    /// the wave components instead of two. Morison's equation needs both at every quadrature
-    /// point, and the wave sum is the dominant cost of a line in waves (BENCHMARKS.md, "Wave
-    /// kinematics").
+    /// together, from one sum over the wave components ([`Self::fluid_velocity`] and
+    /// [`Self::fluid_acceleration`] each take one part of it). Morison's equation needs both
+    /// at every quadrature point, and the wave sum is the dominant cost of a line in waves
+    /// (BENCHMARKS.md, "Wave kinematics"): call this once rather than the two.
     #[inline]
     pub fn fluid_kinematics(&self, position: &Vec3, time: Real) -> (Vec3, Vec3) {
         match &self.waves {
