@@ -104,6 +104,23 @@ fn manoeuvre() -> Manoeuvre {
     .unwrap()
 }
 
+/// An observer that hands every sample (time, system, workspace) to a closure.
+struct Probe<'a, F: FnMut(Real, &System, &hawser::system::Workspace)>(&'a mut F);
+
+impl<F: FnMut(Real, &System, &hawser::system::Workspace)> hawser::simulation::Observer
+    for Probe<'_, F>
+{
+    fn sample(
+        &mut self,
+        system: &System,
+        time: Real,
+        _state: &[Real],
+        ws: &hawser::system::Workspace,
+    ) {
+        (self.0)(time, system, ws)
+    }
+}
+
 fn scenario(motion: &str, twin: &str) -> String {
     BASE.replace("MOTION", motion).replace("TWIN", twin)
 }
@@ -258,20 +275,6 @@ fn a_line_on_a_manoeuvring_body_follows_the_body_point() {
         worst_v = worst_v.max((got_v - v).norm());
         samples += 1;
     };
-    struct Probe<'a, F: FnMut(Real, &System, &hawser::system::Workspace)>(&'a mut F);
-    impl<F: FnMut(Real, &System, &hawser::system::Workspace)> hawser::simulation::Observer
-        for Probe<'_, F>
-    {
-        fn sample(
-            &mut self,
-            system: &System,
-            time: Real,
-            _state: &[Real],
-            ws: &hawser::system::Workspace,
-        ) {
-            (self.0)(time, system, ws)
-        }
-    }
     sim.run(s.model.settings.duration, &mut Probe(&mut check))
         .expect("the run completes");
     let end = ship.kinematics(60.0);
@@ -318,7 +321,7 @@ fn relative_position_channels_follow_the_ship_axes() {
     let (ship_yaw, ship_roll, ship_pitch) = (get("ship.yaw"), get("ship.roll"), get("ship.pitch"));
     let offset = Vec3::new(-30.0, 4.0, -2.0);
     let (mut worst, mut turned, mut samples) = (0.0 as Real, 0.0 as Real, 0);
-    let mut check = |sys: &System, ws: &hawser::system::Workspace| {
+    let mut check = |_: Real, sys: &System, ws: &hawser::system::Workspace| {
         let v = |c: [Channel; 3]| Vec3::from(c.map(|c| c.value(sys, ws)));
         let yaw = ship_yaw.value(sys, ws).to_radians();
         assert!(ship_roll.value(sys, ws).abs() < 1e-12 && ship_pitch.value(sys, ws).abs() < 1e-12);
@@ -331,18 +334,6 @@ fn relative_position_channels_follow_the_ship_axes() {
         turned = turned.max((yaw - 30f64.to_radians()).abs());
         samples += 1;
     };
-    struct Probe<'a, F: FnMut(&System, &hawser::system::Workspace)>(&'a mut F);
-    impl<F: FnMut(&System, &hawser::system::Workspace)> hawser::simulation::Observer for Probe<'_, F> {
-        fn sample(
-            &mut self,
-            system: &System,
-            _time: Real,
-            _state: &[Real],
-            ws: &hawser::system::Workspace,
-        ) {
-            (self.0)(system, ws)
-        }
-    }
     sim.run(s.model.settings.duration, &mut Probe(&mut check))
         .expect("the run completes");
     eprintln!(
