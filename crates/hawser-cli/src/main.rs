@@ -456,7 +456,7 @@ fn run(
     let mut writer = RunWriter::create(
         out,
         &system,
-        loaded.channels.clone(),
+        loaded.model.outputs.clone(),
         model.settings.snapshot_interval,
         file,
     )?;

@@ -3,6 +3,7 @@
 //! run goes, so a run that stops early keeps what it wrote, marked incomplete in
 //! `status.json` and `summary.json`.
 
+pub use hawser::analysis::OutputChannel;
 use hawser::analysis::{Channel, RunningStats, SlackSnapDetector};
 use hawser::math::Real;
 use hawser::simulation::Observer;
@@ -11,34 +12,6 @@ use serde_json::{Value, json};
 use std::fs::File;
 use std::io::{BufWriter, Write};
 use std::path::{Path, PathBuf};
-
-/// An output column: a channel and, when the scenario named it (`"FairTen1 = L1.end_b.node_force"`,
-/// or a MoorDyn deck's OUTPUTS), its column name.
-#[derive(Clone, Debug, PartialEq)]
-pub struct OutputChannel {
-    /// What is measured.
-    pub channel: Channel,
-    /// Column name given by the scenario, if any.
-    pub label: Option<String>,
-}
-
-impl OutputChannel {
-    /// An unnamed channel (named after what it measures).
-    pub fn new(channel: Channel) -> Self {
-        Self {
-            channel,
-            label: None,
-        }
-    }
-
-    /// Column name without the unit.
-    pub fn name(&self, system: &System) -> String {
-        match &self.label {
-            Some(l) => l.clone(),
-            None => self.channel.name(system),
-        }
-    }
-}
 
 /// Writes a dynamic run's results into a directory while it runs.
 pub struct RunWriter {

@@ -113,7 +113,7 @@ fn obstacles_read_as_the_core_types_with_their_defaults_and_channels() {
     );
     // Default channels: the force on every obstacle, after the end tensions; then the
     // requested ones.
-    let channels: Vec<Channel> = s.channels.iter().map(|c| c.channel).collect();
+    let channels: Vec<Channel> = s.model.outputs.iter().map(|c| c.channel).collect();
     let force = |obstacle, axis| Channel::ObstacleForce { obstacle, axis };
     assert_eq!(
         channels[2..],
@@ -337,7 +337,7 @@ fn panics_in_contact(text: &str) -> bool {
                 let mut dydt = vec![0.0; y.len()];
                 let mut ws = system.workspace();
                 let _ = system.rhs(1.0, &y, &mut dydt, &mut ws);
-                for c in &s.channels {
+                for c in &s.model.outputs {
                     let _ = c.channel.value_at(&system, &ws, 1.0);
                 }
             }

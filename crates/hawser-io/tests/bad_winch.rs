@@ -82,7 +82,7 @@ fn winch_reads_as_the_core_type_with_its_channels() {
     );
     // Default channels: the end tensions, then the winch line's length and winch tension,
     // then the free point; then the requested ones.
-    let channels: Vec<Channel> = s.channels.iter().map(|c| c.channel).collect();
+    let channels: Vec<Channel> = s.model.outputs.iter().map(|c| c.channel).collect();
     assert_eq!(
         channels[2..4],
         [

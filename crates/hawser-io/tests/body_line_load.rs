@@ -170,8 +170,8 @@ fn run() -> (scenario::LoadedScenario, Record) {
     let mut record = Record {
         samples: Vec::new(),
         min_strain: Vec::new(),
-        channels: s.channels.iter().map(|c| c.channel).collect(),
-        names: s.channels.iter().map(|c| c.name(&system)).collect(),
+        channels: s.model.outputs.iter().map(|c| c.channel).collect(),
+        names: s.model.outputs.iter().map(|c| c.name(&system)).collect(),
     };
     sim.run(s.model.settings.duration, &mut record).unwrap();
     drop(sim);

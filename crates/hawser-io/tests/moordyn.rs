@@ -110,7 +110,8 @@ fn oc3_conventions_are_converted() {
     // OUTPUTS keep their names and mean MoorDyn's |Fnet| of the end node.
     let outs: Vec<_> = d
         .loaded
-        .channels
+        .model
+        .outputs
         .iter()
         .filter(|c| c.label.is_some())
         .collect();
@@ -178,7 +179,7 @@ fn conversion_round_trips_through_toml() {
             format!("{:?}", d.loaded.model),
             "{name}: the converted scenario is not the same model"
         );
-        assert_eq!(back.channels, d.loaded.channels, "{name}");
+        assert_eq!(back.model.outputs, d.loaded.model.outputs, "{name}");
     }
 }
 

@@ -254,7 +254,7 @@ fn a_line_on_a_manoeuvring_body_follows_the_body_point() {
     let system = System::new(&s.model).unwrap();
     let statics = solve(&system, None, &StaticOptions::default()).expect("statics");
     let mut sim = Simulation::new(&system, &s.model.settings, statics.state).unwrap();
-    let channels: Vec<Channel> = s.channels.iter().map(|c| c.channel).collect();
+    let channels: Vec<Channel> = s.model.outputs.iter().map(|c| c.channel).collect();
     let find = |suffix: &str| {
         let n = channels
             .iter()
@@ -308,7 +308,8 @@ fn relative_position_channels_follow_the_ship_axes() {
     let statics = solve(&system, None, &StaticOptions::default()).expect("statics");
     let mut sim = Simulation::new(&system, &s.model.settings, statics.state).unwrap();
     let by_name: std::collections::HashMap<String, Channel> = s
-        .channels
+        .model
+        .outputs
         .iter()
         .map(|c| (c.channel.name(&system), c.channel))
         .collect();
@@ -355,8 +356,8 @@ fn bad_relative_position_channels_are_refused() {
         ("weight.relative_to.weight.x", "relative to itself"),
         ("weight.relative_to.ship.w", "not an axis"),
     ] {
-        let e = scenario::build::parse_channel(name, &s.model).unwrap_err();
+        let e = hawser::analysis::Channel::parse(name, &s.model).unwrap_err();
         assert!(e.contains(needle), "{name}: {e}");
     }
-    assert!(scenario::build::parse_channel("ship.relative_to.towpoint.z", &s.model).is_ok());
+    assert!(hawser::analysis::Channel::parse("ship.relative_to.towpoint.z", &s.model).is_ok());
 }

@@ -3,8 +3,7 @@
 
 use super::diagnostics::{Diagnostic, ScenarioError, closest, line_number};
 use super::schema::*;
-use crate::results::OutputChannel;
-use hawser::analysis::{Channel, Object};
+use hawser::analysis::{Channel, OutputChannel};
 use hawser::math::{Quat, Vec3};
 use hawser::model::*;
 use hawser::physics::environment::{Current, Environment};
@@ -25,13 +24,11 @@ mod bodies;
 mod winch;
 pub use bodies::orientation_from_degrees;
 
-/// A scenario read from a file: the model, its output channels and where things are.
+/// A scenario read from a file: the model (with its output channels) and where things are.
 #[derive(Clone, Debug)]
 pub struct LoadedScenario {
     /// The model.
     pub model: Model,
-    /// Time-series channels (defaults plus `simulation.channels`).
-    pub channels: Vec<OutputChannel>,
     /// Whether `[simulation]` was given.
     pub has_simulation: bool,
     /// Span of `simulation.time_step`, for step errors.
@@ -239,9 +236,10 @@ pub fn build_scenario(
         points,
         bodies,
         settings,
+        outputs: Vec::new(),
     };
     model.settings.release = build_release(&mut b, scenario.simulation.as_ref(), &model);
-    let channels = build_channels(&mut b, scenario.simulation.as_ref(), &model);
+    model.outputs = build_channels(&mut b, scenario.simulation.as_ref(), &model);
     check_steady_tow(&mut b, scenario.simulation.as_ref(), &model);
     if b.errors.is_empty()
         && let Err(e) = model.validate()
@@ -260,7 +258,6 @@ pub fn build_scenario(
     }
     Ok(LoadedScenario {
         model,
-        channels,
         has_simulation: scenario.simulation.is_some(),
         time_step_span,
         format: InputFormat::Toml,
@@ -3535,42 +3532,7 @@ fn build_channels(
     spec: Option<&SimulationSpec>,
     model: &Model,
 ) -> Vec<OutputChannel> {
-    let mut out = Vec::new();
-    for (li, _) in model.lines.iter().enumerate() {
-        for end_b in [false, true] {
-            out.push(OutputChannel::new(Channel::EndTension { line: li, end_b }));
-        }
-    }
-    // A winch line's length and winch tension.
-    for (li, l) in model.lines.iter().enumerate() {
-        if l.winch.is_some() {
-            out.push(OutputChannel::new(Channel::LineLength { line: li }));
-            out.push(OutputChannel::new(Channel::WinchTension { line: li }));
-        }
-    }
-    for (pi, p) in model.points.iter().enumerate() {
-        if matches!(p.kind, PointKind::Free { .. }) {
-            for axis in 0..3 {
-                out.push(OutputChannel::new(Channel::PointPosition {
-                    point: pi,
-                    axis,
-                }));
-            }
-        }
-    }
-    for body in 0..model.bodies.len() {
-        for dof in 0..6 {
-            out.push(OutputChannel::new(Channel::BodyMotion { body, dof }));
-        }
-    }
-    for obstacle in 0..model.environment.obstacles.len() {
-        for axis in 0..3 {
-            out.push(OutputChannel::new(Channel::ObstacleForce {
-                obstacle,
-                axis,
-            }));
-        }
-    }
+    let mut out = hawser::analysis::channels::default_channels(model);
     let Some(sim) = spec else { return out };
     for (ci, c) in sim.channels.iter().enumerate() {
         let (label, spec) = match c.get_ref().split_once('=') {
@@ -3591,7 +3553,7 @@ fn build_channels(
             b.push(d);
             continue;
         }
-        match parse_channel(spec, model) {
+        match Channel::parse(spec, model) {
             Ok(ch) => {
                 let o = OutputChannel { channel: ch, label };
                 // named channels are always recorded; unnamed repeats are dropped
@@ -3652,194 +3614,4 @@ fn build_channels(
         }
     }
     out
-}
-
-/// Parses a channel name against the model.
-pub fn parse_channel(name: &str, model: &Model) -> Result<Channel, String> {
-    let axis = |s: &str| match s {
-        "x" => Some(0),
-        "y" => Some(1),
-        "z" => Some(2),
-        _ => None,
-    };
-    let parts: Vec<&str> = name.split('.').collect();
-    if let Some(li) = model.line_index(parts[0]) {
-        let n = model.lines[li].elements();
-        match parts.as_slice() {
-            [_, "length"] => return Ok(Channel::LineLength { line: li }),
-            [_, "stretched_length"] => return Ok(Channel::LineStretchedLength { line: li }),
-            [_, "stretch"] => return Ok(Channel::LineStretch { line: li }),
-            [_, "winch_tension"] => {
-                if model.lines[li].winch.is_none() {
-                    return Err(format!(
-                        "line `{}` has no winch, so no winch tension",
-                        parts[0]
-                    ));
-                }
-                return Ok(Channel::WinchTension { line: li });
-            }
-            [_, end @ ("end_a" | "end_b"), q] => {
-                let end_b = *end == "end_b";
-                match *q {
-                    "tension" => return Ok(Channel::EndTension { line: li, end_b }),
-                    "node_force" => return Ok(Channel::EndNodeForce { line: li, end_b }),
-                    f if f.len() == 2 && f.starts_with('f') => {
-                        if let Some(a) = axis(&f[1..]) {
-                            return Ok(Channel::EndForce {
-                                line: li,
-                                end_b,
-                                axis: a,
-                            });
-                        }
-                    }
-                    _ => {}
-                }
-            }
-            [_, node, q] if node.starts_with("node") => {
-                let Ok(k) = node[4..].parse::<usize>() else {
-                    return Err(format!("`{node}` is not a node (use node0 … node{n})"));
-                };
-                if k > n {
-                    return Err(format!(
-                        "line `{}` has nodes 0 … {n}; node {k} does not exist",
-                        parts[0]
-                    ));
-                }
-                match *q {
-                    "tension" => return Ok(Channel::NodeTension { line: li, node: k }),
-                    v if v.len() == 2 && v.starts_with('v') => {
-                        if let Some(a) = axis(&v[1..]) {
-                            return Ok(Channel::NodeVelocity {
-                                line: li,
-                                node: k,
-                                axis: a,
-                            });
-                        }
-                    }
-                    p => {
-                        if let Some(a) = axis(p) {
-                            return Ok(Channel::NodePosition {
-                                line: li,
-                                node: k,
-                                axis: a,
-                            });
-                        }
-                    }
-                }
-            }
-            [
-                _,
-                el,
-                quantity @ ("strain" | "curvature" | "bending_moment" | "shear_force"),
-            ] if el.starts_with("element") => {
-                let Ok(k) = el[7..].parse::<usize>() else {
-                    return Err(format!("`{el}` is not an element"));
-                };
-                if k >= n {
-                    return Err(format!(
-                        "line `{}` has elements 0 … {}; element {k} does not exist",
-                        parts[0],
-                        n.saturating_sub(1)
-                    ));
-                }
-                let (line, element) = (li, k);
-                return Ok(match *quantity {
-                    "strain" => Channel::ElementStrain { line, element },
-                    "curvature" => Channel::ElementCurvature { line, element },
-                    "bending_moment" => Channel::ElementBendingMoment { line, element },
-                    _ => Channel::ElementShearForce { line, element },
-                });
-            }
-            _ => {}
-        }
-        return Err(format!("unknown channel `{name}`"));
-    }
-    let find_object = |n: &str| {
-        model.point_index(n).map(Object::Point).or_else(|| {
-            model
-                .bodies
-                .iter()
-                .position(|b| b.name == n)
-                .map(Object::Body)
-        })
-    };
-    if let [o, "relative_to", r, q] = parts.as_slice()
-        && let Some(object) = find_object(o)
-    {
-        let Some(reference) = find_object(r) else {
-            return Err(format!(
-                "`{r}` in `{name}` is no point or body: the reference of a relative position \
-                 is a point (global axes) or a body (its axes)"
-            ));
-        };
-        if reference == object {
-            return Err(format!(
-                "`{name}` is a position relative to itself, always zero"
-            ));
-        }
-        let Some(axis) = axis(q) else {
-            return Err(format!("`{q}` in `{name}` is not an axis: use x, y or z"));
-        };
-        return Ok(Channel::RelativePosition {
-            object,
-            reference,
-            axis,
-        });
-    }
-    if let Some(pi) = model.point_index(parts[0]) {
-        if let [_, q] = parts.as_slice() {
-            if let Some(a) = axis(q) {
-                return Ok(Channel::PointPosition { point: pi, axis: a });
-            }
-            if q.len() == 2
-                && q.starts_with('v')
-                && let Some(a) = axis(&q[1..])
-            {
-                return Ok(Channel::PointVelocity { point: pi, axis: a });
-            }
-            if q.len() == 2
-                && q.starts_with('f')
-                && let Some(a) = axis(&q[1..])
-            {
-                return Ok(Channel::PointForce { point: pi, axis: a });
-            }
-        }
-        return Err(format!("unknown channel `{name}`"));
-    }
-    if let Some(bi) = model.bodies.iter().position(|b| b.name == parts[0]) {
-        if let [_, q] = parts.as_slice() {
-            let find = |names: &[&str; 6]| names.iter().position(|n| n == q);
-            if let Some(dof) = find(&hawser::analysis::BODY_MOTION) {
-                return Ok(Channel::BodyMotion { body: bi, dof });
-            }
-            if let Some(dof) = find(&hawser::analysis::BODY_VELOCITY) {
-                return Ok(Channel::BodyVelocity { body: bi, dof });
-            }
-            if let Some(dof) = find(&hawser::analysis::BODY_LINE_LOAD) {
-                return Ok(Channel::BodyLineLoad { body: bi, dof });
-            }
-        }
-        return Err(format!("unknown channel `{name}`"));
-    }
-    if let Some(oi) = model
-        .environment
-        .obstacles
-        .iter()
-        .position(|o| o.name == parts[0])
-    {
-        if let [_, q] = parts.as_slice() {
-            match *q {
-                "force_x" | "force_y" | "force_z" => {
-                    let axis = axis(&q[6..]).expect("x, y or z");
-                    return Ok(Channel::ObstacleForce { obstacle: oi, axis });
-                }
-                "contact_length" => return Ok(Channel::ObstacleContactLength { obstacle: oi }),
-                _ => {}
-            }
-        }
-        return Err(format!("unknown channel `{name}`"));
-    }
-    Err(format!(
-        "channel `{name}` names no line, point, body or obstacle"
-    ))
 }

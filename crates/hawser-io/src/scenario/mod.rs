@@ -4,7 +4,7 @@ pub mod build;
 pub mod diagnostics;
 pub mod schema;
 
-pub use build::{InputFormat, LoadedScenario, parse_channel};
+pub use build::{InputFormat, LoadedScenario};
 pub use diagnostics::{Diagnostic, ScenarioError};
 
 use std::path::Path;

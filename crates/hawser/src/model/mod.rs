@@ -116,6 +116,9 @@ pub struct Model {
     pub bodies: Vec<Body>,
     /// Simulation settings.
     pub settings: Settings,
+    /// Time-series channels a run records, in column order; empty: the default channels
+    /// ([`crate::analysis::channels::default_channels`]).
+    pub outputs: Vec<crate::analysis::OutputChannel>,
 }
 
 impl Model {

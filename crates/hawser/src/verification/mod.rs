@@ -439,6 +439,7 @@ pub fn single_line(
         points: vec![a, b],
         bodies: Vec::new(),
         settings: Settings::default(),
+        outputs: Vec::new(),
     }
 }
 
