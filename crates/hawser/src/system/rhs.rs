@@ -1,0 +1,407 @@
+//! The right-hand side of the equations of motion: point and body kinematics, line forces and
+//! mass blocks, the coupled solve, and dy/dt.
+
+use super::*;
+use crate::formulation::dg::{EndState, Translation};
+use crate::formulation::{LoadOptions, line_forces};
+use crate::linalg::EndKind;
+use crate::math::{Mat3, Real, Vec3, get3, set3};
+use crate::model::PointKind;
+use crate::physics::environment::Environment;
+
+/// Seabed contact of a free point: a sphere of the point's displaced volume pressing on the
+/// bed with the ground stiffness K_g over its projected area, k = K_g π r² [N/m], damped at
+/// the seabed's damping ratio of the point's own critical damping, with sliding friction
+/// μ N tanh(π|v_xy|/v_μ) (the line contact of DG paper eqs. 15–16 applied to a sphere).
+#[derive(Clone, Copy, Debug)]
+pub(super) struct SphereContact {
+    radius: Real,
+    stiffness: Real,
+    damping: Real,
+}
+
+impl SphereContact {
+    /// The contact of a free point with a volume V (mass with added mass m), modelled as a
+    /// sphere of that volume; `None` for other points, without a seabed, or without a volume
+    /// (a joint or a point mass has no extent to rest on).
+    pub(super) fn new(env: &Environment, kind: &PointKind) -> Option<Self> {
+        let PointKind::Free {
+            mass,
+            volume,
+            added_mass_coefficient,
+            ..
+        } = kind
+        else {
+            return None;
+        };
+        let m = mass + env.water_density * volume * added_mass_coefficient;
+        if !(env.depth.is_finite() && env.seabed.stiffness > 0.0 && *volume > 0.0 && *mass > 0.0) {
+            return None;
+        }
+        let radius = (3.0 * volume / (4.0 * std::f64::consts::PI)).cbrt();
+        let stiffness = env.seabed.stiffness * std::f64::consts::PI * radius * radius;
+        Some(Self {
+            radius,
+            stiffness,
+            damping: env.seabed.damping_of_area(
+                std::f64::consts::PI * radius * radius,
+                stiffness,
+                m,
+            ),
+        })
+    }
+
+    pub(super) fn force(
+        &self,
+        bed_z: Real,
+        position: &Vec3,
+        velocity: &Vec3,
+        seabed: &crate::physics::seabed::Seabed,
+    ) -> Vec3 {
+        let penetration = bed_z - (position.z - self.radius);
+        if penetration <= 0.0 {
+            return Vec3::zeros();
+        }
+        let normal = self.stiffness * penetration - self.damping * velocity.z;
+        let mut f = Vec3::new(0.0, 0.0, normal);
+        let vxy = Vec3::new(velocity.x, velocity.y, 0.0);
+        let speed = vxy.norm();
+        if seabed.friction_coefficient > 0.0 && speed > 0.0 && normal > 0.0 {
+            f -= vxy * (seabed.friction(speed, normal, 1.0) / speed);
+        }
+        f
+    }
+}
+
+impl System {
+    /// Updates the point kinematics at time t from the state (positions and velocities).
+    /// The free end of a `dg` line keeps the kinematics its line gave it in the last
+    /// evaluation ([`System::evaluate_dg_lines`]).
+    /// Bodies first: free ones from the state (accelerations from the last solve are kept
+    /// only by [`System::rhs`]), prescribed ones from their motion; points on bodies follow.
+    pub fn point_kinematics(&self, t: Real, y: &[Real], ws: &mut Workspace) {
+        for (b, body) in self.bodies.iter().enumerate() {
+            ws.bodies[b] = match (&body.body.kind, self.layout.body_offset[b]) {
+                (_, Some(o)) => crate::bodies::read_state(&y[o..o + crate::bodies::STATE_LEN]),
+                (crate::model::BodyKind::Prescribed(m), None) => m.kinematics(t),
+                (crate::model::BodyKind::Free, None) => body.initial_kinematics(),
+            };
+        }
+        for (i, p) in self.points.iter().enumerate() {
+            if p.line_end.is_some() {
+                continue;
+            }
+            ws.points[i] = match &p.kind {
+                PointKind::Fixed => PointKinematics {
+                    position: p.position,
+                    ..Default::default()
+                },
+                PointKind::Prescribed(m) => {
+                    let (position, velocity, acceleration) = m.kinematics(t);
+                    PointKinematics {
+                        position,
+                        velocity,
+                        acceleration,
+                    }
+                }
+                PointKind::Free { .. } => {
+                    let o = self.layout.point_offset[i].expect("free point has a state block");
+                    PointKinematics {
+                        position: get3(y, o / 3),
+                        velocity: get3(y, o / 3 + 1),
+                        acceleration: Vec3::zeros(),
+                    }
+                }
+                PointKind::Body { body, offset } => {
+                    let (position, velocity, acceleration) = ws.bodies[*body].point(offset);
+                    PointKinematics {
+                        position,
+                        velocity,
+                        acceleration,
+                    }
+                }
+            };
+        }
+    }
+
+    /// Fills each line's node positions and velocities from the state and its ends.
+    /// `dg` lines fill theirs in [`System::evaluate_dg_lines`].
+    pub fn gather_lines(&self, y: &[Real], ws: &mut Workspace) {
+        for (li, l) in self.lines.iter().enumerate() {
+            if l.dg.is_some() {
+                continue;
+            }
+            let n = l.vectors() - 1;
+            let o = self.layout.line_offset[li];
+            let m = self.layout.line_interior[li];
+            let lw = &mut ws.lines[li];
+            lw.position[0] = ws.points[l.end_a].position;
+            lw.velocity[0] = ws.points[l.end_a].velocity;
+            lw.position[n] = ws.points[l.end_b].position;
+            lw.velocity[n] = ws.points[l.end_b].velocity;
+            for i in 1..n {
+                lw.position[i] = get3(&y[o..], i - 1);
+                lw.velocity[i] = get3(&y[o + 3 * m..], i - 1);
+            }
+        }
+    }
+
+    /// Forces of a free point's own physics [N] (weight, buoyancy, drag, external force) and
+    /// its own mass matrix [kg] (mass plus added mass when submerged).
+    pub fn point_own_load(
+        &self,
+        p: usize,
+        k: &PointKinematics,
+        t: Real,
+        load_factor: Real,
+    ) -> (Vec3, Mat3) {
+        let PointKind::Free {
+            mass,
+            volume,
+            drag_area,
+            added_mass_coefficient,
+            force,
+        } = &self.points[p].kind
+        else {
+            return (Vec3::zeros(), Mat3::zeros());
+        };
+        let env = &self.environment;
+        let rho = env.fluid_density(k.position.z);
+        let submerged = k.position.z < 0.0;
+        let mut f = Vec3::new(0.0, 0.0, -mass * env.gravity) + force * load_factor;
+        let mut m = *mass;
+        let (uw, aw) = env.fluid_kinematics(&k.position, t);
+        if submerged {
+            f.z += rho * volume * env.gravity;
+            m += rho * volume * added_mass_coefficient;
+            f += aw * (rho * volume * (1.0 + added_mass_coefficient));
+        }
+        let rel = uw * load_factor - k.velocity;
+        f += rel * (0.5 * rho * drag_area * rel.norm());
+        if let Some(contact) = &self.points[p].seabed_contact {
+            f += contact.force(env.seabed_z(), &k.position, &k.velocity, &env.seabed);
+        }
+        (f, Mat3::identity() * m)
+    }
+
+    /// Right-hand side of the equations of motion: dy/dt at (t, y).
+    ///
+    /// Lines: M a = F with M block-tridiagonal (consistent) or block-diagonal (lumped); free
+    /// points: (m_p + added mass + the line ends' mass) a_p = F_p + Σ line end forces. Solved
+    /// together in O(nodes) by [`CoupledSystem`]. `dg` lines are evaluated first, with their
+    /// ends' kinematics at t ([`System::evaluate_dg_lines`]): their flux tractions enter the
+    /// points' forces and their ends add no mass (explicit coupling, DG paper §3.3).
+    pub fn rhs(
+        &self,
+        t: Real,
+        y: &[Real],
+        dydt: &mut [Real],
+        ws: &mut Workspace,
+    ) -> Result<(), Location> {
+        self.point_kinematics(t, y, ws);
+        self.evaluate_dg_lines(t, y, dydt, ws);
+        self.assemble_loads(t, y, ws);
+        ws.coupled
+            .solve(&mut ws.blocks)
+            .map_err(|s| self.singular_location(s))?;
+        // Write dy/dt.
+        for (li, l) in self.lines.iter().enumerate() {
+            if l.dg.is_some() {
+                continue;
+            }
+            let o = self.layout.line_offset[li];
+            let m = self.layout.line_interior[li];
+            let lw = &ws.lines[li];
+            let acc = &ws.blocks[li].x;
+            for i in 1..l.vectors() - 1 {
+                set3(&mut dydt[o..], i - 1, &lw.velocity[i]);
+                set3(&mut dydt[o + 3 * m..], i - 1, &acc[i]);
+            }
+        }
+        for (f, &p) in self.free_points.iter().enumerate() {
+            let o = self.layout.point_offset[p].expect("free point");
+            set3(&mut dydt[o..], 0, &ws.points[p].velocity);
+            set3(&mut dydt[o..], 1, &ws.coupled.point_x[f]);
+            ws.points[p].acceleration = ws.coupled.point_x[f];
+        }
+        for (f, &b) in self.free_bodies.iter().enumerate() {
+            let o = self.layout.body_offset[b].expect("free body");
+            let u = ws.coupled.body_x[f];
+            let k = &mut ws.bodies[b];
+            k.acceleration = Vec3::new(u[0], u[1], u[2]);
+            k.angular_acceleration = Vec3::new(u[3], u[4], u[5]);
+            crate::bodies::write_rate(
+                k,
+                &k.acceleration,
+                &k.angular_acceleration,
+                &mut dydt[o..o + crate::bodies::STATE_LEN],
+            );
+        }
+        for (p, slot) in self.point_slot.iter().enumerate() {
+            if let Some(s) = slot {
+                ws.points[p].acceleration = ws.coupled.slot_x[*s];
+            }
+        }
+        Ok(())
+    }
+
+    /// Evaluates every `dg` line at (t, y) with its ends' kinematics from `ws.points` (filled
+    /// by [`System::point_kinematics`]): writes its state's rate into `dydt`, its end loads
+    /// (the force on each attachment [N]) into `ws.lines[l].force[0]` and `[N]`, its node
+    /// outputs into `ws.lines[l]`, and the kinematics of a free end's point.
+    pub fn evaluate_dg_lines(&self, t: Real, y: &[Real], dydt: &mut [Real], ws: &mut Workspace) {
+        for (li, l) in self.lines.iter().enumerate() {
+            let (Some(dg), Some(dws)) = (&l.dg, ws.dg[li].as_mut()) else {
+                continue;
+            };
+            let range =
+                self.layout.line_offset[li]..self.layout.line_offset[li] + self.layout.line_len[li];
+            let end_state = |side: usize, p: usize| {
+                let k = &ws.points[p];
+                let force = match (&self.points[p].kind, dg.ends[side].translation) {
+                    (PointKind::Free { force, .. }, Translation::Force) => *force,
+                    _ => Vec3::zeros(),
+                };
+                EndState {
+                    position: k.position,
+                    velocity: k.velocity,
+                    acceleration: k.acceleration,
+                    force,
+                    moment: Vec3::zeros(),
+                    direction: l.clamp[side].unwrap_or_else(Vec3::zeros),
+                    direction_rate: Vec3::zeros(),
+                }
+            };
+            let ends = [end_state(0, l.end_a), end_state(1, l.end_b)];
+            let loads = dg.rhs(
+                &self.environment,
+                t,
+                &y[range.clone()],
+                &ends,
+                &mut dydt[range.clone()],
+                dws,
+            );
+            let n = l.mesh.elements();
+            let lw = &mut ws.lines[li];
+            dg.sample(
+                &y[range],
+                dws,
+                &loads,
+                &mut lw.position,
+                &mut lw.velocity,
+                &mut lw.node_tension,
+                &mut lw.elements,
+            );
+            lw.force[0] = loads[0].force;
+            lw.force[n] = loads[1].force;
+            for (side, p) in [(0, l.end_a), (1, l.end_b)] {
+                if self.points[p].line_end.is_some() {
+                    let node = if side == 0 { 0 } else { n };
+                    ws.points[p] = PointKinematics {
+                        position: lw.position[node],
+                        velocity: lw.velocity[node],
+                        acceleration: Vec3::zeros(),
+                    };
+                }
+            }
+        }
+    }
+
+    /// The equations of motion at (t, y), assembled but not solved: point kinematics (free
+    /// points from the state, others from their motion, with their accelerations), node
+    /// positions and velocities, node forces `ws.lines[l].force` and mass blocks
+    /// `ws.blocks[l]` (whose `x` holds the forces, with the known accelerations at ends on
+    /// fixed or prescribed points), and each free point's own load and mass in
+    /// `ws.coupled.point_x`, `ws.coupled.point_diag`.
+    pub fn assemble(&self, t: Real, y: &[Real], ws: &mut Workspace) {
+        self.point_kinematics(t, y, ws);
+        self.assemble_loads(t, y, ws);
+    }
+
+    /// [`System::assemble`] after [`System::point_kinematics`] (and, for `dg` lines,
+    /// [`System::evaluate_dg_lines`]) at the same (t, y).
+    fn assemble_loads(&self, t: Real, y: &[Real], ws: &mut Workspace) {
+        self.update_winches(t, ws);
+        self.gather_lines(y, ws);
+        let options = LoadOptions {
+            current_factor: 1.0,
+        };
+        for (li, l) in self.lines.iter().enumerate() {
+            let lw = &mut ws.lines[li];
+            let blocks = &mut ws.blocks[li];
+            if l.dg.is_some() {
+                // The end tractions of the last `dg` evaluation, as forces on the points.
+                let n = l.vectors() - 1;
+                blocks.x[0] = match blocks.end_a {
+                    EndKind::Known => ws.points[l.end_a].acceleration,
+                    _ => lw.force[0],
+                };
+                blocks.x[1] = match blocks.end_b {
+                    EndKind::Known => ws.points[l.end_b].acceleration,
+                    _ => lw.force[n],
+                };
+                continue;
+            }
+            let mesh = match &ws.winches[li] {
+                Some(w) => &w.mesh,
+                None => &l.mesh,
+            };
+            line_forces(
+                mesh,
+                &l.kind,
+                &self.environment,
+                t,
+                &lw.position,
+                &lw.velocity,
+                &mut lw.force,
+                &mut lw.elements,
+                Some(blocks),
+                options,
+            );
+            let n = l.vectors() - 1;
+            blocks.x.copy_from_slice(&lw.force);
+            l.apply_clamps(blocks);
+            if blocks.end_a == EndKind::Known {
+                blocks.x[0] = ws.points[l.end_a].acceleration;
+            }
+            if blocks.end_b == EndKind::Known {
+                blocks.x[n] = ws.points[l.end_b].acceleration;
+            }
+        }
+        for (f, &p) in self.free_points.iter().enumerate() {
+            let (force, mass) = self.point_own_load(p, &ws.points[p], t, 1.0);
+            ws.coupled.point_x[f] = force;
+            ws.coupled.point_diag[f] = mass;
+        }
+        self.assemble_bodies(t, ws);
+    }
+
+    /// Each free body's own loads and 6×6 mass as its block of the coupled system, and the
+    /// offsets and centripetal accelerations of its points' slots. (A prescribed body's own
+    /// loads do not enter the equations: its points are known ends.)
+    fn assemble_bodies(&self, t: Real, ws: &mut Workspace) {
+        for (f, &b) in self.free_bodies.iter().enumerate() {
+            let loads = self.bodies[b]
+                .body
+                .loads(&ws.bodies[b], &self.environment, t);
+            ws.coupled.body_diag[f] = loads.mass;
+            ws.coupled.body_x[f] = loads.generalized();
+        }
+        let np = self.free_points.len();
+        for (p, slot) in self.point_slot.iter().enumerate() {
+            let (Some(s), PointKind::Body { body, offset }) = (slot, &self.points[p].kind) else {
+                continue;
+            };
+            let k = &ws.bodies[*body];
+            let rho = k.orientation * offset;
+            let w = k.angular_velocity;
+            ws.coupled.body_slots[s - np] = crate::linalg::BodySlot {
+                body: self.bodies[*body]
+                    .free_index
+                    .expect("a slot is on a free body"),
+                offset: rho,
+                bias: w.cross(&w.cross(&rho)),
+            };
+        }
+    }
+}

@@ -1,0 +1,150 @@
+//! The scratch of the right-hand side, sized once at assembly: no allocation in the time loop.
+
+use super::*;
+use crate::formulation::dg::DgWorkspace;
+use crate::formulation::{ElementState, Mesh};
+use crate::linalg::{CoupledSystem, EndKind, LineBlocks};
+use crate::math::{Real, Vec3};
+
+/// Scratch of one line, sized once.
+#[derive(Clone, Debug)]
+pub struct LineWork {
+    /// Node positions [m], ends included.
+    pub position: Vec<Vec3>,
+    /// Node velocities [m/s].
+    pub velocity: Vec<Vec3>,
+    /// Node forces [N] from the line's physics.
+    pub force: Vec<Vec3>,
+    /// Element tension and strain.
+    pub elements: ElementState,
+    /// Tension at the nodes [N] (`dg` only: at the element ends, the mean of the two sides'
+    /// values at an interface).
+    pub node_tension: Vec<Real>,
+}
+
+/// The current state of a line on a winch, updated at the start of every evaluation
+/// ([`System::update_winches`]).
+#[derive(Clone, Debug)]
+pub struct WinchWork {
+    /// The line's mesh rescaled to the current unstretched length L(t), with σ = L̇/L.
+    pub mesh: Mesh,
+    /// Unstretched length at t = 0, L(0) [m].
+    pub initial_length: Real,
+    /// Current unstretched length L(t) = L(0) + payout [m].
+    pub length: Real,
+    /// Payout, its rate and acceleration at the time of the last evaluation.
+    pub state: crate::model::WinchState,
+}
+
+/// All scratch of the right-hand side, sized once: no allocation in the time loop.
+#[derive(Clone, Debug)]
+pub struct Workspace {
+    /// Per line.
+    pub lines: Vec<LineWork>,
+    /// Per line: mass blocks; after a solve, `x` holds node accelerations [m/s²].
+    pub blocks: Vec<LineBlocks>,
+    /// Per point.
+    pub points: Vec<PointKinematics>,
+    /// Shared-point system.
+    pub coupled: CoupledSystem,
+    /// Per line: the `dg` scratch (`None` for other formulations).
+    pub dg: Vec<Option<DgWorkspace>>,
+    /// Per body: its kinematics (free bodies: accelerations solved by the last evaluation).
+    pub bodies: Vec<crate::model::RigidKinematics>,
+    /// Per line: the current mesh and length of a line on a winch (`None` for other lines).
+    pub winches: Vec<Option<WinchWork>>,
+}
+
+impl System {
+    /// Scratch for this system.
+    pub fn workspace(&self) -> Workspace {
+        let end_kind = |p: usize| match (self.points[p].free_index, self.point_slot[p]) {
+            (Some(f), _) => EndKind::Free(f),
+            (None, Some(s)) => EndKind::Free(s),
+            (None, None) => EndKind::Known,
+        };
+        let lines = self
+            .lines
+            .iter()
+            .map(|l| {
+                let n = l.mesh.elements();
+                let m = l.vectors();
+                LineWork {
+                    position: vec![Vec3::zeros(); m],
+                    velocity: vec![Vec3::zeros(); m],
+                    force: vec![Vec3::zeros(); m],
+                    elements: ElementState::new(n),
+                    node_tension: vec![0.0; if l.dg.is_some() { n + 1 } else { 0 }],
+                }
+            })
+            .collect();
+        let blocks = self
+            .lines
+            .iter()
+            .map(|l| {
+                LineBlocks::banded(
+                    l.block_vectors(),
+                    l.kind.bandwidth(),
+                    end_kind(l.end_a),
+                    end_kind(l.end_b),
+                    l.kind.consistent_mass(),
+                )
+            })
+            .collect();
+        Workspace {
+            lines,
+            blocks,
+            points: vec![PointKinematics::default(); self.points.len()],
+            coupled: CoupledSystem::with_bodies(
+                self.free_points.len(),
+                self.free_bodies.len(),
+                self.point_slot.iter().flatten().count(),
+            ),
+            dg: self
+                .lines
+                .iter()
+                .map(|l| l.dg.as_deref().map(DgWorkspace::new))
+                .collect(),
+            bodies: self.bodies.iter().map(|b| b.initial_kinematics()).collect(),
+            winches: self
+                .lines
+                .iter()
+                .map(|l| {
+                    l.winch.as_ref().map(|_| WinchWork {
+                        mesh: l.mesh.clone(),
+                        initial_length: l.mesh.length(),
+                        length: l.mesh.length(),
+                        state: Default::default(),
+                    })
+                })
+                .collect(),
+        }
+    }
+
+    /// Sets every winch line's current mesh to its unstretched length at time t [s]:
+    /// L(t) = L(0) + payout(t), each element l₀(t) = l₀(0) L(t)/L(0), σ = L̇/L
+    /// ([`Mesh::rescale`]). Called at the start of every evaluation; no allocation.
+    pub fn update_winches(&self, t: Real, ws: &mut Workspace) {
+        for (l, w) in self.lines.iter().zip(ws.winches.iter_mut()) {
+            let (Some(winch), Some(w)) = (&l.winch, w.as_mut()) else {
+                continue;
+            };
+            let state = winch.state(t);
+            let length = w.initial_length + state.payout;
+            w.state = state;
+            w.length = length;
+            w.mesh
+                .rescale(&l.mesh, length / w.initial_length, state.rate / length);
+        }
+    }
+
+    /// The current mesh of a line: for a line on a winch, rescaled to its length at the
+    /// time of the last evaluation in `ws`; otherwise the line's own.
+    #[inline]
+    pub fn line_mesh<'a>(&'a self, ws: &'a Workspace, line: usize) -> &'a Mesh {
+        match &ws.winches[line] {
+            Some(w) => &w.mesh,
+            None => &self.lines[line].mesh,
+        }
+    }
+}
