@@ -3,12 +3,12 @@
 
 use anyhow::{Context, Result};
 use clap::{Parser, Subcommand};
+use hawser::SimulationError;
 use hawser::math::Real;
-use hawser::model::{InitialCondition, MassMatrix, Model, TimeStep};
-use hawser::simulation::{Observer, Simulation};
-use hawser::statics::{StaticOptions, StaticSolution};
+use hawser::model::{MassMatrix, Model, TimeStep};
+use hawser::session::{Observer, ObserverError, RunEnd, Session, SessionOptions, View};
+use hawser::statics::StaticOptions;
 use hawser::system::{System, Workspace};
-use hawser::{SimulationError, StaticsError};
 use hawser_io::results::{RunWriter, statics_json};
 use hawser_io::scenario::{self, Diagnostic, InputFormat, LoadedScenario};
 use indicatif::{ProgressBar, ProgressStyle};
@@ -326,39 +326,15 @@ fn step_error(file: &Path, loaded: &LoadedScenario, e: &SimulationError) -> Stri
     e.to_string()
 }
 
-fn initial_state(
-    system: &System,
-    model: &Model,
-) -> Result<(Vec<Real>, Option<StaticSolution>), StaticsError> {
-    match model.settings.initial_condition {
-        InitialCondition::Statics => {
-            let sol =
-                hawser::statics::solve_with_release(model, system, &StaticOptions::default())?;
-            Ok((sol.state.clone(), Some(sol)))
-        }
-        InitialCondition::SteadyTow => {
-            // The system carries the tow velocity: its statics are the steady tow.
-            let sol = hawser::statics::solve(system, None, &StaticOptions::default())?;
-            Ok((sol.state.clone(), Some(sol)))
-        }
-        InitialCondition::AsDefined => {
-            let mut ws = system.workspace();
-            let mut y = system.straight_state();
-            hawser::statics::catenary_seed(system, &mut y, &mut ws);
-            Ok((y, None))
-        }
-    }
-}
-
-struct Progress<'a> {
-    writer: &'a mut RunWriter,
+/// Shows progress while a run goes: the bar on a terminal.
+struct Progress {
     bar: Option<ProgressBar>,
     start: Instant,
 }
 
-impl Observer for Progress<'_> {
-    fn sample(&mut self, system: &System, time: Real, state: &[Real], ws: &Workspace) {
-        self.writer.sample(system, time, state, ws);
+impl Observer for Progress {
+    fn sample(&mut self, view: &View<'_>) -> Result<(), ObserverError> {
+        let time = view.time;
         if let Some(bar) = &self.bar {
             let wall = self.start.elapsed().as_secs_f64();
             bar.set_position((time * 1000.0) as u64);
@@ -366,6 +342,38 @@ impl Observer for Progress<'_> {
                 bar.set_message(format!("t = {time:.2} s, {:.1}× real time", time / wall));
             }
         }
+        Ok(())
+    }
+
+    fn finish(&mut self, _: &View<'_>, _: &RunEnd) -> Result<(), ObserverError> {
+        if let Some(bar) = self.bar.take() {
+            bar.finish_and_clear();
+        }
+        Ok(())
+    }
+}
+
+/// Builds the session of a loaded scenario: exit code 2 for a step refused at the
+/// `time_step` key, 1 for failed statics (both already reported).
+fn session_of(
+    file: &Path,
+    loaded: &LoadedScenario,
+    options: SessionOptions,
+) -> Result<std::result::Result<Session, ExitCode>> {
+    match Session::with_options(loaded.model.clone(), options) {
+        Ok(s) => Ok(Ok(s)),
+        Err(SimulationError::Statics(e)) => {
+            eprintln!("error: {e}");
+            Ok(Err(ExitCode::from(1)))
+        }
+        Err(e @ SimulationError::StepTooLarge { .. }) => {
+            eprintln!("{}", step_error(file, loaded, &e));
+            Ok(Err(ExitCode::from(2)))
+        }
+        Err(SimulationError::Model(e)) => {
+            Err(anyhow::Error::new(e).context("the model is invalid"))
+        }
+        Err(e) => Err(e.into()),
     }
 }
 
@@ -376,7 +384,7 @@ fn run(
     allow_unstable_step: bool,
     deck: &DeckArgs,
 ) -> Result<ExitCode> {
-    let Some(mut loaded) = load_with(file, deck, quiet) else {
+    let Some(loaded) = load_with(file, deck, quiet) else {
         return Ok(ExitCode::from(2));
     };
     if !loaded.has_simulation {
@@ -386,26 +394,24 @@ fn run(
         );
         return Ok(ExitCode::from(2));
     }
-    let system = system_of(&loaded.model)?;
-    if let Some((dt, limit, culprit)) = deck_step_above_limit(&loaded, &system)
-        && !allow_unstable_step
-    {
+    let t0 = Instant::now();
+    let options = SessionOptions {
+        allow_unstable_step,
+        ..Default::default()
+    };
+    let mut session = match session_of(file, &loaded, options)? {
+        Ok(s) => s,
+        Err(code) => return Ok(code),
+    };
+    if let Some(f) = session.step_fallback() {
         eprintln!(
-            "warning: the deck's dtM = {dt} s is above hawser's stability limit {limit:.4e} s \
-             (set by {culprit}); using time_step = \"auto\""
+            "warning: the deck's dtM = {} s is above hawser's stability limit {:.4e} s \
+             (set by {}); using time_step = \"auto\"",
+            f.requested, f.limit, f.culprit
         );
-        loaded.model.settings.time_step = TimeStep::Auto;
     }
     let model = &loaded.model;
-    let t0 = Instant::now();
-    let (y0, sol) = match initial_state(&system, model) {
-        Ok(x) => x,
-        Err(e) => {
-            eprintln!("error: {e}");
-            return Ok(ExitCode::from(1));
-        }
-    };
-    if let Some(sol) = &sol
+    if let Some(sol) = session.initial_statics()
         && !quiet
     {
         eprintln!(
@@ -416,50 +422,43 @@ fn run(
             t0.elapsed().as_secs_f64()
         );
     }
-    let built = if allow_unstable_step {
-        Simulation::new_unchecked(&system, &model.settings, y0)
-    } else {
-        Simulation::new(&system, &model.settings, y0)
-    };
-    let mut sim = match built {
-        Ok(s) => s,
-        Err(e) => {
-            eprintln!("{}", step_error(file, &loaded, &e));
-            return Ok(ExitCode::from(2));
-        }
-    };
-    if sim.step > sim.stable_step.0 {
+    let (limit, culprit) = session.stable_step();
+    let (limit, culprit) = (limit, culprit.to_string());
+    if session.step_size() > limit {
         eprintln!(
             "warning: time step {:.4e} s is above the stability estimate {:.4e} s ({}); --allow-unstable-step is set",
-            sim.step, sim.stable_step.0, sim.stable_step.1
+            session.step_size(),
+            limit,
+            culprit
         );
     }
-    if (sim.sample_interval() - model.settings.output_interval).abs()
+    if (session.sample_interval() - model.settings.output_interval).abs()
         > 1e-9 * model.settings.output_interval
     {
         eprintln!(
             "note: output_interval {} s is not a whole number of {} s steps; sampling every {} s",
             model.settings.output_interval,
-            sim.step,
-            sim.sample_interval()
+            session.step_size(),
+            session.sample_interval()
         );
     }
     if !quiet {
         eprintln!(
             "time step {:.4e} s (stability limit {:.4e} s, set by {}), {} steps",
-            sim.step,
-            sim.stable_step.0,
-            sim.stable_step.1,
-            (model.settings.duration / sim.step).ceil()
+            session.step_size(),
+            limit,
+            culprit,
+            (model.settings.duration / session.step_size()).ceil()
         );
     }
-    let mut writer = RunWriter::create(
+    let writer = RunWriter::create(
         out,
-        &system,
-        loaded.model.outputs.clone(),
+        session.system(),
+        session.channels(),
         model.settings.snapshot_interval,
         file,
     )?;
+    session.attach(writer);
     let bar = (!quiet).then(|| {
         let bar = ProgressBar::new((model.settings.duration * 1000.0) as u64);
         bar.set_style(
@@ -471,40 +470,26 @@ fn run(
         bar
     });
     let start = Instant::now();
-    let mut progress = Progress {
-        writer: &mut writer,
-        bar,
-        start,
-    };
-    let result = sim.run(model.settings.duration, &mut progress);
-    if let Some(bar) = progress.bar.take() {
-        bar.finish_and_clear();
-    }
+    session.attach(Progress { bar, start });
+    let result = session.run();
     let wall = start.elapsed().as_secs_f64();
-    let ws = sim
-        .evaluate()
-        .ok()
-        .cloned()
-        .unwrap_or_else(|| system.workspace());
+    session.finish(result.as_ref().err())?;
     match result {
         Ok(()) => {
-            writer.finish(&system, &sim.state, &ws, None)?;
             if !quiet {
                 eprintln!(
                     "done: {:.2} s simulated in {wall:.2} s ({:.1}× real time); results in {}",
-                    sim.time,
-                    sim.time / wall.max(1e-9),
+                    session.time(),
+                    session.time() / wall.max(1e-9),
                     out.display()
                 );
             }
             Ok(ExitCode::SUCCESS)
         }
         Err(e) => {
-            let msg = e.to_string();
-            let last = writer.last_time();
-            writer.finish(&system, &sim.state, &ws, Some(&msg))?;
             eprintln!(
-                "error: {msg}\n  = results up to t = {last:.6} s are in {} (marked incomplete)",
+                "error: {e}\n  = results up to t = {:.6} s are in {} (marked incomplete)",
+                session.last_sample_time(),
                 out.display()
             );
             Ok(ExitCode::from(1))
@@ -685,11 +670,6 @@ fn check(file: &Path, deck: &DeckArgs) -> Result<ExitCode> {
     Ok(ExitCode::SUCCESS)
 }
 
-struct Null;
-impl Observer for Null {
-    fn sample(&mut self, _: &System, _: Real, _: &[Real], _: &Workspace) {}
-}
-
 /// What `hawser bench` varies: mass matrix, formulation, scheme (as given on the command line).
 struct BenchChoice<'a> {
     mass: &'a str,
@@ -830,27 +810,29 @@ fn bench(
         // The start of a `--waves` case is the equilibrium in calm water (its sea has no
         // ramp: the statics of rigid bodies under a full irregular sea at t = 0 do not
         // converge), from which the sea acts at once.
+        let statics = StaticOptions::default();
         let y0 = if wave_case == bench_cases::WaveCase::AsIs {
-            initial_state(&system, &model)
+            hawser::session::initial_state(&system, &model, &statics)
         } else {
             let mut calm = model.clone();
             calm.environment.waves = hawser::physics::waves::Waves::None;
-            initial_state(&system_of(&calm)?, &calm)
+            hawser::session::initial_state(&system_of(&calm)?, &calm, &statics)
         }
         .map_err(|e| anyhow::anyhow!("{e}"))?
         .0;
         // Best of `repeat` runs from the same initial state.
-        let mut best: Option<(Simulation, f64)> = None;
+        let mut best: Option<(Session, f64)> = None;
         for _ in 0..choice.repeat.max(1) {
-            let mut sim = match Simulation::new(&system, &model.settings, y0.clone()) {
-                Ok(s) => s,
-                Err(e) => {
-                    eprintln!("{}", step_error(file, &loaded, &e));
-                    return Ok(ExitCode::from(2));
-                }
-            };
+            let mut sim =
+                match Session::from_state(model.clone(), y0.clone(), SessionOptions::default()) {
+                    Ok(s) => s,
+                    Err(e) => {
+                        eprintln!("{}", step_error(file, &loaded, &e));
+                        return Ok(ExitCode::from(2));
+                    }
+                };
             let start = Instant::now();
-            sim.run(model.settings.duration, &mut Null)?;
+            sim.run()?;
             let wall = start.elapsed().as_secs_f64();
             if best.as_ref().is_none_or(|(_, w)| wall < *w) {
                 best = Some((sim, wall));
@@ -880,7 +862,7 @@ fn bench(
             "stable_step": limit,
             "mass_matrix": format!("{mass:?}").to_lowercase(),
             "nodes": nodes,
-            "time_step": sim.step,
+            "time_step": sim.step_size(),
             "steps": steps,
             "duration": model.settings.duration,
             "wall_s": wall,

@@ -166,6 +166,7 @@ fn point_kind(system: &System, p: usize) -> &'static str {
     match system.points[p].kind {
         PointKind::Fixed => "fixed",
         PointKind::Prescribed(_) => "prescribed",
+        PointKind::Coupled => "coupled",
         PointKind::Free { .. } => "free",
         PointKind::Body { .. } => "on a body",
     }

@@ -1756,13 +1756,12 @@ struct Probe {
 impl hawser::simulation::Observer for Probe {
     fn sample(
         &mut self,
-        system: &hawser::System,
-        time: Real,
-        _: &[Real],
-        ws: &hawser::system::Workspace,
-    ) {
+        view: &hawser::session::View<'_>,
+    ) -> Result<(), hawser::session::ObserverError> {
+        let (system, time, ws) = (view.system, view.time, view.workspace);
         self.time.push(time);
         self.value.push(self.channel.value(system, ws));
+        Ok(())
     }
 }
 
@@ -1788,7 +1787,7 @@ fn probe_run(
         let start = std::time::Instant::now();
         sim.run(model.settings.duration, &mut p).unwrap();
         best = best.min(start.elapsed().as_secs_f64());
-        out = Some((p, sim.step));
+        out = Some((p, sim.step_size()));
     }
     let (p, step) = out.unwrap();
     (p, step, best)
@@ -1962,7 +1961,7 @@ fn ropos_peak(formulation: Formulation, elements: usize, order: usize) -> CostRo
         let start = std::time::Instant::now();
         sim.run(m.settings.duration, &mut p).unwrap();
         best = best.min(start.elapsed().as_secs_f64());
-        step = sim.step;
+        step = sim.step_size();
         let run = tether::TetherRun {
             time: p.time,
             ship_tension: p.ship,
@@ -2002,11 +2001,9 @@ struct TetherProbe {
 impl hawser::simulation::Observer for TetherProbe {
     fn sample(
         &mut self,
-        system: &hawser::System,
-        time: Real,
-        _: &[Real],
-        ws: &hawser::system::Workspace,
-    ) {
+        view: &hawser::session::View<'_>,
+    ) -> Result<(), hawser::session::ObserverError> {
+        let (system, time, ws) = (view.system, view.time, view.workspace);
         use hawser::analysis::Channel;
         self.time.push(time);
         self.ship.push(
@@ -2029,6 +2026,7 @@ impl hawser::simulation::Observer for TetherProbe {
             .push((0..n).map(strain).fold(Real::INFINITY, Real::min));
         self.cage_strain.push(strain(n - 1));
         self.ship_strain.push(strain(0));
+        Ok(())
     }
 }
 

@@ -6,7 +6,7 @@
 pub use hawser::analysis::OutputChannel;
 use hawser::analysis::{Channel, RunningStats, SlackSnapDetector};
 use hawser::math::Real;
-use hawser::simulation::Observer;
+use hawser::session::{Observer, ObserverError, RunEnd, View};
 use hawser::system::{System, Workspace};
 use serde_json::{Value, json};
 use std::fs::File;
@@ -27,7 +27,6 @@ pub struct RunWriter {
     next_snapshot: Real,
     last_time: Real,
     samples: u64,
-    error: Option<std::io::Error>,
     row: Vec<Real>,
 }
 
@@ -45,7 +44,7 @@ impl RunWriter {
     pub fn create(
         dir: &Path,
         system: &System,
-        outputs: Vec<OutputChannel>,
+        outputs: &[OutputChannel],
         snapshot_interval: Option<Real>,
         scenario: &Path,
     ) -> std::io::Result<Self> {
@@ -91,7 +90,6 @@ impl RunWriter {
             next_snapshot: 0.0,
             last_time: 0.0,
             samples: 0,
-            error: None,
         })
     }
 
@@ -100,9 +98,10 @@ impl RunWriter {
         self.last_time
     }
 
-    fn write_sample(&mut self, system: &System, time: Real, ws: &Workspace) -> std::io::Result<()> {
+    fn write_sample(&mut self, view: &View<'_>) -> std::io::Result<()> {
+        let (system, time, ws) = (view.system, view.time, view.workspace);
         for (i, c) in self.channels.iter().enumerate() {
-            self.row[i] = c.value_at(system, ws, time);
+            self.row[i] = view.value(c);
         }
         write!(self.timeseries, "{time}")?;
         for (v, s) in self.row.iter().zip(self.stats.iter_mut()) {
@@ -122,19 +121,14 @@ impl RunWriter {
         if let Some(interval) = self.snapshot_interval
             && time >= self.next_snapshot - 1e-9 * interval
         {
-            for (li, l) in system.lines.iter().enumerate() {
+            for li in 0..system.lines.len() {
                 let w = &mut self.snapshots[li];
-                let lw = &ws.lines[li];
-                for i in 0..l.nodes() {
-                    let p = lw.position[l.node_vector(i)];
-                    let t = system.node_tension(ws, li, i);
+                for n in view.line_samples(li) {
+                    let p = n.position;
                     writeln!(
                         w,
-                        "{time},{i},{},{},{},{},{t}",
-                        system.line_mesh(ws, li).arc_length(i) + 0.0,
-                        p.x,
-                        p.y,
-                        p.z
+                        "{time},{},{},{},{},{},{}",
+                        n.node, n.arc_length, p.x, p.y, p.z, n.tension
                     )?;
                 }
                 w.flush()?;
@@ -146,18 +140,10 @@ impl RunWriter {
         Ok(())
     }
 
-    /// Writes `summary.json`, `final_state.json` and `status.json`. `error` marks the run
-    /// incomplete with its message.
-    pub fn finish(
-        mut self,
-        system: &System,
-        state: &[Real],
-        ws: &Workspace,
-        error: Option<&str>,
-    ) -> std::io::Result<()> {
-        if let Some(e) = self.error.take() {
-            return Err(e);
-        }
+    /// Writes `summary.json`, `final_state.json` and `status.json` from the last state
+    /// `view`. `error` marks the run incomplete with its message.
+    pub fn write_end(&mut self, view: &View<'_>, error: Option<&str>) -> std::io::Result<()> {
+        let system = view.system;
         self.timeseries.flush()?;
         for s in &mut self.snapshots {
             s.flush()?;
@@ -209,7 +195,7 @@ impl RunWriter {
         )?;
         write_json(
             &self.dir.join("final_state.json"),
-            &state_json(system, ws, self.last_time, state),
+            &state_json(view, self.last_time),
         )?;
         write_json(
             &self.dir.join("status.json"),
@@ -219,37 +205,36 @@ impl RunWriter {
 }
 
 impl Observer for RunWriter {
-    fn sample(&mut self, system: &System, time: Real, _state: &[Real], ws: &Workspace) {
-        self.last_time = time;
+    fn sample(&mut self, view: &View<'_>) -> Result<(), ObserverError> {
+        self.last_time = view.time;
         self.samples += 1;
-        if self.error.is_none()
-            && let Err(e) = self.write_sample(system, time, ws)
-        {
-            self.error = Some(e);
-        }
+        self.write_sample(view).map_err(|e| {
+            ObserverError(format!(
+                "cannot write the results in {}: {e}",
+                self.dir.display()
+            ))
+        })
+    }
+
+    fn finish(&mut self, view: &View<'_>, end: &RunEnd) -> Result<(), ObserverError> {
+        Ok(self.write_end(view, end.error.as_deref())?)
     }
 }
 
 /// One line's node positions, node tensions and end forces as JSON fields; with `velocities`
 /// also the node velocities.
-fn line_json(system: &System, ws: &Workspace, li: usize, velocities: bool) -> Value {
+fn line_json(view: &View<'_>, li: usize, velocities: bool) -> Value {
+    let (system, ws) = (view.system, view.workspace);
     let lw = &ws.lines[li];
     let line = &system.lines[li];
     let end = |b: bool| {
-        let f = system.end_force(ws, li, b);
+        let f = view.end_force(li, b);
         json!({"tension": f.norm(), "force": [f.x, f.y, f.z]})
     };
-    let nodes = |v: &[hawser::math::Vec3]| {
-        (0..line.nodes())
-            .map(|i| {
-                let p = v[line.node_vector(i)];
-                [p.x, p.y, p.z]
-            })
-            .collect::<Vec<_>>()
-    };
+    let xyz = |p: hawser::math::Vec3| [p.x, p.y, p.z];
     let mut v = json!({
-        "positions": nodes(&lw.position),
-        "tension": (0..line.nodes()).map(|i| system.node_tension(ws, li, i)).collect::<Vec<_>>(),
+        "positions": view.line_samples(li).map(|n| xyz(n.position)).collect::<Vec<_>>(),
+        "tension": view.line_samples(li).map(|n| n.tension).collect::<Vec<_>>(),
         "end_a": end(false),
         "end_b": end(true),
     });
@@ -257,10 +242,7 @@ fn line_json(system: &System, ws: &Workspace, li: usize, velocities: bool) -> Va
         let n = line.mesh.elements();
         v["tangents"] = json!(
             (0..=n)
-                .map(|i| {
-                    let t = lw.position[hawser::formulation::hermite::vector_index(i, true, n)];
-                    [t.x, t.y, t.z]
-                })
+                .map(|i| xyz(lw.position[hawser::formulation::hermite::vector_index(i, true, n)]))
                 .collect::<Vec<_>>()
         );
         v["bending_moment"] = json!(lw.elements.bending_moment);
@@ -268,9 +250,8 @@ fn line_json(system: &System, ws: &Workspace, li: usize, velocities: bool) -> Va
     }
     if velocities {
         v["velocities"] = json!(
-            (0..line.nodes())
-                .map(|i| lw.velocity[line.node_vector(i)])
-                .map(|p| [p.x, p.y, p.z])
+            view.line_samples(li)
+                .map(|n| xyz(n.velocity))
                 .collect::<Vec<_>>()
         );
     }
@@ -295,24 +276,24 @@ fn points_json(system: &System, ws: &Workspace, velocities: bool) -> Value {
         .into()
 }
 
-fn lines_json(system: &System, ws: &Workspace, velocities: bool) -> Value {
-    system
+fn lines_json(view: &View<'_>, velocities: bool) -> Value {
+    view.system
         .lines
         .iter()
         .enumerate()
-        .map(|(li, l)| (l.name.clone(), line_json(system, ws, li, velocities)))
+        .map(|(li, l)| (l.name.clone(), line_json(view, li, velocities)))
         .collect::<serde_json::Map<String, Value>>()
         .into()
 }
 
 /// The positions, velocities, tensions and end forces of every line and point, and the state
 /// vector, as JSON (`final_state.json`).
-pub fn state_json(system: &System, ws: &Workspace, time: Real, state: &[Real]) -> Value {
+pub fn state_json(view: &View<'_>, time: Real) -> Value {
     json!({
         "time": time,
-        "lines": lines_json(system, ws, true),
-        "points": points_json(system, ws, true),
-        "state_vector": state,
+        "lines": lines_json(view, true),
+        "points": points_json(view.system, view.workspace, true),
+        "state_vector": view.state,
     })
 }
 
@@ -320,8 +301,16 @@ pub fn state_json(system: &System, ws: &Workspace, time: Real, state: &[Real]) -
 /// exerts on its attachment; per point its position.
 /// A steady tow adds `tow_velocity` [m/s], the velocity of the frame it was solved in.
 pub fn statics_json(system: &System, ws: &Workspace) -> Value {
+    let view = View {
+        system,
+        workspace: ws,
+        time: 0.0,
+        state: &[],
+        channels: &[],
+        sample: 0,
+    };
     let mut v =
-        json!({"lines": lines_json(system, ws, false), "points": points_json(system, ws, false)});
+        json!({"lines": lines_json(&view, false), "points": points_json(system, ws, false)});
     if system.tow_velocity != hawser::math::Vec3::zeros() {
         let t = system.tow_velocity;
         v["tow_velocity"] = json!([t.x, t.y, t.z]);

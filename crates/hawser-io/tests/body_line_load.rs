@@ -21,7 +21,7 @@
 use hawser::math::{Quat, Real, Vec3, Vec6};
 use hawser::model::RigidKinematics;
 use hawser::simulation::{Observer, Simulation};
-use hawser::system::{System, Workspace};
+use hawser::system::System;
 use hawser_io::scenario;
 use std::path::Path;
 
@@ -151,12 +151,17 @@ struct Record {
 }
 
 impl Observer for Record {
-    fn sample(&mut self, system: &System, time: Real, _state: &[Real], ws: &Workspace) {
+    fn sample(
+        &mut self,
+        view: &hawser::session::View<'_>,
+    ) -> Result<(), hawser::session::ObserverError> {
+        let (system, time, ws) = (view.system, view.time, view.workspace);
         let values = self.channels.iter().map(|c| c.value(system, ws)).collect();
         let strain = ws.lines.iter().flat_map(|l| l.elements.strain.iter());
         self.min_strain
             .push(strain.copied().fold(Real::INFINITY, Real::min));
         self.samples.push((time, values, ws.bodies.clone()));
+        Ok(())
     }
 }
 

@@ -9,7 +9,6 @@ use hawser::analysis::Channel;
 use hawser::math::Real;
 use hawser::model::{Formulation, Model, Scheme, TimeStep};
 use hawser::simulation::{Observer, Simulation};
-use hawser::system::Workspace;
 use hawser::validation::signal::peak;
 use hawser::validation::swinging_cable::with_discretisation;
 use hawser::{System, statics};
@@ -28,7 +27,11 @@ struct Probe {
 }
 
 impl Observer for Probe {
-    fn sample(&mut self, system: &System, time: Real, _: &[Real], ws: &Workspace) {
+    fn sample(
+        &mut self,
+        view: &hawser::session::View<'_>,
+    ) -> Result<(), hawser::session::ObserverError> {
+        let (system, time, ws) = (view.system, view.time, view.workspace);
         self.time.push(time);
         self.value.push(
             Channel::EndTension {
@@ -37,6 +40,7 @@ impl Observer for Probe {
             }
             .value(system, ws),
         );
+        Ok(())
     }
 }
 

@@ -76,13 +76,18 @@ struct FairTen {
 }
 
 impl Observer for FairTen {
-    fn sample(&mut self, system: &System, time: Real, _: &[Real], ws: &Workspace) {
+    fn sample(
+        &mut self,
+        view: &hawser::session::View<'_>,
+    ) -> Result<(), hawser::session::ObserverError> {
+        let (system, time, ws) = (view.system, view.time, view.workspace);
         self.times.push(time);
         self.values.push(
             (0..system.lines.len())
                 .map(|l| end_node_force(system, ws, l, true))
                 .collect(),
         );
+        Ok(())
     }
 }
 
@@ -187,12 +192,17 @@ fn chain_under_zzp1_heave_matches_moordyn() {
     let mut sim = Simulation::new(&system, &model.settings, y0).unwrap();
     struct Ends(Vec<(Real, Real, Real)>);
     impl Observer for Ends {
-        fn sample(&mut self, s: &System, t: Real, _: &[Real], ws: &Workspace) {
+        fn sample(
+            &mut self,
+            view: &hawser::session::View<'_>,
+        ) -> Result<(), hawser::session::ObserverError> {
+            let (s, t, ws) = (view.system, view.time, view.workspace);
             self.0.push((
                 t,
                 end_node_force(s, ws, 0, true),
                 end_node_force(s, ws, 0, false),
             ));
+            Ok(())
         }
     }
     let mut rec = Ends(Vec::new());

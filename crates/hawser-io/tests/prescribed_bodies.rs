@@ -112,12 +112,11 @@ impl<F: FnMut(Real, &System, &hawser::system::Workspace)> hawser::simulation::Ob
 {
     fn sample(
         &mut self,
-        system: &System,
-        time: Real,
-        _state: &[Real],
-        ws: &hawser::system::Workspace,
-    ) {
-        (self.0)(time, system, ws)
+        view: &hawser::session::View<'_>,
+    ) -> Result<(), hawser::session::ObserverError> {
+        let (system, time, ws) = (view.system, view.time, view.workspace);
+        (self.0)(time, system, ws);
+        Ok(())
     }
 }
 

@@ -49,6 +49,26 @@ pub enum SimulationError {
         /// Which element or point sets it.
         culprit: String,
     },
+    /// The run was stopped from outside (SIGINT, SIGTERM, a host's interrupt flag) between
+    /// two steps.
+    #[error("the run was interrupted at t = {time:.6} s")]
+    Interrupted {
+        /// Simulated time of the last completed step [s].
+        time: Real,
+    },
+    /// An observer (a result writer) failed; the message names the file.
+    #[error("{message}")]
+    Observer {
+        /// What failed.
+        message: String,
+    },
+    /// A coupling host's call that cannot be taken (an object that is not coupled, arrays of
+    /// the wrong length, a time in the past, non-finite kinematics).
+    #[error("coupling: {what}")]
+    Coupling {
+        /// What is wrong, with the numbers.
+        what: String,
+    },
     /// The model is invalid.
     #[error(transparent)]
     Model(#[from] ModelError),

@@ -20,6 +20,7 @@ pub mod linearise;
 pub mod math;
 pub mod model;
 pub mod physics;
+pub mod session;
 pub mod simulation;
 pub mod statics;
 pub mod system;
@@ -28,4 +29,5 @@ pub mod verification;
 
 pub use error::{ModalError, ModelError, SimulationError, StaticsError};
 pub use model::Model;
+pub use session::Session;
 pub use system::System;

@@ -58,13 +58,13 @@ fn drift(model: &Model, y: Vec<Real>, dt: Real, duration: Real, scale: Real) -> 
     let system = System::new(model).unwrap();
     let mut sim = Simulation::new(&system, &fixed_step_settings(dt, Scheme::Rk4), y).unwrap();
     let mut ws = system.workspace();
-    let e0 = system.mechanical_energy(0.0, &sim.state, &mut ws).total();
+    let e0 = system.mechanical_energy(0.0, &sim.state(), &mut ws).total();
     let mut worst: Real = 0.0;
     let steps = (duration / dt).round() as usize;
     for _ in 0..steps {
         sim.step().unwrap();
         let e = system
-            .mechanical_energy(sim.time, &sim.state, &mut ws)
+            .mechanical_energy(sim.time(), &sim.state(), &mut ws)
             .total();
         worst = worst.max((e - e0).abs());
     }
@@ -151,11 +151,11 @@ fn compact_body_swings_as_a_pendulum() {
     let dt = 0.5 * system.stable_step(Scheme::Rk4).0;
     let mut sim = Simulation::new(&system, &fixed_step_settings(dt, Scheme::Rk4), y).unwrap();
     let (mut last_x, mut crossings) = (Real::NAN, Vec::new());
-    while sim.time < 20.0 {
+    while sim.time() < 20.0 {
         sim.step().unwrap();
-        let x = sim.state[o];
+        let x = sim.state()[o];
         if last_x > 0.0 && x <= 0.0 {
-            crossings.push(sim.time - dt * x / (x - last_x));
+            crossings.push(sim.time() - dt * x / (x - last_x));
         }
         last_x = x;
     }
@@ -237,9 +237,9 @@ fn hanging_cage_statics_and_rest() {
     let mut sim = Simulation::new(&system, &model.settings, sol.state.clone()).unwrap();
     let start = k.position;
     let mut worst: Real = 0.0;
-    while sim.time < 2.0 {
+    while sim.time() < 2.0 {
         sim.step().unwrap();
-        let kk = hawser::bodies::read_state(&sim.state[o..o + hawser::bodies::STATE_LEN]);
+        let kk = hawser::bodies::read_state(&sim.state()[o..o + hawser::bodies::STATE_LEN]);
         worst = worst.max((kk.position - start).norm());
     }
     eprintln!("cage moves {worst:.3e} m in 2 s from statics");

@@ -9,7 +9,7 @@ use hawser::physics::hydrodynamics::DragModel;
 use hawser::physics::material::AxialDamping;
 use hawser::simulation::{Observer, Simulation};
 use hawser::statics::{StaticOptions, solve};
-use hawser::system::{System, Workspace};
+use hawser::system::System;
 use hawser::verification::{fixed, line_type, single_line, vacuum_environment};
 
 /// Records the tension at end A of line 0 and the position of node `probe` every sample.
@@ -23,7 +23,11 @@ struct Record {
 }
 
 impl Observer for Record {
-    fn sample(&mut self, system: &System, time: Real, _state: &[Real], ws: &Workspace) {
+    fn sample(
+        &mut self,
+        view: &hawser::session::View<'_>,
+    ) -> Result<(), hawser::session::ObserverError> {
+        let (system, time, ws) = (view.system, view.time, view.workspace);
         self.time.push(time);
         self.tension.push(
             Channel::EndTension {
@@ -40,6 +44,7 @@ impl Observer for Record {
             }
             .value(system, ws)
         }));
+        Ok(())
     }
 }
 
@@ -353,9 +358,9 @@ fn dg_rope_started_slack_comes_to_rest_on_its_anchors() {
         let settings = hawser::verification::fixed_step_settings(dt, Scheme::Rk4);
         let mut sim = Simulation::new(&system, &settings, y).unwrap();
         let (mut load, mut mid, mut count) = (0.0, 0.0, 0.0);
-        while sim.time < 12.0 {
+        while sim.time() < 12.0 {
             sim.step().unwrap();
-            if sim.time > 10.0 && sim.steps_done() % 16 == 0 {
+            if sim.time() > 10.0 && sim.steps_done() % 16 == 0 {
                 let ws = sim.evaluate().unwrap();
                 load -= system.end_force(ws, 0, false).z + system.end_force(ws, 0, true).z;
                 let n = system.lines[0].nodes();

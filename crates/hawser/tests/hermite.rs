@@ -226,8 +226,13 @@ fn fe_and_hermite_agree_on_a_grounded_catenary() {
 /// Records the tension at end B at every output sample.
 struct Tensions(Vec<Real>);
 impl hawser::simulation::Observer for Tensions {
-    fn sample(&mut self, system: &System, _: Real, _: &[Real], ws: &hawser::system::Workspace) {
+    fn sample(
+        &mut self,
+        view: &hawser::session::View<'_>,
+    ) -> Result<(), hawser::session::ObserverError> {
+        let (system, ws) = (view.system, view.workspace);
         self.0.push(system.end_force(ws, 0, true).norm());
+        Ok(())
     }
 }
 
@@ -354,11 +359,16 @@ fn clamped_cantilever_sags_as_euler_bernoulli() {
         hawser::simulation::Simulation::new(&system, &settings, system.straight_state()).unwrap();
     struct Tip(Real, Vec3);
     impl hawser::simulation::Observer for Tip {
-        fn sample(&mut self, s: &System, _: Real, _: &[Real], ws: &hawser::system::Workspace) {
+        fn sample(
+            &mut self,
+            view: &hawser::session::View<'_>,
+        ) -> Result<(), hawser::session::ObserverError> {
+            let (s, ws) = (view.system, view.workspace);
             let l = &s.lines[0];
             self.0 = self.0.max(10.0 - ws.lines[0].position[l.node_vector(8)].z);
             let c = ws.lines[0].position[1];
             self.1 = Vec3::new(0.0, self.1.y.max(c.y.abs()), self.1.z.max(c.z.abs()));
+            Ok(())
         }
     }
     let mut out = Tip(0.0, Vec3::zeros());

@@ -8,9 +8,9 @@ use hawser::model::{MassMatrix, Motion, Point, PointKind, Settings, TimeStep};
 use hawser::physics::environment::Current;
 use hawser::physics::hydrodynamics::DragModel;
 use hawser::physics::seabed::FrictionLaw;
-use hawser::simulation::{Observer, Simulation};
+use hawser::simulation::{Observer, ObserverError, Simulation};
 use hawser::statics::{StaticOptions, evaluate, solve};
-use hawser::system::{System, Workspace};
+use hawser::system::System;
 
 /// A taut 100 m line across a uniform current: the sum of the end forces equals the total
 /// Morison drag ½ ρ d C_dn U² L √(1+ε) (DG paper eq. 17). Tolerance 1e-4: the line bows by
@@ -58,11 +58,12 @@ struct MeanPull {
     count: usize,
 }
 impl Observer for MeanPull {
-    fn sample(&mut self, system: &System, t: f64, _: &[f64], ws: &Workspace) {
-        if t >= self.from {
-            self.sum -= system.end_force(ws, 0, true).x;
+    fn sample(&mut self, v: &hawser::session::View<'_>) -> Result<(), ObserverError> {
+        if v.time >= self.from {
+            self.sum -= v.end_force(0, true).x;
             self.count += 1;
         }
+        Ok(())
     }
 }
 

@@ -59,7 +59,7 @@ fn check(name: &str, model: &Model, scheme: Scheme) {
     });
     eprintln!(
         "{name} ({scheme:?}): {steps} allocations in 1000 steps, {evaluations} in 1000 evaluations (t = {:.4} s)",
-        sim.time
+        sim.time()
     );
     // Zero exactly: the time loop is specified to allocate nothing, whatever the count.
     assert_eq!(steps, 0, "{name}: Simulation::step allocated");

@@ -279,13 +279,13 @@ fn capstan_ratio_in_steady_sliding() {
     let mut x_avg = 0.0;
     let (mut sum_h, mut sum_p, mut sum_c, mut balance, mut count) =
         (0.0, 0.0, Vec3::zeros(), Vec3::zeros(), 0.0);
-    while sim.time < t_end {
+    while sim.time() < t_end {
         sim.step().unwrap();
-        if sim.time >= t_avg {
+        if sim.time() >= t_avg {
             if count == 0.0 {
-                x_avg = v::point_state(&system, &sim.state, 1).0.x;
+                x_avg = v::point_state(&system, &sim.state(), 1).0.x;
             }
-            let t = sim.time;
+            let t = sim.time();
             let ws = sim.evaluate().unwrap();
             let (fh, fp) = (
                 system.end_force(ws, 0, false),
@@ -315,8 +315,8 @@ fn capstan_ratio_in_steady_sliding() {
     // Weightless and steady: the drum takes what the two ends put in.
     assert!((contact - balance).norm() < 0.01 * balance.norm());
     // The line is hauled: the load moved toward the drum at the hauling speed.
-    let (p, _) = v::point_state(&system, &sim.state, 1);
-    let mean_speed = (p.x - x_avg) / (sim.time - t_avg);
+    let (p, _) = v::point_state(&system, &sim.state(), 1);
+    let mean_speed = (p.x - x_avg) / (sim.time() - t_avg);
     eprintln!("load point at {p:?}, mean speed {mean_speed:.4} m/s");
     // Within the start-up oscillation of the load on the line's elasticity (about 1 cm).
     assert!((mean_speed / speed - 1.0).abs() < 0.03);
@@ -399,10 +399,10 @@ fn drape_with(
         Simulation::new_unchecked(&system, &v::fixed_step_settings(dt, Scheme::Rk4), y).unwrap();
     let (mut mean, mut count) = (ObstacleLoad::default(), 0.0);
     let mut loads = [ObstacleLoad::default()];
-    while sim.time < duration {
+    while sim.time() < duration {
         sim.step().map_err(|e| e.to_string())?;
-        if sim.time > duration - 1.0 {
-            let t = sim.time;
+        if sim.time() > duration - 1.0 {
+            let t = sim.time();
             obstacle_forces(
                 &system,
                 sim.evaluate().map_err(|e| e.to_string())?,
@@ -416,7 +416,7 @@ fn drape_with(
     }
     mean.force /= count;
     mean.contact_length /= count;
-    let y = sim.state.clone();
+    let y = sim.state().to_vec();
     Ok((system, y, mean))
 }
 
@@ -654,7 +654,7 @@ fn moving_cylinder_pushes_a_slack_line_and_its_channel_balances_momentum() {
         let weight = Vec3::new(0.0, 0.0, -1.5 * G * 12.0);
         let mut steps = 0;
         let mut rate = |sim: &mut Simulation| {
-            let t = sim.time;
+            let t = sim.time();
             let ws = sim.evaluate().unwrap();
             let mut loads = [ObstacleLoad::default()];
             obstacle_forces(&system, ws, t, &mut loads);
@@ -675,7 +675,7 @@ fn moving_cylinder_pushes_a_slack_line_and_its_channel_balances_momentum() {
         let (mut previous, _, p0) = rate(&mut sim);
         let (mut impulse, mut contact_impulse, mut peak) = (Vec3::zeros(), 0.0, Vec3::zeros());
         let duration = 5.0;
-        while sim.time < duration {
+        while sim.time() < duration {
             sim.step().unwrap();
             let (net, c, _) = rate(&mut sim);
             impulse += (previous + net) * (0.5 * dt);
@@ -691,7 +691,7 @@ fn moving_cylinder_pushes_a_slack_line_and_its_channel_balances_momentum() {
             .iter()
             .map(|p| p.y)
             .fold(Real::NEG_INFINITY, Real::max);
-        let cylinder_y = -3.0 + sim.time;
+        let cylinder_y = -3.0 + sim.time();
         eprintln!(
             "{formulation:?}: Δp {:?}, ∫F dt {impulse:?} (∫|C| dt {contact_impulse:.3} N·s, \
              peak {peak:?}); farthest node y {farthest:.3} m, cylinder at {cylinder_y:.3} m",

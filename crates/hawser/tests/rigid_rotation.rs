@@ -208,13 +208,13 @@ fn spin(mass_matrix: MassMatrix, dt: Real, steps: usize) -> Spin {
 
     let settings = fixed_step_settings(dt, Scheme::Rk4);
     let mut sim = Simulation::new(&system, &settings, y).unwrap();
-    assert_eq!(sim.step, dt);
+    assert_eq!(sim.step_size(), dt);
     let window = steps / 10;
     let mut strains = vec![0.0; n];
     let (mut first, mut last, mut worst) = (0.0, 0.0, 0.0);
     for k in 0..steps {
         sim.step().unwrap();
-        strains_from_state(&system, &sim.state, 0, &mut strains);
+        strains_from_state(&system, &sim.state(), 0, &mut strains);
         let dev = strains
             .iter()
             .zip(&steady)
@@ -228,9 +228,9 @@ fn spin(mass_matrix: MassMatrix, dt: Real, steps: usize) -> Spin {
         }
     }
     // The chord must have turned rigidly: `along` rotated about `axis` by ω t.
-    let (pa, _) = node_state(&system, &sim.state, 0, 0);
-    let (pb, _) = node_state(&system, &sim.state, 0, n);
-    let th = omega * sim.time;
+    let (pa, _) = node_state(&system, &sim.state(), 0, 0);
+    let (pb, _) = node_state(&system, &sim.state(), 0, n);
+    let th = omega * sim.time();
     let expected = along * th.cos() + axis.cross(&along) * th.sin();
     let phase_error = ((pb - pa).normalize() - expected).norm();
     Spin {

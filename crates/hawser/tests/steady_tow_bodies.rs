@@ -195,12 +195,12 @@ fn run(system: &System, y0: Vec<Real>, duration: Real, every: Real) -> Vec<(Real
     };
     let mut sim = Simulation::new(system, &settings, y0).unwrap();
     let mut out = vec![(0.0, tow_state(system, sim.evaluate().unwrap()))];
-    let per = (every / sim.step).round() as usize;
-    while sim.time < duration - 1e-9 {
+    let per = (every / sim.step_size()).round() as usize;
+    while sim.time() < duration - 1e-9 {
         for _ in 0..per {
             sim.step().unwrap();
         }
-        let t = sim.time;
+        let t = sim.time();
         out.push((t, tow_state(system, sim.evaluate().unwrap())));
     }
     out

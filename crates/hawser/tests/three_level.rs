@@ -22,7 +22,7 @@ fn hanging_mass(scheme: Scheme, mass_matrix: MassMatrix, dt: Real, duration: Rea
     let mut zs = Vec::with_capacity(steps);
     for _ in 0..steps {
         sim.step().unwrap();
-        zs.push(node_state(&system, &sim.state, 0, ELEMENTS).0.z);
+        zs.push(node_state(&system, &sim.state(), 0, ELEMENTS).0.z);
     }
     zs
 }

@@ -13,7 +13,7 @@ use hawser::physics::waves::{
     jonswap_normalisation, wavenumber,
 };
 use hawser::simulation::{Observer, Simulation};
-use hawser::system::{System, Workspace};
+use hawser::system::System;
 use hawser::validation::signal::fft;
 use std::f64::consts::PI;
 
@@ -844,8 +844,13 @@ fn invalid_waves_are_rejected() {
 /// The force the line puts on its top, every sample.
 struct TopForce(Vec<(Real, Vec3)>);
 impl Observer for TopForce {
-    fn sample(&mut self, system: &System, t: Real, _: &[Real], ws: &Workspace) {
+    fn sample(
+        &mut self,
+        view: &hawser::session::View<'_>,
+    ) -> Result<(), hawser::session::ObserverError> {
+        let (system, t, ws) = (view.system, view.time, view.workspace);
         self.0.push((t, system.end_force(ws, 0, true)));
+        Ok(())
     }
 }
 

@@ -26,7 +26,7 @@ use hawser::model::*;
 use hawser::physics::material::AxialDamping;
 use hawser::simulation::{Observer, Simulation};
 use hawser::statics::{StaticOptions, solve};
-use hawser::system::{System, Workspace};
+use hawser::system::System;
 use std::f64::consts::PI;
 
 const L0: Real = 20.0;
@@ -104,7 +104,11 @@ struct Sample {
 }
 
 impl Observer for Record {
-    fn sample(&mut self, system: &System, time: Real, _y: &[Real], ws: &Workspace) {
+    fn sample(
+        &mut self,
+        view: &hawser::session::View<'_>,
+    ) -> Result<(), hawser::session::ObserverError> {
+        let (system, time, ws) = (view.system, view.time, view.workspace);
         self.rows.push(Sample {
             t: time,
             length: Channel::LineLength { line: 0 }.value(system, ws),
@@ -123,6 +127,7 @@ impl Observer for Record {
                 })
                 .fold(0.0, Real::max),
         });
+        Ok(())
     }
 }
 
@@ -137,7 +142,7 @@ fn run(model: &Model, duration: Real, interval: Real) -> (Record, Vec<Real>) {
     let mut sim = Simulation::new(&system, &settings, statics.state).unwrap();
     let mut rec = Record::default();
     sim.run(duration, &mut rec).unwrap();
-    (rec, sim.state.clone())
+    (rec, sim.state().to_vec())
 }
 
 fn lowering_follows_weight_plus_inertia(formulation: Formulation) {
@@ -320,7 +325,7 @@ fn winch_at_rest_changes_nothing() {
             let mut rec = Record::default();
             sim.run(5.0, &mut rec).unwrap();
             (
-                sim.state.clone(),
+                sim.state().to_vec(),
                 rec.rows.iter().map(|s| s.end_a_tension).collect::<Vec<_>>(),
             )
         };

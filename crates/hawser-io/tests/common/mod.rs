@@ -81,10 +81,6 @@ pub fn panics(text: &str) -> bool {
 /// Runs the example at `path` the way `hawser run` does, for `samples` output intervals with a
 /// snapshot every `snapshot_every` of them, writing its results into `dir`.
 pub fn run_example_briefly(path: &Path, dir: &Path, samples: usize, snapshot_every: usize) {
-    use hawser::model::{InitialCondition, TimeStep};
-    use hawser::simulation::Simulation;
-    use hawser::statics::StaticOptions;
-    use hawser::system::System;
     let (mut loaded, _) = scenario::load_input(path, &Default::default())
         .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
     let settings = &mut loaded.model.settings;
@@ -92,50 +88,17 @@ pub fn run_example_briefly(path: &Path, dir: &Path, samples: usize, snapshot_eve
         .duration
         .min(samples as f64 * settings.output_interval);
     settings.snapshot_interval = Some(snapshot_every as f64 * settings.output_interval);
-    let model = &loaded.model;
-    let system = System::new(model).expect("valid");
-    if let TimeStep::Fixed(dt) = model.settings.time_step
-        && loaded.format == scenario::InputFormat::MoorDyn
-        && dt > system.stable_step(model.settings.scheme).0
-    {
-        loaded.model.settings.time_step = TimeStep::Auto;
-    }
-    let model = &loaded.model;
-    let y0 = match model.settings.initial_condition {
-        InitialCondition::Statics => {
-            hawser::statics::solve_with_release(model, &system, &StaticOptions::default())
-                .expect("statics")
-                .state
-        }
-        InitialCondition::SteadyTow => {
-            hawser::statics::solve(&system, None, &StaticOptions::default())
-                .expect("steady tow")
-                .state
-        }
-        InitialCondition::AsDefined => {
-            let mut ws = system.workspace();
-            let mut y = system.straight_state();
-            hawser::statics::catenary_seed(&system, &mut y, &mut ws);
-            y
-        }
-    };
-    let mut sim = Simulation::new(&system, &model.settings, y0).expect("step");
-    let mut writer = hawser_io::results::RunWriter::create(
+    let mut session = hawser::Session::new(loaded.model.clone())
+        .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    let writer = hawser_io::results::RunWriter::create(
         dir,
-        &system,
-        model.outputs.clone(),
-        model.settings.snapshot_interval,
+        session.system(),
+        session.channels(),
+        loaded.model.settings.snapshot_interval,
         path,
     )
     .expect("writer");
-    let result = sim.run(model.settings.duration, &mut writer);
-    let ws = sim
-        .evaluate()
-        .ok()
-        .cloned()
-        .unwrap_or_else(|| system.workspace());
-    let msg = result.err().map(|e| e.to_string());
-    writer
-        .finish(&system, &sim.state, &ws, msg.as_deref())
-        .expect("finish");
+    session.attach(writer);
+    let result = session.run();
+    session.finish(result.as_ref().err()).expect("finish");
 }

@@ -102,6 +102,18 @@ impl ThreeLevel {
         }
     }
 
+    /// What the next step needs of the past: the positions at level n − 1 (state layout) and
+    /// the last step Δt_n [s] (0 before the first step).
+    pub fn history(&self) -> (&[Real], Real) {
+        (&self.previous, self.last_step)
+    }
+
+    /// Sets the history ([`ThreeLevel::history`]) of a saved run.
+    pub fn set_history(&mut self, previous: &[Real], last_step: Real) {
+        self.previous.copy_from_slice(previous);
+        self.last_step = last_step;
+    }
+
     /// Force evaluations per step.
     pub fn evaluations(&self) -> usize {
         2

@@ -16,6 +16,10 @@ pub enum BodyKind {
     Free,
     /// Moves as prescribed; the loads on it are reported, not integrated.
     Prescribed(RigidMotion),
+    /// Moves as a host program sets it at each coupling step (a floating platform in OpenFAST
+    /// or WEC-Sim): its pose starts at the body's `position` and `orientation`, and the loads
+    /// of the lines on it are read back ([`crate::Session::body_reaction`]).
+    Coupled,
 }
 
 /// The volume a body displaces, for buoyancy and hydrostatic restoring.

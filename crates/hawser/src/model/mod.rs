@@ -3,6 +3,7 @@
 //! [`crate::system::System`] for time integration and statics.
 
 mod body;
+mod coupled;
 mod line;
 mod motion;
 mod point;
@@ -11,6 +12,7 @@ mod steady_tow;
 mod winch;
 
 pub use body::{Body, BodyKind, Displacement, Thrust, Wind};
+pub use coupled::{BodyTrack, PointTrack};
 pub use line::{Formulation, Line, LineEnd, LineType, MassMatrix, Section, StrainMeasure};
 pub use motion::{Motion, ramp};
 pub use point::{Point, PointKind};
@@ -48,6 +50,18 @@ pub enum TimeStep {
     Fixed(Real),
 }
 
+/// What a fixed time step above the stability limit does.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum StepAboveLimit {
+    /// The run is refused with the limit and what sets it (hawser scenarios: the user chose
+    /// the step for this integrator).
+    #[default]
+    Refuse,
+    /// The automatic step is taken instead, with a note (MoorDyn decks: their `dtM` was
+    /// chosen for MoorDyn's integrator).
+    UseAuto,
+}
+
 /// How a dynamic run starts.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum InitialCondition {
@@ -73,6 +87,8 @@ pub struct Settings {
     pub safety_factor: Real,
     /// Integration scheme.
     pub scheme: Scheme,
+    /// What a fixed `time_step` above the stability limit does.
+    pub step_above_limit: StepAboveLimit,
     /// Interval between time-series samples [s].
     pub output_interval: Real,
     /// Interval between whole-line shape snapshots [s]; `None` for none.
@@ -93,6 +109,7 @@ impl Default for Settings {
             time_step: TimeStep::Auto,
             safety_factor: 0.8,
             scheme: Scheme::Rk4,
+            step_above_limit: StepAboveLimit::Refuse,
             output_interval: 0.1,
             snapshot_interval: None,
             initial_condition: InitialCondition::Statics,

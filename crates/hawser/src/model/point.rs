@@ -21,6 +21,10 @@ pub enum PointKind {
     Fixed,
     /// Moves as prescribed (fairlead on a vessel, test rig).
     Prescribed(Motion),
+    /// Moves as a host program sets it at each coupling step (a fairlead on a vessel modelled
+    /// by the host, MoorDyn's `Coupled`/`Vessel` points): it starts at `position`, and the
+    /// force of the lines on it is read back ([`crate::Session::point_reaction`]).
+    Coupled,
     /// Free point mass: clump weight, buoy, payload, or a massless joint between lines.
     Free {
         /// Mass [kg].

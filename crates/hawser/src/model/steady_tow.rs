@@ -103,6 +103,10 @@ pub fn tow_velocity(model: &Model) -> Result<Vec3, ModelError> {
     for p in &model.points {
         match &p.kind {
             PointKind::Fixed => take(Ok(Vec3::zeros()), format!("point {} (fixed)", p.name))?,
+            PointKind::Coupled => take(
+                Ok(Vec3::zeros()),
+                format!("point {} (coupled, at rest in the statics)", p.name),
+            )?,
             PointKind::Prescribed(m) => {
                 take(steady_point_velocity(m), format!("point {}", p.name))?
             }

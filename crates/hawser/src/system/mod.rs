@@ -21,7 +21,7 @@ mod workspace;
 pub use layout::Layout;
 pub use line::SystemLine;
 use rhs::SphereContact;
-pub use workspace::{LineWork, WinchWork, Workspace};
+pub use workspace::{CouplingTracks, LineWork, WinchWork, Workspace};
 
 use crate::error::ModelError;
 pub use crate::formulation::Energy;
@@ -89,11 +89,11 @@ pub struct SystemBody {
 }
 
 impl SystemBody {
-    /// Kinematics at t = 0: a free body at rest at its initial pose, a prescribed body on its
-    /// motion.
+    /// Kinematics at t = 0: a free or coupled body at rest at its initial pose, a prescribed
+    /// body on its motion.
     pub fn initial_kinematics(&self) -> crate::model::RigidKinematics {
         match &self.body.kind {
-            crate::model::BodyKind::Free => {
+            crate::model::BodyKind::Free | crate::model::BodyKind::Coupled => {
                 crate::model::RigidKinematics::at_rest(self.body.position, self.body.orientation)
             }
             crate::model::BodyKind::Prescribed(m) => m.kinematics(0.0),

@@ -78,13 +78,18 @@ impl System {
     /// The free end of a `dg` line keeps the kinematics its line gave it in the last
     /// evaluation ([`System::evaluate_dg_lines`]).
     /// Bodies first: free ones from the state (accelerations from the last solve are kept
-    /// only by [`System::rhs`]), prescribed ones from their motion; points on bodies follow.
+    /// only by [`System::rhs`]), prescribed ones from their motion, coupled ones from the
+    /// host's track in `ws.coupling`; points on bodies follow.
     pub fn point_kinematics(&self, t: Real, y: &[Real], ws: &mut Workspace) {
         for (b, body) in self.bodies.iter().enumerate() {
             ws.bodies[b] = match (&body.body.kind, self.layout.body_offset[b]) {
                 (_, Some(o)) => crate::bodies::read_state(&y[o..o + crate::bodies::STATE_LEN]),
                 (crate::model::BodyKind::Prescribed(m), None) => m.kinematics(t),
                 (crate::model::BodyKind::Free, None) => body.initial_kinematics(),
+                (crate::model::BodyKind::Coupled, None) => ws.coupling.bodies[b]
+                    .as_ref()
+                    .expect("a coupled body has a track")
+                    .at(t),
             };
         }
         for (i, p) in self.points.iter().enumerate() {
@@ -98,6 +103,17 @@ impl System {
                 },
                 PointKind::Prescribed(m) => {
                     let (position, velocity, acceleration) = m.kinematics(t);
+                    PointKinematics {
+                        position,
+                        velocity,
+                        acceleration,
+                    }
+                }
+                PointKind::Coupled => {
+                    let track = ws.coupling.points[i]
+                        .as_ref()
+                        .expect("a coupled point has a track");
+                    let (position, velocity, acceleration) = track.at(t);
                     PointKinematics {
                         position,
                         velocity,

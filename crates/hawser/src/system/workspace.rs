@@ -5,6 +5,7 @@ use crate::formulation::dg::DgWorkspace;
 use crate::formulation::{ElementState, Mesh};
 use crate::linalg::{CoupledSystem, EndKind, LineBlocks};
 use crate::math::{Real, Vec3};
+use crate::model::PointKind;
 
 /// Scratch of one line, sized once.
 #[derive(Clone, Debug)]
@@ -53,6 +54,19 @@ pub struct Workspace {
     pub bodies: Vec<crate::model::RigidKinematics>,
     /// Per line: the current mesh and length of a line on a winch (`None` for other lines).
     pub winches: Vec<Option<WinchWork>>,
+    /// The host's kinematics of the coupled points and bodies over the current coupling
+    /// interval, sized once.
+    pub coupling: CouplingTracks,
+}
+
+/// The kinematics a coupling host has set ([`crate::model::PointTrack`],
+/// [`crate::model::BodyTrack`]): per point and per body, `Some` for the coupled ones.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct CouplingTracks {
+    /// Per point.
+    pub points: Vec<Option<crate::model::PointTrack>>,
+    /// Per body.
+    pub bodies: Vec<Option<crate::model::BodyTrack>>,
 }
 
 impl System {
@@ -118,6 +132,25 @@ impl System {
                     })
                 })
                 .collect(),
+            coupling: CouplingTracks {
+                points: self
+                    .points
+                    .iter()
+                    .map(|p| {
+                        matches!(p.kind, PointKind::Coupled)
+                            .then(|| crate::model::PointTrack::at_rest(p.position))
+                    })
+                    .collect(),
+                bodies: self
+                    .bodies
+                    .iter()
+                    .map(|b| {
+                        matches!(b.body.kind, crate::model::BodyKind::Coupled).then(|| {
+                            crate::model::BodyTrack::at_rest(b.body.position, b.body.orientation)
+                        })
+                    })
+                    .collect(),
+            },
         }
     }
 

@@ -12,9 +12,7 @@ use super::RunError;
 use crate::analysis::Channel;
 use crate::math::{Real, Vec3};
 use crate::model::{Formulation, Model};
-use crate::simulation::{Observer, Simulation};
-use crate::statics::{StaticOptions, solve_with_release};
-use crate::system::{System, Workspace};
+use crate::session::{Observer, ObserverError, Session, View};
 
 /// The record of a release run.
 #[derive(Clone, Debug, Default)]
@@ -45,7 +43,8 @@ struct Recorder {
 }
 
 impl Observer for Recorder {
-    fn sample(&mut self, system: &System, time: Real, _state: &[Real], ws: &Workspace) {
+    fn sample(&mut self, view: &View<'_>) -> Result<(), ObserverError> {
+        let (system, time, ws) = (view.system, view.time, view.workspace);
         let node_vec = |node: usize, velocity: bool| {
             Vec3::from_fn(|axis, _| {
                 let c = if velocity {
@@ -82,6 +81,7 @@ impl Observer for Recorder {
                 r.shapes.push((time, shape));
             }
         }
+        Ok(())
     }
 }
 
@@ -109,18 +109,21 @@ pub fn with_discretisation(
 /// then the release) for `settings.duration`, recording every `settings.output_interval` and
 /// the line's shape every `shape_interval` [s] (none if `None`).
 pub fn run_release(model: &Model, shape_interval: Option<Real>) -> Result<ReleaseRun, RunError> {
-    let system = System::new(model)?;
-    let sol = solve_with_release(model, &system, &StaticOptions::default())?;
-    let mut sim = Simulation::new(&system, &model.settings, sol.state)?;
-    let mut rec = Recorder {
+    let mut session = Session::new(model.clone())?;
+    let system = session.system();
+    let recorder = Recorder {
         run: ReleaseRun::default(),
         nodes: system.lines[0].mesh.elements() + 1,
         shape_interval,
     };
+    let id = session.attach(recorder);
     let start = std::time::Instant::now();
-    sim.run(model.settings.duration, &mut rec)?;
-    rec.run.wall_seconds = start.elapsed().as_secs_f64();
-    rec.run.step = sim.step;
-    rec.run.steps = sim.steps_done();
+    session.run()?;
+    let wall_seconds = start.elapsed().as_secs_f64();
+    let (step, steps) = (session.step_size(), session.steps_done());
+    let mut rec: Recorder = session.detach(id).expect("the recorder is attached");
+    rec.run.wall_seconds = wall_seconds;
+    rec.run.step = step;
+    rec.run.steps = steps;
     Ok(rec.run)
 }

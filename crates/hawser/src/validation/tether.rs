@@ -12,9 +12,7 @@ use super::signal::{peak, upward_crossing, value_at};
 use crate::analysis::Channel;
 use crate::math::{Real, Vec3};
 use crate::model::{LineEnd, Model, Motion, PointKind};
-use crate::simulation::{Observer, Simulation};
-use crate::statics::{StaticOptions, solve_with_release};
-use crate::system::{System, Workspace};
+use crate::session::{Observer, ObserverError, Session, View};
 
 /// Tether lengths L of the DG paper's study [m] (eq. 47).
 pub const LENGTHS: [Real; 4] = [200.0, 500.0, 975.0, 1730.0];
@@ -120,7 +118,8 @@ struct Recorder {
 }
 
 impl Observer for Recorder {
-    fn sample(&mut self, system: &System, time: Real, _state: &[Real], ws: &Workspace) {
+    fn sample(&mut self, view: &View<'_>) -> Result<(), ObserverError> {
+        let (system, time, ws) = (view.system, view.time, view.workspace);
         let r = &mut self.run;
         r.time.push(time);
         for (end_b, v) in [(false, &mut r.ship_tension), (true, &mut r.cage_tension)] {
@@ -142,24 +141,28 @@ impl Observer for Recorder {
             }
             .value(system, ws),
         );
+        Ok(())
     }
 }
 
 /// Runs `model` from its static equilibrium for `settings.duration`, sampling every
 /// `settings.output_interval`.
 pub fn run_tether(model: &Model) -> Result<TetherRun, RunError> {
-    let system = System::new(model)?;
-    let sol = solve_with_release(model, &system, &StaticOptions::default())?;
-    let mut sim = Simulation::new(&system, &model.settings, sol.state)?;
-    let mut rec = Recorder {
+    let mut session = Session::new(model.clone())?;
+    let system = session.system();
+    let recorder = Recorder {
         run: TetherRun::default(),
         elements: system.lines[0].mesh.elements(),
     };
+    let id = session.attach(recorder);
     let start = std::time::Instant::now();
-    sim.run(model.settings.duration, &mut rec)?;
-    rec.run.wall_seconds = start.elapsed().as_secs_f64();
-    rec.run.step = sim.step;
-    rec.run.steps = sim.steps_done();
+    session.run()?;
+    let wall_seconds = start.elapsed().as_secs_f64();
+    let (step, steps) = (session.step_size(), session.steps_done());
+    let mut rec: Recorder = session.detach(id).expect("the recorder is attached");
+    rec.run.wall_seconds = wall_seconds;
+    rec.run.step = step;
+    rec.run.steps = steps;
     Ok(rec.run)
 }
 

@@ -4,7 +4,6 @@
 
 use super::*;
 use crate::math::Mat3;
-use crate::simulation::Simulation;
 
 // ---------------------------------------------------------------------------------------------
 // Rigid rotation
@@ -364,7 +363,7 @@ pub fn energy_drift_with_filter(
     let mut ws = system.workspace();
     let e0 = system.mechanical_energy(0.0, &y, &mut ws).total();
     let settings = fixed_step_settings(dt, Scheme::Rk4);
-    let mut sim = Simulation::new(&system, &settings, y)?;
+    let mut sim = session_from(&model, settings, y)?;
     let steps = (duration / dt).round() as usize;
     let scale = mass * g * length * (1.0 - theta0.cos());
     let elements = model.lines[0].elements();
@@ -378,13 +377,13 @@ pub fn energy_drift_with_filter(
     for _ in 0..steps {
         sim.step()?;
         let e = system
-            .mechanical_energy(sim.time, &sim.state, &mut ws)
+            .mechanical_energy(sim.time(), sim.state(), &mut ws)
             .total()
             - e0;
         run.worst = run.worst.max(e.abs());
-        run.time.push(sim.time);
+        run.time.push(sim.time());
         run.drift.push(e / scale);
-        let ws = sim.evaluate()?;
+        let ws = sim.view()?.workspace;
         for element in 0..elements {
             let s = Channel::ElementStrain { line: 0, element }.value(&system, ws);
             run.min_strain = run.min_strain.min(s);

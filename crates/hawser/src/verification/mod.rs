@@ -354,6 +354,22 @@ pub fn has_bending(f: Formulation) -> bool {
 // Building blocks of the cases: models and formulation-neutral probes.
 // ---------------------------------------------------------------------------------------------
 
+/// A run of `model` under `settings` from `state` (of `assemble(model)`'s layout), with no
+/// initial statics.
+pub fn session_from(
+    model: &Model,
+    settings: Settings,
+    state: Vec<Real>,
+) -> Result<crate::Session, CaseError> {
+    let mut model = model.clone();
+    model.settings = settings;
+    Ok(crate::Session::from_state(
+        model,
+        state,
+        crate::session::SessionOptions::default(),
+    )?)
+}
+
 /// Assembles a model. A refusal is "not available" for a formulation other than `fe` (it is
 /// not implemented, or not for this model) and a failure for `fe` (every case is built to
 /// run with it).

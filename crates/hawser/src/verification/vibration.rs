@@ -2,7 +2,6 @@
 //! frequency, and bending frequencies of a tensioned pinned–pinned beam.
 
 use super::*;
-use crate::simulation::Simulation;
 use crate::statics::{StaticOptions, solve};
 use std::f64::consts::{PI, TAU};
 
@@ -105,7 +104,8 @@ pub fn hanging_mass_period(
         ));
     }
     let options = StaticOptions::default();
-    let rest = assemble(&hanging_mass_model(formulation, mass_matrix, 0.0))?;
+    let rest_model = hanging_mass_model(formulation, mass_matrix, 0.0);
+    let rest = assemble(&rest_model)?;
     let z_eq = point_state(&rest, &solve(&rest, None, &options)?.state, 1)
         .0
         .z;
@@ -118,11 +118,11 @@ pub fn hanging_mass_period(
     let dt = rk4_step(&rest, 1.0e-4, 0.8);
     let steps = (duration / dt).round() as usize;
     let settings = fixed_step_settings(dt, Scheme::Rk4);
-    let mut sim = Simulation::new(&rest, &settings, y)?;
+    let mut sim = session_from(&rest_model, settings, y)?;
     let mut height = Vec::with_capacity(steps);
     for _ in 0..steps {
         sim.step()?;
-        height.push(point_state(&rest, &sim.state, 1).0.z - z_eq);
+        height.push(point_state(&rest, sim.state(), 1).0.z - z_eq);
     }
     let crossings = upward_crossings(&height, 0.0, dt);
     if crossings.len() < 15 {
@@ -268,17 +268,17 @@ fn transverse_vibration(
             ..Default::default()
         },
     };
-    let mut sim = Simulation::new(&system, &settings, y)?;
+    let mut sim = session_from(model, settings, y)?;
     let probe = n / (2 * mode);
     let mut time = Vec::new();
     let mut displacement = Vec::new();
-    while sim.time < duration - 0.5 * sim.step {
+    while sim.time() < duration - 0.5 * sim.step_size() {
         sim.step()?;
-        let ws = sim.evaluate()?;
+        let ws = sim.view()?.workspace;
         displacement.push(node_position(&system, ws, 0, probe).y);
-        time.push(sim.time);
+        time.push(sim.time());
     }
-    let crossings = upward_crossings(&displacement, 0.0, sim.step);
+    let crossings = upward_crossings(&displacement, 0.0, sim.step_size());
     if crossings.len() < 3 {
         return Err(CaseError::Failed(format!(
             "{} upward crossings, 3 needed",

@@ -10,7 +10,6 @@
 
 use super::*;
 use crate::model::Motion;
-use crate::simulation::Simulation;
 
 /// Line length [m], γ0 [kg/m], EA [N].
 const LINE: (Real, Real, Real) = (100.0, 10.0, 1.0e7);
@@ -76,14 +75,14 @@ pub fn pulse_arrivals(
     let y = system.straight_state();
     let dt = 1.0e-5;
     let settings = fixed_step_settings(dt, Scheme::Rk4);
-    let mut sim = Simulation::new(&system, &settings, y)?;
+    let mut sim = session_from(&model, settings, y)?;
     // Nodes at 25, 50, 75 m from B (node index counts from A).
     let probes: Vec<usize> = [0.75, 0.5, 0.25]
         .iter()
         .map(|f| (f * elements as Real).round() as usize)
         .collect();
     let x0: Vec<Real> = {
-        let ws = sim.evaluate()?;
+        let ws = sim.view()?.workspace;
         probes
             .iter()
             .map(|&i| node_position(&system, ws, 0, i).x)
@@ -94,13 +93,13 @@ pub fn pulse_arrivals(
     // Until the slowest probe's arrival plus the ramp and margin, before the reflection from
     // A (which reaches the 25 m probe only after 175 m of travel).
     let t_end = 0.075 + 2.0 * ramp;
-    while sim.time < t_end {
+    while sim.time() < t_end {
         sim.step()?;
-        let ws = sim.evaluate()?;
+        let ws = sim.view()?.workspace;
         for (k, &i) in probes.iter().enumerate() {
             history[k].push(node_position(&system, ws, 0, i).x - x0[k]);
         }
-        time.push(sim.time);
+        time.push(sim.time());
     }
     let mut arrivals = Vec::new();
     for (k, &i) in probes.iter().enumerate() {

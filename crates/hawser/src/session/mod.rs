@@ -1,0 +1,368 @@
+//! A run as a library object: [`Session`] owns everything a dynamic run needs (the model, the
+//! assembled system, the state, the integrator and its scratch) and is driven by its host:
+//! the command line, a Python notebook, a coupling host such as OpenFAST or WEC-Sim.
+//!
+//! ```text
+//! Model ──Session::new──▶ System (assembled) + initial state (statics / release / steady tow /
+//!                         as defined) + Stepper (integrator, clock, workspace)
+//! host:  set coupled kinematics ─▶ advance_to(t) ─▶ read channels, line samples, reactions
+//!                                      │ every output interval
+//!                                      ▼
+//!                                  Observer::sample(&View)   (writers, recorders, progress)
+//! ```
+//!
+//! Stepping allocates nothing: the state, the workspace, the integrator's stages and the
+//! coupling buffers are sized when the session is built.
+
+mod coupling;
+mod initial;
+mod stepper;
+mod view;
+
+pub use initial::{StepFallback, initial_state, step_fallback};
+pub use stepper::Stepper;
+pub use view::{Attached, LineSample, LineSamples, Observer, ObserverError, RunEnd, View};
+
+use crate::analysis::OutputChannel;
+use crate::error::SimulationError;
+use crate::math::Real;
+use crate::model::{Model, TimeStep};
+use crate::statics::{StaticOptions, StaticSolution};
+use crate::system::{System, Workspace};
+use std::sync::Arc;
+use std::sync::atomic::AtomicBool;
+
+/// Choices of the host that are not part of the model.
+#[derive(Clone, Debug, Default)]
+pub struct SessionOptions {
+    /// Accept a fixed `time_step` above the stability estimate (expert use: a run that then
+    /// diverges stops with the time, line and node).
+    pub allow_unstable_step: bool,
+    /// Options of the initial statics.
+    pub statics: StaticOptions,
+}
+
+/// Identifies an attached observer ([`Session::attach`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct ObserverId(usize);
+
+/// An owning dynamic run: built from a [`Model`], stepped by its host, observed by writers.
+pub struct Session {
+    model: Model,
+    system: System,
+    stepper: Stepper,
+    channels: Vec<OutputChannel>,
+    observers: Vec<Option<Box<dyn Attached>>>,
+    statics: Option<StaticSolution>,
+    fallback: Option<StepFallback>,
+    /// Samples given to the observers so far (0: not even the one at t = 0).
+    samples: u64,
+    /// Time of the last sample [s].
+    last_sample: Real,
+    /// The end time of the model's duration on the output grid [s].
+    end_time: Real,
+    /// The coupled objects and the coupling interval in progress.
+    coupling: coupling::Coupling,
+}
+
+impl Session {
+    /// A run of `model` from its initial condition, with the default options.
+    pub fn new(model: Model) -> Result<Self, SimulationError> {
+        Self::with_options(model, SessionOptions::default())
+    }
+
+    /// A run of `model` from its initial condition ([`initial_state`]): the static
+    /// equilibrium (with released points held), the steady tow, or the lines as defined.
+    pub fn with_options(model: Model, options: SessionOptions) -> Result<Self, SimulationError> {
+        let system = System::new(&model)?;
+        let (state, statics) = initial_state(&system, &model, &options.statics)?;
+        Self::assemble(model, system, state, statics, &options)
+    }
+
+    /// A run of `model` from a given `state` (of the layout of `System::new(&model)`), with no
+    /// initial statics: verification cases that start from a known shape, restarts.
+    pub fn from_state(
+        model: Model,
+        state: Vec<Real>,
+        options: SessionOptions,
+    ) -> Result<Self, SimulationError> {
+        let system = System::new(&model)?;
+        if state.len() != system.layout.len {
+            return Err(SimulationError::Model(crate::error::ModelError::Invalid {
+                what: "the initial state".into(),
+                why: format!(
+                    "has {} entries where the model's state has {}",
+                    state.len(),
+                    system.layout.len
+                ),
+            }));
+        }
+        Self::assemble(model, system, state, None, &options)
+    }
+
+    fn assemble(
+        mut model: Model,
+        system: System,
+        state: Vec<Real>,
+        statics: Option<StaticSolution>,
+        options: &SessionOptions,
+    ) -> Result<Self, SimulationError> {
+        let fallback = step_fallback(&system, &model.settings);
+        if fallback.is_some() && !options.allow_unstable_step {
+            model.settings.time_step = TimeStep::Auto;
+        }
+        let stepper = Stepper::new(
+            &system,
+            &model.settings,
+            state,
+            !options.allow_unstable_step,
+        )?;
+        let channels = if model.outputs.is_empty() {
+            crate::analysis::channels::default_channels(&model)
+        } else {
+            model.outputs.clone()
+        };
+        let mut coupling = coupling::Coupling::of(&model);
+        // Sized now: saving the start of an interval allocates nothing.
+        stepper.save(&mut coupling.start);
+        let interval = stepper.sample_interval();
+        let duration = model.settings.duration;
+        let outputs = (duration / interval - 1e-9).ceil().max(0.0);
+        Ok(Self {
+            end_time: outputs * interval,
+            model,
+            system,
+            stepper,
+            channels,
+            observers: Vec::new(),
+            statics,
+            fallback: fallback.filter(|_| !options.allow_unstable_step),
+            samples: 0,
+            last_sample: 0.0,
+            coupling,
+        })
+    }
+
+    /// The model.
+    pub fn model(&self) -> &Model {
+        &self.model
+    }
+
+    /// The assembled system.
+    pub fn system(&self) -> &System {
+        &self.system
+    }
+
+    /// The initial static solution, when the run started from one.
+    pub fn initial_statics(&self) -> Option<&StaticSolution> {
+        self.statics.as_ref()
+    }
+
+    /// The input's fixed step, when it was above the stability limit and replaced by the
+    /// automatic step ([`crate::model::StepAboveLimit::UseAuto`]).
+    pub fn step_fallback(&self) -> Option<&StepFallback> {
+        self.fallback.as_ref()
+    }
+
+    /// Simulated time [s].
+    pub fn time(&self) -> Real {
+        self.stepper.time()
+    }
+
+    /// The state vector.
+    pub fn state(&self) -> &[Real] {
+        self.stepper.state()
+    }
+
+    /// Time step [s].
+    pub fn step_size(&self) -> Real {
+        self.stepper.step_size()
+    }
+
+    /// Stability limit of the scheme [s] and what sets it.
+    pub fn stable_step(&self) -> (Real, &str) {
+        self.stepper.stable_step()
+    }
+
+    /// Interval between samples [s] (a whole number of steps).
+    pub fn sample_interval(&self) -> Real {
+        self.stepper.sample_interval()
+    }
+
+    /// Right-hand-side evaluations per step.
+    pub fn evaluations_per_step(&self) -> usize {
+        self.stepper.evaluations_per_step()
+    }
+
+    /// Steps taken so far.
+    pub fn steps_done(&self) -> u64 {
+        self.stepper.steps_done()
+    }
+
+    /// End of the model's duration on the output grid [s]: the first sample time at or after
+    /// `settings.duration`.
+    pub fn end_time(&self) -> Real {
+        self.end_time
+    }
+
+    /// Time of the last sample given to the observers [s].
+    pub fn last_sample_time(&self) -> Real {
+        self.last_sample
+    }
+
+    /// The run's output channels, in column order.
+    pub fn channels(&self) -> &[OutputChannel] {
+        &self.channels
+    }
+
+    /// A flag that stops the run between two steps when set (by a signal handler, a GUI, a
+    /// Python KeyboardInterrupt): [`Session::advance_to`] then returns
+    /// [`SimulationError::Interrupted`] with the state of the last step.
+    pub fn set_interrupt(&mut self, flag: Arc<AtomicBool>) {
+        self.stepper.interrupt = Some(flag);
+    }
+
+    /// Attaches an observer; it receives every sample from now on.
+    pub fn attach(&mut self, observer: impl Attached) -> ObserverId {
+        self.observers.push(Some(Box::new(observer)));
+        ObserverId(self.observers.len() - 1)
+    }
+
+    /// The attached observer `id`, if it is a `T`.
+    pub fn observer<T: Attached>(&self, id: ObserverId) -> Option<&T> {
+        let o: &dyn std::any::Any = self.observers.get(id.0)?.as_deref()?;
+        o.downcast_ref()
+    }
+
+    /// The attached observer `id`, mutably, if it is a `T`.
+    pub fn observer_mut<T: Attached>(&mut self, id: ObserverId) -> Option<&mut T> {
+        let o: &mut dyn std::any::Any = self.observers.get_mut(id.0)?.as_deref_mut()?;
+        o.downcast_mut()
+    }
+
+    /// Detaches observer `id` and gives it back, if it is a `T`.
+    pub fn detach<T: Attached>(&mut self, id: ObserverId) -> Option<T> {
+        let slot = self.observers.get_mut(id.0)?;
+        if !slot.as_deref().is_some_and(|o| {
+            let o: &dyn std::any::Any = o;
+            o.is::<T>()
+        }) {
+            return None;
+        }
+        let o: Box<dyn std::any::Any> = slot.take()?;
+        o.downcast().ok().map(|b| *b)
+    }
+
+    /// The current state with its evaluation (channels, line samples, body loads). Evaluates
+    /// the right-hand side first when the state changed since the last evaluation.
+    pub fn view(&mut self) -> Result<View<'_>, SimulationError> {
+        self.stepper.evaluate(&self.system)?;
+        Ok(self.current_view())
+    }
+
+    fn current_view(&self) -> View<'_> {
+        view_of(
+            &self.system,
+            &self.stepper,
+            &self.channels,
+            self.samples.saturating_sub(1),
+        )
+    }
+
+    /// The workspace of the last evaluation (for low-level readers; [`Session::view`] is the
+    /// checked way).
+    pub fn workspace(&self) -> &Workspace {
+        self.stepper.workspace()
+    }
+
+    /// Advances one step, sampling if an output time is reached.
+    pub fn step(&mut self) -> Result<(), SimulationError> {
+        self.advance(None)
+    }
+
+    /// Steps to time `t` [s], sampling at every output time. When t − now is a whole number
+    /// of steps the run's own step is kept; otherwise the steps to t are shortened equally so
+    /// that the last ends at t (a coupling host's interval that the step does not divide).
+    pub fn advance_to(&mut self, t: Real) -> Result<(), SimulationError> {
+        self.advance(Some(t))
+    }
+
+    /// [`Session::advance_to`] `t`, or one step.
+    fn advance(&mut self, t: Option<Real>) -> Result<(), SimulationError> {
+        let Self {
+            system,
+            stepper,
+            channels,
+            observers,
+            samples,
+            last_sample,
+            ..
+        } = self;
+        let mut notify = |s: &Stepper| {
+            *samples += 1;
+            *last_sample = s.time();
+            let view = view_of(system, s, channels, *samples - 1);
+            for o in observers.iter_mut().flatten() {
+                o.sample(&view)
+                    .map_err(|e| SimulationError::Observer { message: e.0 })?;
+            }
+            Ok(())
+        };
+        stepper.sample_start(system, &mut notify)?;
+        match t {
+            Some(t) => stepper.advance(system, t, notify),
+            None => stepper.step_sampled(system, notify),
+        }
+    }
+
+    /// Runs to the end of the model's duration ([`Session::end_time`]).
+    pub fn run(&mut self) -> Result<(), SimulationError> {
+        self.advance_to(self.end_time)
+    }
+
+    /// Ends the run: every observer's [`Observer::finish`] with the last state (evaluated
+    /// when it can be) and how the run ended (`error`: the error that stopped it). Returns the
+    /// first observer error.
+    pub fn finish(&mut self, error: Option<&SimulationError>) -> Result<(), SimulationError> {
+        if error.is_none() {
+            self.advance_to(self.stepper.time())?;
+        }
+        // A state that cannot be evaluated (a singular mass matrix) reports the workspace of
+        // its last evaluation.
+        let _ = self.stepper.evaluate(&self.system);
+        let end = RunEnd {
+            last_sample: self.last_sample,
+            error: error.map(|e| e.to_string()),
+            interrupted: matches!(error, Some(SimulationError::Interrupted { .. })),
+        };
+        let mut observers = std::mem::take(&mut self.observers);
+        let view = self.current_view();
+        let mut first = None;
+        for o in observers.iter_mut().flatten() {
+            if let Err(e) = o.finish(&view, &end)
+                && first.is_none()
+            {
+                first = Some(SimulationError::Observer { message: e.0 });
+            }
+        }
+        self.observers = observers;
+        first.map_or(Ok(()), Err)
+    }
+}
+
+/// The view of a stepper's current state.
+fn view_of<'a>(
+    system: &'a System,
+    stepper: &'a Stepper,
+    channels: &'a [OutputChannel],
+    sample: u64,
+) -> View<'a> {
+    View {
+        system,
+        workspace: stepper.workspace(),
+        time: stepper.time(),
+        state: stepper.state(),
+        channels,
+        sample,
+    }
+}

@@ -1,0 +1,500 @@
+//! The time-stepping engine of a run: the integrator, its clock, the state and the scratch, on a
+//! system it borrows at each call. [`crate::Session`] owns one together with its system; the
+//! low-level [`crate::simulation::Simulation`] borrows a system for tests that compose parts.
+
+use crate::error::{ModelError, SimulationError};
+use crate::integrate::{ExplicitRk, ThreeLevel};
+use crate::math::Real;
+use crate::model::{Scheme, Settings, TimeStep};
+use crate::system::{Location, System, Workspace};
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
+
+/// C_k of the elastic-link paper's eq. 48 for the three-level scheme: the highest mode of a
+/// lumped element chain has ω = 2c/l, and the predictor–corrector needs ωΔt ≤ 1, so
+/// Δt ≤ l/(2c) (the paper allows C_k ≤ 1, which is unstable for this scheme).
+const WAVE_COURANT: Real = 0.5;
+
+/// The integrator of a run.
+#[derive(Clone, Debug)]
+pub(crate) enum Integrator {
+    /// An explicit Runge–Kutta scheme.
+    Rk(ExplicitRk),
+    /// The three-level scheme; `variable`: the step is chosen again from the wave speeds
+    /// (eq. 48) at the start of every output interval.
+    ThreeLevel { scheme: ThreeLevel, variable: bool },
+}
+
+/// Simulated time kept without accumulating round-off: t = anchor + n·Δt, with the anchor
+/// moved to the exact output time k·Δt_out whenever a step lands on one, so that in a run
+/// whose steps divide the output interval every time is k·Δt_out + j·Δt.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub(crate) struct Clock {
+    /// Current step [s].
+    pub step: Real,
+    /// The run's own step [s] (set at the start, or by the three-level scheme's variable
+    /// step); [`Stepper::advance`] shortens steps below it to land on a host's time.
+    pub nominal: Real,
+    /// Time the step count starts from [s].
+    pub anchor: Real,
+    /// Steps since the anchor.
+    pub since_anchor: u64,
+    /// Steps taken in all.
+    pub steps_done: u64,
+    /// Interval between samples [s] (a whole number of steps of the initial step).
+    pub interval: Real,
+    /// Index k of the next sample time k·Δt_out (the sample at t = 0 is index 0).
+    pub next_output: u64,
+}
+
+impl Clock {
+    /// Current time [s].
+    #[inline]
+    pub fn time(&self) -> Real {
+        self.anchor + self.since_anchor as Real * self.step
+    }
+
+    /// Whether the time has reached the next sample time, within half a step.
+    #[inline]
+    pub fn output_due(&self) -> bool {
+        self.time() >= self.next_output as Real * self.interval - 0.5 * self.step
+    }
+
+    /// Marks the next sample as taken, moving the anchor onto its exact time when the clock
+    /// sits on it.
+    pub fn take_output(&mut self) {
+        let boundary = self.next_output as Real * self.interval;
+        if (self.time() - boundary).abs() <= 1e-6 * self.step {
+            self.anchor = boundary;
+            self.since_anchor = 0;
+        }
+        self.next_output += 1;
+    }
+
+    /// Changes the step from now on.
+    pub fn set_step(&mut self, step: Real) {
+        if step != self.step {
+            self.anchor = self.time();
+            self.since_anchor = 0;
+            self.step = step;
+        }
+    }
+}
+
+/// Everything the next step of a [`Stepper`] needs, saved in memory (a coupling host's
+/// repeated interval) or in a checkpoint.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub(crate) struct Saved {
+    /// The state vector.
+    pub state: Vec<Real>,
+    /// The clock.
+    pub clock: Clock,
+    /// The three-level scheme's previous level (empty for Runge–Kutta schemes).
+    pub previous: Vec<Real>,
+    /// The three-level scheme's last step [s].
+    pub last_step: Real,
+}
+
+/// A run in progress on some system: integrator, clock, state and scratch, sized once.
+#[derive(Clone, Debug)]
+pub struct Stepper {
+    pub(crate) ws: Workspace,
+    pub(crate) integrator: Integrator,
+    derivative: Vec<Real>,
+    pub(crate) state: Vec<Real>,
+    pub(crate) clock: Clock,
+    /// Stability limit of the scheme [s] and what sets it.
+    pub(crate) stable_step: (Real, String),
+    /// Fraction of the stability limit used by automatic steps.
+    safety_factor: Real,
+    /// The stiffness-and-damping estimate of the stable step [s] ([`System::stable_step`]).
+    stiffness_limit: Real,
+    /// The state and clock before the last step, restored when that step diverged.
+    last_good: (Vec<Real>, Clock),
+    /// Stops the run between two steps when set.
+    pub(crate) interrupt: Option<Arc<AtomicBool>>,
+    /// Steps done when the workspace was last evaluated (`None`: never).
+    evaluated_at: Option<u64>,
+}
+
+/// What a step size rule found wrong.
+pub(crate) fn scheme_error(system: &System, scheme: Scheme) -> Option<SimulationError> {
+    if scheme == Scheme::ThreeLevel
+        && let Some(l) = system.lines.iter().find(|l| l.dg.is_some())
+    {
+        return Some(SimulationError::Model(ModelError::Invalid {
+            what: format!("line {}", l.name),
+            why: "uses `dg`, a first-order system in q and v, which the three-level scheme \
+                  (for second-order equations in positions) cannot step: use scheme = \
+                  \"ssp-rk3\" (the DG paper's) or \"rk4\""
+                .into(),
+        }));
+    }
+    if scheme == Scheme::ThreeLevel && !system.free_bodies.is_empty() {
+        return Some(SimulationError::Model(ModelError::Invalid {
+            what: format!("body {}", system.bodies[system.free_bodies[0]].body.name),
+            why: "is free: the three-level scheme does not integrate rigid bodies yet; use \
+                  scheme = \"rk4\" or \"ssp-rk3\""
+                .into(),
+        }));
+    }
+    None
+}
+
+impl Stepper {
+    /// Prepares a run of `system` from `initial` with the step rule of `settings`. With
+    /// `check`, a fixed step above the stability limit is refused; without, it is taken as
+    /// given (a run that then diverges stops with [`SimulationError::Diverged`]).
+    pub fn new(
+        system: &System,
+        settings: &Settings,
+        initial: Vec<Real>,
+        check: bool,
+    ) -> Result<Self, SimulationError> {
+        if let Some(e) = scheme_error(system, settings.scheme) {
+            return Err(e);
+        }
+        let (mut limit, mut culprit) = system.stable_step(settings.scheme);
+        let stiffness_limit = limit;
+        let n = initial.len();
+        let mut ws = system.workspace();
+        if settings.scheme == Scheme::ThreeLevel {
+            // Eq. 48 at the initial strains, bounded by the stiffness-and-damping estimate.
+            let mut derivative = vec![0.0; n];
+            system
+                .rhs(0.0, &initial, &mut derivative, &mut ws)
+                .map_err(|loc| divergence(limit, 0.0, loc, "singular mass matrix"))?;
+            let (wave, line, element) = system.wave_step(&ws, WAVE_COURANT);
+            if wave < limit {
+                limit = wave;
+                culprit = format!(
+                    "the axial wave in element {element} of line {} (elastic-link paper eq. 48)",
+                    system.lines[line].name
+                );
+            }
+        }
+        let wanted = match settings.time_step {
+            TimeStep::Auto => settings.safety_factor * limit,
+            TimeStep::Fixed(dt) => {
+                if check && dt > limit {
+                    return Err(SimulationError::StepTooLarge {
+                        step: dt,
+                        limit,
+                        culprit,
+                    });
+                }
+                dt
+            }
+        };
+        // Auto: a whole number of steps per output interval, none longer than wanted. Fixed:
+        // the user's step exactly, sampling every round(output_interval / step) steps.
+        let (step, per_output) = match settings.time_step {
+            TimeStep::Auto => {
+                let n = (settings.output_interval / wanted).ceil().max(1.0);
+                (settings.output_interval / n, n)
+            }
+            TimeStep::Fixed(dt) => (dt, (settings.output_interval / dt).round().max(1.0)),
+        };
+        let integrator = match settings.scheme.tableau() {
+            Some(t) => Integrator::Rk(ExplicitRk::new(t, n)),
+            None => Integrator::ThreeLevel {
+                scheme: ThreeLevel::new(system, n),
+                variable: settings.time_step == TimeStep::Auto,
+            },
+        };
+        Ok(Self {
+            ws,
+            integrator,
+            derivative: vec![0.0; n],
+            last_good: (initial.clone(), Clock::default()),
+            interrupt: None,
+            evaluated_at: None,
+            state: initial,
+            clock: Clock {
+                step,
+                nominal: step,
+                anchor: 0.0,
+                since_anchor: 0,
+                steps_done: 0,
+                interval: step * per_output,
+                next_output: 0,
+            },
+            stable_step: (limit, culprit),
+            safety_factor: settings.safety_factor,
+            stiffness_limit,
+        })
+    }
+
+    /// Simulated time [s].
+    #[inline]
+    pub fn time(&self) -> Real {
+        self.clock.time()
+    }
+
+    /// Saves what the next step needs into `saved` (no allocation once `saved` has the sizes).
+    pub(crate) fn save(&self, saved: &mut Saved) {
+        saved.state.clear();
+        saved.state.extend_from_slice(&self.state);
+        saved.clock = self.clock;
+        match &self.integrator {
+            Integrator::ThreeLevel { scheme, .. } => {
+                let (previous, last_step) = scheme.history();
+                saved.previous.clear();
+                saved.previous.extend_from_slice(previous);
+                saved.last_step = last_step;
+            }
+            Integrator::Rk(_) => {
+                saved.previous.clear();
+                saved.last_step = 0.0;
+            }
+        }
+    }
+
+    /// Marks the workspace stale (the inputs of the next evaluation changed).
+    pub(crate) fn invalidate(&mut self) {
+        self.evaluated_at = None;
+    }
+
+    /// Goes back to a saved point of this run (or of a run of the same model).
+    pub(crate) fn restore(&mut self, saved: &Saved) {
+        self.state.copy_from_slice(&saved.state);
+        self.clock = saved.clock;
+        if let Integrator::ThreeLevel { scheme, .. } = &mut self.integrator {
+            scheme.set_history(&saved.previous, saved.last_step);
+        }
+        self.evaluated_at = None;
+    }
+
+    /// The state vector.
+    #[inline]
+    pub fn state(&self) -> &[Real] {
+        &self.state
+    }
+
+    /// The workspace, holding the last evaluation.
+    #[inline]
+    pub fn workspace(&self) -> &Workspace {
+        &self.ws
+    }
+
+    /// Current time step [s].
+    #[inline]
+    pub fn step_size(&self) -> Real {
+        self.clock.step
+    }
+
+    /// Stability limit of the scheme [s] and what sets it.
+    pub fn stable_step(&self) -> (Real, &str) {
+        (self.stable_step.0, &self.stable_step.1)
+    }
+
+    /// Interval between samples [s] (a whole number of steps).
+    pub fn sample_interval(&self) -> Real {
+        self.clock.interval
+    }
+
+    /// Right-hand-side (force) evaluations per step.
+    pub fn evaluations_per_step(&self) -> usize {
+        match &self.integrator {
+            Integrator::Rk(rk) => rk.stages(),
+            Integrator::ThreeLevel { scheme, .. } => scheme.evaluations(),
+        }
+    }
+
+    /// Steps taken so far.
+    pub fn steps_done(&self) -> u64 {
+        self.clock.steps_done
+    }
+
+    /// Advances one step. Checks the interrupt flag before and the state for non-finite
+    /// values after; a step that diverged leaves the state and time of the last good step
+    /// (what a run's final state reports).
+    pub fn step(&mut self, system: &System) -> Result<(), SimulationError> {
+        let (t, dt) = (self.clock.time(), self.clock.step);
+        if let Some(flag) = &self.interrupt
+            && flag.load(Ordering::Relaxed)
+        {
+            return Err(SimulationError::Interrupted { time: t });
+        }
+        self.last_good.0.copy_from_slice(&self.state);
+        self.last_good.1 = self.clock;
+        let done = match &mut self.integrator {
+            Integrator::Rk(rk) => rk.step(system, &mut self.ws, t, dt, &mut self.state),
+            Integrator::ThreeLevel { scheme, .. } => {
+                scheme.step(system, &mut self.ws, t, dt, &mut self.state)
+            }
+        };
+        self.clock.steps_done += 1;
+        self.clock.since_anchor += 1;
+        let failed = match done {
+            Err(loc) => Some(divergence(
+                self.stable_step.0,
+                t,
+                loc,
+                "singular mass matrix",
+            )),
+            Ok(()) => self.state.iter().position(|x| !x.is_finite()).map(|i| {
+                divergence(
+                    self.stable_step.0,
+                    t,
+                    system.locate(i),
+                    "non-finite position or velocity",
+                )
+            }),
+        };
+        if let Some(e) = failed {
+            self.state.copy_from_slice(&self.last_good.0);
+            self.clock = self.last_good.1;
+            self.evaluated_at = None;
+            return Err(e);
+        }
+        Ok(())
+    }
+
+    /// One step; at an output time, marks the output taken, evaluates and calls `sample`.
+    pub(crate) fn step_sampled<F>(
+        &mut self,
+        system: &System,
+        sample: F,
+    ) -> Result<(), SimulationError>
+    where
+        F: FnOnce(&Stepper) -> Result<(), SimulationError>,
+    {
+        self.step(system)?;
+        if self.clock.output_due() {
+            self.take_output(system);
+            self.evaluate(system)?;
+            sample(self)?;
+        }
+        Ok(())
+    }
+
+    /// Steps to time `t` [s] exactly, sampling at every output time. When t − now is a whole
+    /// number of steps (within 1e-9 of one) the run's own step is kept, so that runs whose
+    /// hosts advance by whole steps are the same whatever the interval; otherwise the steps
+    /// of this advance are shortened equally so that the last ends at t (none is longer than
+    /// the run's step, so the stability limit holds).
+    pub(crate) fn advance<F>(
+        &mut self,
+        system: &System,
+        t: Real,
+        mut sample: F,
+    ) -> Result<(), SimulationError>
+    where
+        F: FnMut(&Stepper) -> Result<(), SimulationError>,
+    {
+        loop {
+            let nominal = self.clock.nominal;
+            let remaining = t - self.clock.time();
+            if !(remaining > 1e-9 * nominal) {
+                break;
+            }
+            let k = remaining / nominal;
+            let whole = k.round();
+            let step = if whole >= 1.0 && (k - whole).abs() <= 1e-9 * whole {
+                nominal
+            } else {
+                remaining / k.ceil().max(1.0)
+            };
+            self.clock.set_step(step);
+            self.step_sampled(system, &mut sample)?;
+        }
+        // Land on t itself (the steps sum to it within round-off).
+        let off = (self.clock.time() - t).abs();
+        if off != 0.0 && off <= 1e-6 * self.clock.step {
+            self.clock.anchor = t;
+            self.clock.since_anchor = 0;
+        }
+        Ok(())
+    }
+
+    /// Takes the sample at t = 0 once: marks it taken, evaluates and calls `sample`.
+    pub(crate) fn sample_start<F>(
+        &mut self,
+        system: &System,
+        sample: F,
+    ) -> Result<(), SimulationError>
+    where
+        F: FnOnce(&Stepper) -> Result<(), SimulationError>,
+    {
+        if self.clock.next_output == 0 {
+            self.take_output(system);
+            self.evaluate(system)?;
+            sample(self)?;
+        }
+        Ok(())
+    }
+
+    /// Whether the clock has reached the next sample time.
+    #[inline]
+    pub fn output_due(&self) -> bool {
+        self.clock.output_due()
+    }
+
+    /// Marks the sample due now as taken; the three-level scheme with automatic steps then
+    /// chooses the step of the next output interval (eq. 48): the whole interval in equal
+    /// steps no longer than the wave limit at the current strains and the stiffness estimate.
+    pub fn take_output(&mut self, system: &System) {
+        let first = self.clock.next_output == 0;
+        self.clock.take_output();
+        if !first && let Integrator::ThreeLevel { variable: true, .. } = self.integrator {
+            let wave = system.wave_step(&self.ws, WAVE_COURANT).0;
+            let wanted = self.safety_factor * wave.min(self.stiffness_limit);
+            let n = (self.clock.interval / wanted).ceil().max(1.0);
+            self.clock.set_step(self.clock.interval / n);
+            self.clock.nominal = self.clock.step;
+        }
+    }
+
+    /// Evaluates the right-hand side at the current state (fills tensions and end forces) and
+    /// checks for runaway strain; does nothing when the state has not changed since the last
+    /// evaluation.
+    pub fn evaluate(&mut self, system: &System) -> Result<&Workspace, SimulationError> {
+        if self.evaluated_at != Some(self.clock.steps_done) {
+            self.evaluate_anew(system)?;
+        }
+        Ok(&self.ws)
+    }
+
+    /// [`Stepper::evaluate`], always.
+    fn evaluate_anew(&mut self, system: &System) -> Result<(), SimulationError> {
+        let t = self.clock.time();
+        self.evaluated_at = None;
+        system
+            .rhs(t, &self.state, &mut self.derivative, &mut self.ws)
+            .map_err(|loc| divergence(self.stable_step.0, t, loc, "singular mass matrix"))?;
+        // Runaway strain: more than 100 % is no cable.
+        for (li, lw) in self.ws.lines.iter().enumerate() {
+            if let Some(e) = lw.elements.strain.iter().position(|&s| !(s < 1.0)) {
+                let loc = Location {
+                    object: system.lines[li].name.clone(),
+                    node: e + 1,
+                };
+                let reason = format!(
+                    "runaway strain {:.3} above 100 % in element {e}, between nodes {e} and {}",
+                    lw.elements.strain[e],
+                    e + 1
+                );
+                return Err(divergence(self.stable_step.0, t, loc, &reason));
+            }
+        }
+        self.evaluated_at = Some(self.clock.steps_done);
+        Ok(())
+    }
+}
+
+/// The error for a non-finite or runaway state at `location`, with the stable step estimate.
+pub(crate) fn divergence(
+    stable_step: Real,
+    time: Real,
+    location: Location,
+    reason: &str,
+) -> SimulationError {
+    SimulationError::Diverged {
+        time,
+        object: location.object,
+        node: location.node,
+        reason: reason.to_string(),
+        stable_step,
+    }
+}
