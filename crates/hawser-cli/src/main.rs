@@ -234,7 +234,7 @@ fn load(file: &Path) -> Option<LoadedScenario> {
 /// [`load`] with the choices for a MoorDyn deck; prints the deck's conversion notes unless
 /// `quiet`.
 fn load_with(file: &Path, deck: &DeckArgs, quiet: bool) -> Option<LoadedScenario> {
-    match scenario::load_input(file, &deck.options()) {
+    match hawser_io::input::load_input(file, &deck.options()) {
         Ok((s, notes)) => {
             if !quiet {
                 print_notes(file, &notes);

@@ -8,7 +8,7 @@ use common::*;
 use hawser::math::{Quat, Real, Vec3};
 use hawser::model::{Manoeuvre, ManoeuvreSpec, Motion, PointKind, RaoMotion, RigidMotion};
 use hawser_io::scenario;
-use hawser_io::scenario::build::read_rao_table;
+use hawser_io::scenario::tables::read_rao_table;
 use std::f64::consts::PI;
 use std::path::Path;
 

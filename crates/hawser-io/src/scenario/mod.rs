@@ -3,30 +3,15 @@
 pub mod build;
 pub mod diagnostics;
 pub mod schema;
+pub mod tables;
 
 pub use build::{InputFormat, LoadedScenario};
 pub use diagnostics::{Diagnostic, ScenarioError};
 
 use std::path::Path;
 
-/// Reads and validates an input file: a hawser scenario (TOML) or a MoorDyn v2 deck,
-/// recognised by its content (dashed MoorDyn section headers), not by its extension. `deck`
-/// holds the choices a deck leaves to its host (duration, vessel motion); the notes say what
-/// was converted or has no effect (empty for TOML).
-pub fn load_input(
-    path: &Path,
-    deck: &crate::moordyn::ConvertOptions,
-) -> Result<(LoadedScenario, Vec<crate::moordyn::Note>), ScenarioError> {
-    let source = read(path)?;
-    if crate::moordyn::looks_like_deck(&source) {
-        let d = crate::moordyn::parse(path, &source, deck)?;
-        Ok((d.loaded, d.notes))
-    } else {
-        Ok((build::build(path, &source)?, Vec::new()))
-    }
-}
-
-fn read(path: &Path) -> Result<String, ScenarioError> {
+/// The text of an input file, or a diagnostic naming it.
+pub(crate) fn read_source(path: &Path) -> Result<String, ScenarioError> {
     std::fs::read_to_string(path).map_err(|e| {
         ScenarioError::from(
             Diagnostic::new(
@@ -43,7 +28,7 @@ fn read(path: &Path) -> Result<String, ScenarioError> {
 
 /// Reads and validates a scenario file.
 pub fn load(path: &Path) -> Result<LoadedScenario, ScenarioError> {
-    let source = read(path)?;
+    let source = read_source(path)?;
     build::build(path, &source)
 }
 
