@@ -283,12 +283,7 @@ pub(super) fn environment_of(
 
 /// `Currents 1`: a steady profile from `current_profile.txt` beside the deck (MoorDyn reads
 /// it from the deck's folder): rows `z ux uy uz` after three header lines.
-fn current_profile(
-    c: &mut Converter,
-    t: &Token,
-    row: &Row,
-    dir: &Path,
-) -> Option<CurrentSpec> {
+fn current_profile(c: &mut Converter, t: &Token, row: &Row, dir: &Path) -> Option<CurrentSpec> {
     let path = dir.join("current_profile.txt");
     let mut rows = match read_current_profile(&path) {
         Ok(rows) => rows,

@@ -732,8 +732,8 @@ fn build_manoeuvre(
                 v,
                 &k("turn_angle"),
                 Check {
-                    ok: |_| true,
-                    expected: "deg, finite (positive to port, negative to starboard)",
+                    ok: |x| x.abs() <= Manoeuvre::MAX_TURN_ANGLE.to_degrees(),
+                    expected: "deg, from -36000 to 36000 (100 turns; positive to port, negative to starboard)",
                 },
                 "e.g. 270 for a turn to port through 270°, -90 for a quarter turn to starboard",
             )
@@ -753,6 +753,21 @@ fn build_manoeuvre(
         }
     };
     if b.errors.len() > errors {
+        return None;
+    }
+    let shortest = Manoeuvre::MIN_TRANSITION_RATIO * turn_radius;
+    if transition_length > 0.0 && transition_length < shortest && turn_angle != 0.0 {
+        let d = b
+            .diag(
+                span_of(&m.transition_length),
+                &k("transition_length"),
+                "the curvature transitions are too short to resolve",
+            )
+            .expected(format!(
+                "m, 0 or ≥ 1e-6 × turn_radius = {shortest:.3e} m"
+            ))
+            .hint("write 0 for a curvature that jumps to 1/turn_radius, or a transition of about a ship length");
+        b.push(d);
         return None;
     }
     if transition_length > turn_radius * turn_angle.abs() * (1.0 + 1e-12) && turn_angle != 0.0 {
