@@ -10,6 +10,7 @@ use hawser::statics::{StaticOptions, StaticSolution};
 use hawser::system::{System, Workspace};
 use hawser::{SimulationError, StaticsError};
 use hawser_io::results::{RunWriter, statics_json};
+use hawser_io::scenario::tables::read_text_file;
 use hawser_io::scenario::{self, Diagnostic, InputFormat, LoadedScenario};
 use indicatif::{ProgressBar, ProgressStyle};
 use std::path::{Path, PathBuf};
@@ -259,8 +260,7 @@ fn print_notes(file: &Path, notes: &[hawser_io::moordyn::Note]) {
 }
 
 fn convert(file: &Path, out: Option<&Path>, deck: &DeckArgs) -> Result<ExitCode> {
-    let source =
-        std::fs::read_to_string(file).with_context(|| format!("cannot read {}", file.display()))?;
+    let source = read_text_file(file).with_context(|| format!("cannot read {}", file.display()))?;
     if !hawser_io::moordyn::looks_like_deck(&source) {
         eprintln!(
             "error: {} is not a MoorDyn deck (no `---- LINE TYPES ----`, `---- POINTS ----` or `---- LINES ----` section)\n  = hint: `hawser convert` reads MoorDyn v2 input decks; hawser scenarios need no conversion",
@@ -311,7 +311,7 @@ fn step_error(file: &Path, loaded: &LoadedScenario, e: &SimulationError) -> Stri
         culprit,
     } = e
     {
-        let source = std::fs::read_to_string(file).unwrap_or_default();
+        let source = read_text_file(file).unwrap_or_default();
         let d = Diagnostic::new(
             file,
             &source,

@@ -396,6 +396,23 @@ fn rao_file_missing() {
     );
 }
 
+/// `/dev/zero` as a motion file was read until memory ran out, and a FIFO blocked for ever:
+/// both are refused at the `file` key, naming the file and what it is.
+#[cfg(unix)]
+#[test]
+fn rao_file_not_a_regular_file() {
+    let text = mutate("tests/motion_data/vessel_raos.csv", "/dev/zero");
+    let msg = bad(&text, "file = ", "points[1].motion.file");
+    assert!(
+        msg.contains("cannot read /dev/zero: it is a character device, not a regular file"),
+        "{msg}"
+    );
+    // The input façade refuses them as input files too, before opening them.
+    let options = hawser_io::moordyn::ConvertOptions::default();
+    let e = hawser_io::input::load_input(Path::new("/dev/zero"), &options).unwrap_err();
+    insta::assert_snapshot!(e.to_string());
+}
+
 #[test]
 fn rao_mean_of_a_point_motion_type() {
     let text = mutate("type = \"constant-velocity\"", "type = \"sinusoid\"");

@@ -12,16 +12,21 @@ use std::path::Path;
 
 /// The text of an input file, or a diagnostic naming it.
 pub(crate) fn read_source(path: &Path) -> Result<String, ScenarioError> {
-    std::fs::read_to_string(path).map_err(|e| {
+    read_file(path, "input file")
+}
+
+/// The text of `path`, or a diagnostic "cannot read the `what`: …" naming it.
+pub(crate) fn read_file(path: &Path, what: &str) -> Result<String, ScenarioError> {
+    tables::read_text_file(path).map_err(|e| {
+        let hint = match e.is_refused() {
+            true => format!(
+                "hawser reads regular files of at most {} MiB",
+                tables::MAX_FILE_BYTES >> 20
+            ),
+            false => "check the path".to_string(),
+        };
         ScenarioError::from(
-            Diagnostic::new(
-                path,
-                "",
-                None,
-                "",
-                format!("cannot read the input file: {e}"),
-            )
-            .hint("check the path"),
+            Diagnostic::new(path, "", None, "", format!("cannot read the {what}: {e}")).hint(hint),
         )
     })
 }

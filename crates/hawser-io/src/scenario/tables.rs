@@ -1,9 +1,130 @@
-//! Every file of numbers an input refers to is read here, by the TOML builder and the MoorDyn
-//! deck reader alike: vessel-motion and point-motion tables, RAO tables, and MoorDyn's
-//! tension–strain tables and current profiles.
+//! Every file an input reads is read here, by the TOML builder and the MoorDyn deck reader
+//! alike: the input file itself ([`read_text_file`]) and the files of numbers it refers to
+//! (vessel-motion and point-motion tables, RAO tables, MoorDyn's tension–strain tables and
+//! current profiles). Only regular files are read (a FIFO would block, a device such as
+//! `/dev/zero` never end), and none larger than [`MAX_FILE_BYTES`].
 
 use hawser::model::*;
+use std::fmt;
+use std::io::Read;
 use std::path::Path;
+
+/// Largest file hawser reads as input [bytes]: 256 MiB, some 30 times a 6-DOF motion table
+/// sampled at 100 Hz for 3 hours. Larger files are refused before they are read.
+pub const MAX_FILE_BYTES: u64 = 256 << 20;
+
+/// Why a file could not be read.
+#[derive(Debug)]
+pub enum ReadError {
+    /// The operating system's error (not found, permission denied, not UTF-8, …).
+    Io(std::io::Error),
+    /// Not a regular file: a directory, FIFO, socket or device (`what` says which).
+    NotRegular {
+        /// What the path is, e.g. "a FIFO (named pipe)".
+        what: &'static str,
+    },
+    /// Larger than the limit.
+    TooLarge {
+        /// Its size [bytes] (at least; a file that grows while read may be larger).
+        size: u64,
+        /// The limit [bytes].
+        limit: u64,
+    },
+}
+
+impl ReadError {
+    /// Whether the file exists but is refused (not regular, or too large).
+    pub fn is_refused(&self) -> bool {
+        !matches!(self, ReadError::Io(_))
+    }
+}
+
+impl fmt::Display for ReadError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            ReadError::Io(e) => write!(f, "{e}"),
+            ReadError::NotRegular { what } => write!(f, "it is {what}, not a regular file"),
+            ReadError::TooLarge { size, limit } => write!(
+                f,
+                "it holds {size} bytes, above the limit of {limit} bytes ({} MiB) of an input file",
+                limit >> 20
+            ),
+        }
+    }
+}
+
+impl std::error::Error for ReadError {}
+
+/// The text of the regular file `path`, of at most [`MAX_FILE_BYTES`].
+pub fn read_text_file(path: &Path) -> Result<String, ReadError> {
+    read_bounded(path, MAX_FILE_BYTES)
+}
+
+/// The text of the regular file `path`, of at most `limit` bytes. The kind is checked before
+/// the file is opened (opening a FIFO blocks until a writer comes), and the read stops after
+/// `limit + 1` bytes whatever size the file reports (files under `/proc` report 0).
+fn read_bounded(path: &Path, limit: u64) -> Result<String, ReadError> {
+    let regular = |m: &std::fs::Metadata| -> Result<(), ReadError> {
+        let t = m.file_type();
+        if t.is_file() {
+            return Ok(());
+        }
+        Err(ReadError::NotRegular {
+            what: file_kind(&t),
+        })
+    };
+    let meta = std::fs::metadata(path).map_err(ReadError::Io)?;
+    regular(&meta)?;
+    if meta.len() > limit {
+        return Err(ReadError::TooLarge {
+            size: meta.len(),
+            limit,
+        });
+    }
+    let file = std::fs::File::open(path).map_err(ReadError::Io)?;
+    regular(&file.metadata().map_err(ReadError::Io)?)?;
+    let mut bytes = Vec::with_capacity(meta.len() as usize);
+    let read = file
+        .take(limit + 1)
+        .read_to_end(&mut bytes)
+        .map_err(ReadError::Io)?;
+    if read as u64 > limit {
+        return Err(ReadError::TooLarge {
+            size: read as u64,
+            limit,
+        });
+    }
+    String::from_utf8(bytes).map_err(|_| {
+        ReadError::Io(std::io::Error::new(
+            std::io::ErrorKind::InvalidData,
+            "stream did not contain valid UTF-8",
+        ))
+    })
+}
+
+/// What a file that is not regular is, in words.
+fn file_kind(t: &std::fs::FileType) -> &'static str {
+    if t.is_dir() {
+        return "a directory";
+    }
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::FileTypeExt;
+        if t.is_fifo() {
+            return "a FIFO (named pipe)";
+        }
+        if t.is_socket() {
+            return "a socket";
+        }
+        if t.is_char_device() {
+            return "a character device";
+        }
+        if t.is_block_device() {
+            return "a block device";
+        }
+    }
+    "not a file"
+}
 
 /// Reads an RAO table (docs/motions.md): `#` comments and blank lines skipped; a header line
 /// whose first name is `period_s`, `frequency_hz` or `omega_rad_s` (the unit of the first
@@ -13,8 +134,7 @@ use std::path::Path;
 /// headings in increasing order. Errors name the file and line.
 pub fn read_rao_table(path: &Path) -> Result<RaoTable, String> {
     use std::f64::consts::TAU;
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| format!("cannot read {}: {e}", path.display()))?;
+    let text = read_text_file(path).map_err(|e| format!("cannot read {}: {e}", path.display()))?;
     let at = |n: usize| format!("{}:{}", path.display(), n + 1);
     let mut unit: Option<&str> = None;
     // (first column value, heading [deg], amplitudes, phases [deg]) in file order.
@@ -179,8 +299,7 @@ pub fn read_rao_table(path: &Path) -> Result<RaoTable, String> {
 /// semicolons, tabs or spaces; blank lines, `#` comments and one header line are skipped.
 /// `columns` names the columns for error messages.
 pub fn read_table<const N: usize>(path: &Path, columns: &str) -> Result<Vec<[f64; N]>, String> {
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| format!("cannot read {}: {e}", path.display()))?;
+    let text = read_text_file(path).map_err(|e| format!("cannot read {}: {e}", path.display()))?;
     let mut rows = Vec::new();
     for (n, line) in text.lines().enumerate() {
         let line = line.trim();
@@ -229,7 +348,7 @@ pub fn read_table<const N: usize>(path: &Path, columns: &str) -> Result<Vec<[f64
 /// Reads a MoorDyn tension–strain table: rows `strain tension` [-, N], whitespace or comma
 /// separated, header lines skipped; a `(0, 0)` row is added when missing.
 pub fn read_tension_strain(path: &Path) -> Result<Vec<[f64; 2]>, String> {
-    let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    let text = read_text_file(path).map_err(|e| format!("{}: {e}", path.display()))?;
     let mut rows = Vec::new();
     for line in text.lines() {
         let nums: Vec<f64> = line
@@ -254,7 +373,7 @@ pub fn read_tension_strain(path: &Path) -> Result<Vec<[f64; 2]>, String> {
 /// lines (any line not all numbers) skipped; missing velocity components are 0. Rows in file
 /// order.
 pub fn read_current_profile(path: &Path) -> Result<Vec<[f64; 4]>, String> {
-    let text = std::fs::read_to_string(path).map_err(|e| e.to_string())?;
+    let text = read_text_file(path).map_err(|e| e.to_string())?;
     let mut rows: Vec<[f64; 4]> = Vec::new();
     for line in text.lines() {
         let nums: Vec<f64> = line
@@ -278,4 +397,78 @@ pub fn read_current_profile(path: &Path) -> Result<Vec<[f64; 4]>, String> {
 pub fn parse_number(text: &str) -> Option<f64> {
     let t = text.replace(['d', 'D'], "e");
     t.parse::<f64>().ok().filter(|x| x.is_finite())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn temp(name: &str) -> std::path::PathBuf {
+        let dir = std::env::temp_dir().join(format!("hawser-tables-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        dir.join(name)
+    }
+
+    /// `/dev/zero` was read until memory ran out; a FIFO blocked for ever. Both are refused
+    /// before they are opened, as is a directory.
+    #[cfg(unix)]
+    #[test]
+    fn devices_fifos_and_directories_are_refused() {
+        let e = read_text_file(Path::new("/dev/zero")).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "it is a character device, not a regular file"
+        );
+        let fifo = temp("fifo");
+        let _ = std::fs::remove_file(&fifo);
+        let made = std::process::Command::new("mkfifo").arg(&fifo).status();
+        if made.is_ok_and(|s| s.success()) {
+            let e = read_text_file(&fifo).unwrap_err();
+            assert_eq!(
+                e.to_string(),
+                "it is a FIFO (named pipe), not a regular file"
+            );
+            assert!(e.is_refused());
+        }
+        let e = read_text_file(&std::env::temp_dir()).unwrap_err();
+        assert_eq!(e.to_string(), "it is a directory, not a regular file");
+    }
+
+    /// A file above the limit is refused from its size, before it is read (this one is
+    /// sparse: 256 MiB + 1 byte of nothing), with its size and the limit in the message.
+    #[test]
+    fn files_above_the_limit_are_refused_unread() {
+        let path = temp("big.csv");
+        let f = std::fs::File::create(&path).unwrap();
+        f.set_len(MAX_FILE_BYTES + 1).unwrap();
+        let e = read_text_file(&path).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "it holds 268435457 bytes, above the limit of 268435456 bytes (256 MiB) of an input file"
+        );
+        std::fs::remove_file(&path).unwrap();
+    }
+
+    /// The read itself stops after limit + 1 bytes, whatever size the file reports (files
+    /// under /proc report 0): here the limit is below the file's size.
+    #[test]
+    fn the_read_is_bounded() {
+        let path = temp("small.csv");
+        std::fs::write(&path, "0, 1, 2\n3, 4, 5\n").unwrap();
+        assert_eq!(read_bounded(&path, 16).unwrap(), "0, 1, 2\n3, 4, 5\n");
+        let e = read_bounded(&path, 15).unwrap_err();
+        assert!(
+            matches!(
+                e,
+                ReadError::TooLarge {
+                    size: 16,
+                    limit: 15
+                }
+            ),
+            "{e}"
+        );
+        let missing = read_text_file(&temp("missing.csv")).unwrap_err();
+        assert!(!missing.is_refused());
+        std::fs::remove_file(&path).unwrap();
+    }
 }
