@@ -17,10 +17,11 @@
 //! reported in the deck's words.
 
 use super::deck::{Deck, Row, Section, SectionKind, Token};
-use crate::scenario::diagnostics::line_number;
+use crate::scenario::diagnostics::LineIndex;
 use crate::scenario::schema::*;
 use crate::scenario::tables::parse_number;
 use crate::scenario::{Diagnostic, ScenarioError};
+use std::collections::HashMap;
 use std::ops::Range;
 use std::path::{Path, PathBuf};
 use toml::Spanned;
@@ -69,17 +70,30 @@ impl Conversion {
     /// Rewrites validation errors so they name the deck's sections and columns instead of
     /// scenario keys.
     pub fn in_deck_words(&self, mut e: ScenarioError) -> ScenarioError {
+        // Key → words (a key named twice keeps its last words), so that each diagnostic
+        // costs a few lookups, not a pass over every key of the deck.
+        let names: HashMap<&str, &str> = self
+            .key_names
+            .iter()
+            .map(|(k, w)| (k.as_str(), w.as_str()))
+            .collect();
         for d in &mut e.diagnostics {
-            // the longest matching prefix names the most specific column
-            let best = self
-                .key_names
-                .iter()
-                .filter(|(k, _)| {
-                    d.key == *k
-                        || d.key.starts_with(&format!("{k}."))
-                        || d.key.starts_with(&format!("{k}["))
+            // The longest prefix of the key that ends at a `.`, a `[` or the key's end names
+            // the most specific column.
+            let ends = d
+                .key
+                .char_indices()
+                .filter(|&(_, c)| c == '.' || c == '[')
+                .map(|(i, _)| i)
+                .chain([d.key.len()]);
+            let best = ends
+                .filter_map(|i| {
+                    #[cfg(test)]
+                    crate::scenario::diagnostics::work::add(1);
+                    names.get_key_value(&d.key[..i])
                 })
-                .max_by_key(|(k, _)| k.len());
+                .max_by_key(|(k, _)| k.len())
+                .map(|(k, w)| (k.to_string(), w.to_string()));
             if let Some((k, words)) = best {
                 let old = d.key.clone();
                 d.message = d
@@ -116,6 +130,8 @@ const LINE_COLUMNS: &[&str] = &[
 struct Converter<'a> {
     file: &'a Path,
     source: &'a str,
+    /// Line starts of `source`, to locate every diagnostic in O(log lines).
+    lines: LineIndex,
     errors: Vec<Diagnostic>,
     notes: Vec<Note>,
     key_names: Vec<(String, String)>,
@@ -132,7 +148,7 @@ impl<'a> Converter<'a> {
         key: &str,
         message: impl Into<String>,
     ) -> Diagnostic {
-        Diagnostic::new(self.file, self.source, span, key, message)
+        Diagnostic::indexed(self.file, self.source, &self.lines, span, key, message)
     }
 
     fn note(&mut self, line: usize, message: impl Into<String>) {
@@ -147,7 +163,7 @@ impl<'a> Converter<'a> {
     }
 
     fn line_of(&self, span: &Range<usize>) -> usize {
-        line_number(self.source, span.start)
+        self.lines.line(span.start)
     }
 
     /// A number from a table cell, or an error naming the section and column.
@@ -280,6 +296,7 @@ pub fn convert(
     let mut c = Converter {
         file,
         source,
+        lines: LineIndex::new(source),
         errors: Vec::new(),
         notes: Vec::new(),
         key_names: Vec::new(),

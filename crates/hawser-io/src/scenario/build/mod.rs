@@ -1,7 +1,7 @@
 //! Validation of a parsed scenario and its conversion into a [`hawser::Model`].
 //! Every problem is collected (not just the first) with its file position.
 
-use super::diagnostics::{Diagnostic, ScenarioError, line_number};
+use super::diagnostics::{Diagnostic, LineIndex, ScenarioError};
 use super::schema::*;
 use hawser::math::Vec3;
 use hawser::model::*;
@@ -59,6 +59,8 @@ pub enum InputFormat {
 struct Builder<'a> {
     file: &'a Path,
     source: &'a str,
+    /// Line starts of `source`, to locate every diagnostic in O(log lines).
+    lines: LineIndex,
     errors: Vec<Diagnostic>,
 }
 
@@ -74,13 +76,22 @@ const NON_NEGATIVE: fn(f64) -> bool = |x| x >= 0.0;
 const DEFAULT_DG_ORDER: usize = 4;
 
 impl<'a> Builder<'a> {
+    fn new(file: &'a Path, source: &'a str) -> Self {
+        Self {
+            file,
+            source,
+            lines: LineIndex::new(source),
+            errors: Vec::new(),
+        }
+    }
+
     fn diag(
         &self,
         span: Option<Range<usize>>,
         key: &str,
         message: impl Into<String>,
     ) -> Diagnostic {
-        Diagnostic::new(self.file, self.source, span, key, message)
+        Diagnostic::indexed(self.file, self.source, &self.lines, span, key, message)
     }
 
     /// Refuses an object name that cannot be a channel prefix (empty, or with `.`, `,` or a
@@ -105,7 +116,7 @@ impl<'a> Builder<'a> {
 
     /// 1-based line of a byte offset, for "first defined on line N" hints.
     fn line_of(&self, span: Range<usize>) -> usize {
-        line_number(self.source, span.start)
+        self.lines.line(span.start)
     }
 
     /// Checks a number is finite and in range; returns it (or a harmless default on error).
@@ -185,11 +196,7 @@ pub fn build_scenario(
     source: &str,
     scenario: &Scenario,
 ) -> Result<LoadedScenario, ScenarioError> {
-    let mut b = Builder {
-        file,
-        source,
-        errors: Vec::new(),
-    };
+    let mut b = Builder::new(file, source);
     let environment = build_environment(&mut b, scenario.environment.as_ref());
     let (line_types, type_index) = build_line_types(&mut b, &scenario.line_types);
     let body_names: Vec<String> = scenario
@@ -271,4 +278,102 @@ pub fn build_scenario(
         time_step_span,
         format: InputFormat::Toml,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::scenario::diagnostics::work;
+    use std::path::Path;
+
+    /// A valid scenario, then `n` copies of `bad` (with `{i}` replaced by 0, 1, …).
+    fn scenario(n: usize, bad: &str) -> String {
+        let mut s = String::from(
+            "[[line_types]]\nname = \"chain\"\ndiameter = 0.1\nmass_per_length = 100.0\n\
+             axial_stiffness = 1e8\nnormal_drag = 1.2\ntangential_drag = 0.02\n\n[[points]]\nname = \"anchor\"\ntype = \"fixed\"\n\
+             position = [0.0, 0.0, -100.0]\n\n[[points]]\nname = \"top\"\ntype = \"fixed\"\n\
+             position = [50.0, 0.0, 0.0]\n\n[[lines]]\nname = \"line\"\nend_a = \"anchor\"\n\
+             end_b = \"top\"\ntype = \"chain\"\nlength = 120.0\nelements = 10\n",
+        );
+        for i in 0..n {
+            s += &bad.replace("{i}", &i.to_string());
+        }
+        s
+    }
+
+    /// (errors, work counted) of reading `text`.
+    fn errors_and_work(text: &str, read: fn(&str) -> Option<usize>) -> (usize, usize) {
+        let before = work::done();
+        let errors = read(text).expect("rejected");
+        (errors, work::done() - before)
+    }
+
+    fn toml(text: &str) -> Option<usize> {
+        super::build(Path::new("many.toml"), text)
+            .err()
+            .map(|e| e.diagnostics.len())
+    }
+
+    fn deck(text: &str) -> Option<usize> {
+        let options = crate::moordyn::ConvertOptions::default();
+        crate::moordyn::parse(Path::new("many.dat"), text, &options)
+            .err()
+            .map(|e| e.diagnostics.len())
+    }
+
+    /// Checks that the work of reporting `n` and `2n` errors grows linearly: doubling the
+    /// errors (and the file) at most doubles it, with 10 % for the fixed part (quadratic
+    /// growth, as when each error scanned the file up to its offset, gives 4×).
+    fn assert_linear(what: &str, make: impl Fn(usize) -> String, read: fn(&str) -> Option<usize>) {
+        let n = 1000;
+        let (e1, w1) = errors_and_work(&make(n), read);
+        let (e2, w2) = errors_and_work(&make(2 * n), read);
+        assert_eq!((e1, e2), (n, 2 * n), "{what}: one error per bad entry");
+        let ratio = w2 as f64 / w1 as f64;
+        assert!(
+            ratio < 2.2,
+            "{what}: work {w1} for {n} errors, {w2} for {}",
+            2 * n
+        );
+        // And per error, no more than a few times the text of its table.
+        assert!(w2 < 64 * make(2 * n).len(), "{what}: work {w2}");
+    }
+
+    /// Error reporting once grew quadratically with the number of errors (16 000 took 52 s):
+    /// each diagnostic scanned the file up to its offset to find its line, and each TOML
+    /// error parsed the whole file again to find its key. Both are linear now.
+    #[test]
+    fn error_reporting_is_linear_in_the_errors() {
+        let value = "\n[[points]]\nname = \"p{i}\"\ntype = \"free\"\nposition = [0.0, 0.0, -10.0]\nmass = -1.0\n";
+        assert_linear("bad values", |n| scenario(n, value), toml);
+        let key = "\n[[points]]\nname = \"p{i}\"\ntype = \"fixed\"\nposition = [0.0, 0.0, -10.0]\nmas = 1.0\n";
+        assert_linear("unknown keys", |n| scenario(n, key), toml);
+        let deck_of = |n: usize| {
+            let mut s = String::from(
+                "--- MoorDyn ---\n---- LINE TYPES ----\nTypeName Diam Mass/m EA BA/-zeta EI Cd Ca CdAx CaAx\n\
+                 (-) (m) (kg/m) (N) (N-s) (N-m^2) (-) (-) (-) (-)\n\
+                 main 0.09 77.7 3.8e8 -0.8 0 1.6 1.0 0.1 0.0\n\
+                 ---- POINTS ----\nID Type X Y Z Mass Volume CdA Ca\n(#) (-) (m) (m) (m) (kg) (m^3) (m^2) (-)\n\
+                 1 Fixed 800 0 -320 0 0 0 0\n2 Fixed 0 0 -70 0 0 0 0\n",
+            );
+            for i in 0..n {
+                s += &format!("{} Free 0 0 -10 -1.0 0 0 0\n", i + 3);
+            }
+            s += "---- LINES ----\nID LineType AttachA AttachB UnstrLen NumSegs LineOutputs\n\
+                  (#) (name) (#) (#) (m) (-) (-)\n1 main 1 2 900 20 -\n\
+                  ---- OPTIONS ----\n0.002 dtM\n320 WtrDpth\n--- END ---\n";
+            s
+        };
+        assert_linear("deck values", deck_of, deck);
+    }
+
+    /// The JSON Schema behind the hints is built once per process, not once per rejected
+    /// scenario.
+    #[test]
+    fn the_schema_is_built_once() {
+        let key = "\n[[points]]\nname = \"p{i}\"\ntype = \"fixed\"\nposition = \"here\"\n";
+        for n in [1, 3] {
+            assert!(toml(&scenario(n, key)).is_some());
+        }
+        assert_eq!(super::toml_errors::schema_builds_count(), 1);
+    }
 }

@@ -1,19 +1,43 @@
 //! TOML and serde errors of a scenario file turned into diagnostics: the key path at an
 //! error's offset, the schema's documentation of that key, and a hint.
 
-use crate::scenario::diagnostics::{Diagnostic, ScenarioError, closest, line_number};
+#[cfg(test)]
+use crate::scenario::diagnostics::work;
+use crate::scenario::diagnostics::{Diagnostic, LineIndex, ScenarioError, closest};
 use crate::scenario::schema::*;
+use std::collections::HashSet;
 use std::ops::Range;
 use std::path::Path;
+use std::sync::OnceLock;
 use toml::Spanned;
+use toml::de::DeTable;
+
+/// What every error of one file is read against: its text, line index and a best-effort
+/// parse, each made once per file (not once per error).
+struct Source<'a> {
+    file: &'a Path,
+    text: &'a str,
+    lines: LineIndex,
+    doc: Spanned<DeTable<'a>>,
+}
 
 /// The first error of the file and, if the TOML itself is valid, the first error of every
 /// other table: each section and each `[[...]]` element is checked on its own.
 pub(super) fn schema_errors(file: &Path, source: &str, first: &toml::de::Error) -> ScenarioError {
     use serde::Deserialize;
     use toml::de::{DeValue, ValueDeserializer};
-    let mut errors = vec![toml_error(file, source, first)];
-    if let Ok(doc) = toml::de::DeTable::parse(source) {
+    let (doc, _) = DeTable::parse_recoverable(source);
+    #[cfg(test)]
+    work::add(source.len());
+    let src = Source {
+        file,
+        text: source,
+        lines: LineIndex::new(source),
+        doc,
+    };
+    let mut errors = vec![toml_error(&src, first)];
+    let mut seen: HashSet<(usize, usize)> = errors.iter().map(|d| (d.line, d.column)).collect();
+    if let Ok(doc) = DeTable::parse(source) {
         for (key, value) in doc.get_ref().iter() {
             let items: Vec<&Spanned<DeValue>> = match value.get_ref() {
                 DeValue::Array(a) => a.iter().collect(),
@@ -32,11 +56,8 @@ pub(super) fn schema_errors(file: &Path, source: &str, first: &toml::de::Error) 
                     _ => None,
                 };
                 let Some(e) = e else { continue };
-                let d = toml_error(file, source, &e);
-                if !errors
-                    .iter()
-                    .any(|x| (x.line, x.column) == (d.line, d.column))
-                {
+                let d = toml_error(&src, &e);
+                if seen.insert((d.line, d.column)) {
                     errors.push(d);
                 }
             }
@@ -49,14 +70,15 @@ pub(super) fn schema_errors(file: &Path, source: &str, first: &toml::de::Error) 
 }
 
 /// Turns a TOML or serde error into a diagnostic with a hint.
-fn toml_error(file: &Path, source: &str, e: &toml::de::Error) -> Diagnostic {
+fn toml_error(src: &Source, e: &toml::de::Error) -> Diagnostic {
+    let (file, source) = (src.file, src.text);
     let message = e.message().trim().to_string();
     let quoted: Vec<&str> = message.split('`').skip(1).step_by(2).collect();
     let first = quoted.first().copied().unwrap_or("");
     let span = e.span();
     let mut at = span
         .as_ref()
-        .map(|s| key_at(source, s.start))
+        .map(|s| key_at(source, src.doc.get_ref(), s.start))
         .unwrap_or_default();
     let syntax = !(message.starts_with("unknown field")
         || message.starts_with("missing field")
@@ -81,12 +103,19 @@ fn toml_error(file: &Path, source: &str, e: &toml::de::Error) -> Diagnostic {
         })
         .unwrap_or_default();
     let in_array = matches!(at.path.last(), Some(Step::Index(_)));
-    let line_of = |offset: usize| line_number(source, offset);
+    let line_of = |offset: usize| src.lines.line(offset);
     let one_of = |known: &[&str]| {
         let list: Vec<String> = known.iter().map(|q| format!("`{q}`")).collect();
         format!("one of {}", list.join(", "))
     };
-    let mut d = Diagnostic::new(file, source, span.clone(), path.clone(), message.clone());
+    let mut d = Diagnostic::indexed(
+        file,
+        source,
+        &src.lines,
+        span.clone(),
+        path.clone(),
+        message.clone(),
+    );
     if message.starts_with("unknown field") {
         let known = quoted.get(1..).unwrap_or(&[]);
         let hint = match closest(first, known.iter().copied()) {
@@ -269,17 +298,16 @@ struct KeyAt {
     value: Option<Range<usize>>,
 }
 
-/// Finds the innermost key or value at `offset` in a best-effort parse of `source`.
-fn key_at(source: &str, offset: usize) -> KeyAt {
-    let (doc, _) = toml::de::DeTable::parse_recoverable(source);
+/// Finds the innermost key or value at `offset` in `doc`, a best-effort parse of `source`.
+fn key_at<'a>(source: &str, doc: &'a DeTable<'a>, offset: usize) -> KeyAt {
     let mut at = KeyAt::default();
-    if find_in_table(doc.get_ref(), offset, &mut at) {
+    if find_in_table(doc, offset, &mut at) {
         return at;
     }
     // Not inside a parsed key or value (e.g. a duplicate key, which the parser drops): take
     // the table whose header is the last before `offset`, and the key written at `offset`.
-    let mut best = (0, Vec::new(), doc.get_ref());
-    last_header(source, doc.get_ref(), offset, &mut Vec::new(), &mut best);
+    let mut best = (0, Vec::new(), doc);
+    last_header(source, doc, offset, &mut Vec::new(), &mut best);
     let (_, path, table) = best;
     at.path = path;
     let word: String = source
@@ -345,16 +373,25 @@ fn find_in_table(t: &toml::de::DeTable, offset: usize, at: &mut KeyAt) -> bool {
 }
 
 fn find_in_value(v: &Spanned<toml::de::DeValue>, offset: usize, at: &mut KeyAt) -> bool {
+    #[cfg(test)]
+    work::add(1);
     let inner = match v.get_ref() {
         toml::de::DeValue::Table(t) => find_in_table(t, offset, at),
-        toml::de::DeValue::Array(a) => a.iter().enumerate().any(|(i, item)| {
-            at.path.push(Step::Index(i));
-            let found = find_in_value(item, offset, at);
-            if !found {
-                at.path.pop();
+        toml::de::DeValue::Array(a) => {
+            // The items of an array are in file order and do not overlap (an element of an
+            // array of tables ends where the next one's header starts): the only one that
+            // can hold `offset` is the last that starts at or before it. Searching it alone
+            // makes n errors in n elements cost O(n log n), not O(n²).
+            let last = a.partition_point(|item| item.span().start <= offset);
+            last > 0 && {
+                at.path.push(Step::Index(last - 1));
+                let found = find_in_value(&a[last - 1], offset, at);
+                if !found {
+                    at.path.pop();
+                }
+                found
             }
-            found
-        }),
+        }
         _ => false,
     };
     inner || v.span().contains(&offset)
@@ -400,9 +437,9 @@ fn schema_node(path: &[Step]) -> Option<(serde_json::Value, Option<String>)> {
         }
         v
     }
-    let schema = serde_json::to_value(schemars::schema_for!(Scenario)).ok()?;
+    let schema = scenario_schema();
     let defs = &schema["$defs"];
-    let mut node = &schema;
+    let mut node = schema;
     let mut doc = None;
     for step in path {
         node = resolve(defs, node);
@@ -428,6 +465,35 @@ fn schema_node(path: &[Step]) -> Option<(serde_json::Value, Option<String>)> {
     Some((resolve(defs, node).clone(), doc))
 }
 
+/// The JSON Schema of scenario files as a value, built once per process: every hint of every
+/// rejected scenario reads it.
+fn scenario_schema() -> &'static serde_json::Value {
+    static SCHEMA: OnceLock<serde_json::Value> = OnceLock::new();
+    SCHEMA.get_or_init(|| {
+        #[cfg(test)]
+        schema_builds::add();
+        serde_json::to_value(schemars::schema_for!(Scenario)).expect("the schema is JSON")
+    })
+}
+
+/// How many times this process built the schema of [`scenario_schema`].
+#[cfg(test)]
+pub(super) fn schema_builds_count() -> usize {
+    schema_builds::count()
+}
+
+#[cfg(test)]
+mod schema_builds {
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    static BUILDS: AtomicUsize = AtomicUsize::new(0);
+    pub fn add() {
+        BUILDS.fetch_add(1, Ordering::Relaxed);
+    }
+    pub fn count() -> usize {
+        BUILDS.load(Ordering::Relaxed)
+    }
+}
+
 /// The documentation (with unit) of the key at `path`, from the JSON Schema of the format.
 fn field_doc(path: &[Step]) -> Option<String> {
     schema_node(path)?.1.filter(|d| !d.is_empty())
@@ -451,4 +517,76 @@ fn variant_docs(path: &[Step]) -> Vec<(String, String)> {
             Some((value.to_string(), doc))
         })
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The search of every item of every array, as it was before it searched only the item
+    /// that starts last before the offset.
+    fn find_linear_table(t: &DeTable, offset: usize, at: &mut KeyAt) -> bool {
+        t.iter().any(|(k, v)| {
+            at.path.push(Step::Key(k.get_ref().to_string()));
+            if k.span().contains(&offset) || find_linear(v, offset, at) {
+                at.key.get_or_insert(k.span());
+                at.value.get_or_insert(v.span());
+                return true;
+            }
+            at.path.pop();
+            false
+        })
+    }
+
+    fn find_linear(v: &Spanned<toml::de::DeValue>, offset: usize, at: &mut KeyAt) -> bool {
+        let inner = match v.get_ref() {
+            toml::de::DeValue::Table(t) => find_linear_table(t, offset, at),
+            toml::de::DeValue::Array(a) => a.iter().enumerate().any(|(i, item)| {
+                at.path.push(Step::Index(i));
+                let found = find_linear(item, offset, at);
+                if !found {
+                    at.path.pop();
+                }
+                found
+            }),
+            _ => false,
+        };
+        inner || v.span().contains(&offset)
+    }
+
+    /// Searching one item per array finds the same key as searching them all, at every
+    /// offset of scenarios with arrays of tables, inline arrays, sub-tables of array
+    /// elements and tables out of order.
+    #[test]
+    fn the_item_search_finds_what_the_full_search_finds() {
+        let sources = [
+            include_str!("../../../../../examples/catenary_mooring.toml"),
+            include_str!("../../../../../examples/turn_270_body.toml"),
+            "[[points]]\nname = \"a\"\n[points.motion]\ntype = \"fixed\"\n[environment]\ndepth = 1\n\
+             [[points]]\nname = \"b\"\nposition = [1, [2, 3], {x = 4}]\n\
+             lines = [{name = \"l\", n = [1, 2]}, {name = \"m\"}]\n",
+        ];
+        for source in sources {
+            let (doc, _) = DeTable::parse_recoverable(source);
+            for offset in 0..=source.len() {
+                let mut fast = KeyAt::default();
+                let mut slow = KeyAt::default();
+                let found = find_in_table(doc.get_ref(), offset, &mut fast);
+                let expected = find_linear_table(doc.get_ref(), offset, &mut slow);
+                assert_eq!(found, expected, "offset {offset}");
+                if found {
+                    assert_eq!(
+                        path_string(&fast.path),
+                        path_string(&slow.path),
+                        "offset {offset}"
+                    );
+                    assert_eq!(
+                        (fast.key, fast.value),
+                        (slow.key, slow.value),
+                        "offset {offset}"
+                    );
+                }
+            }
+        }
+    }
 }
