@@ -10,6 +10,7 @@ use hawser::session::{Observer, ObserverError, RunEnd, Session, SessionOptions, 
 use hawser::statics::StaticOptions;
 use hawser::system::{System, Workspace};
 use hawser_io::results::{RunWriter, statics_json};
+use hawser_io::scenario::tables::read_text_file;
 use hawser_io::scenario::{self, Diagnostic, InputFormat, LoadedScenario};
 use indicatif::{ProgressBar, ProgressStyle};
 use std::path::{Path, PathBuf};
@@ -234,7 +235,7 @@ fn load(file: &Path) -> Option<LoadedScenario> {
 /// [`load`] with the choices for a MoorDyn deck; prints the deck's conversion notes unless
 /// `quiet`.
 fn load_with(file: &Path, deck: &DeckArgs, quiet: bool) -> Option<LoadedScenario> {
-    match scenario::load_input(file, &deck.options()) {
+    match hawser_io::input::load_input(file, &deck.options()) {
         Ok((s, notes)) => {
             if !quiet {
                 print_notes(file, &notes);
@@ -259,8 +260,7 @@ fn print_notes(file: &Path, notes: &[hawser_io::moordyn::Note]) {
 }
 
 fn convert(file: &Path, out: Option<&Path>, deck: &DeckArgs) -> Result<ExitCode> {
-    let source =
-        std::fs::read_to_string(file).with_context(|| format!("cannot read {}", file.display()))?;
+    let source = read_text_file(file).with_context(|| format!("cannot read {}", file.display()))?;
     if !hawser_io::moordyn::looks_like_deck(&source) {
         eprintln!(
             "error: {} is not a MoorDyn deck (no `---- LINE TYPES ----`, `---- POINTS ----` or `---- LINES ----` section)\n  = hint: `hawser convert` reads MoorDyn v2 input decks; hawser scenarios need no conversion",
@@ -311,7 +311,7 @@ fn step_error(file: &Path, loaded: &LoadedScenario, e: &SimulationError) -> Stri
         culprit,
     } = e
     {
-        let source = std::fs::read_to_string(file).unwrap_or_default();
+        let source = read_text_file(file).unwrap_or_default();
         let d = Diagnostic::new(
             file,
             &source,

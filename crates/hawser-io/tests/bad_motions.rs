@@ -8,7 +8,7 @@ use common::*;
 use hawser::math::{Quat, Real, Vec3};
 use hawser::model::{Manoeuvre, ManoeuvreSpec, Motion, PointKind, RaoMotion, RigidMotion};
 use hawser_io::scenario;
-use hawser_io::scenario::build::read_rao_table;
+use hawser_io::scenario::tables::read_rao_table;
 use std::f64::consts::PI;
 use std::path::Path;
 
@@ -262,6 +262,37 @@ fn manoeuvre_transition_longer_than_the_turn() {
     insta::assert_snapshot!(msg);
 }
 
+/// A subnormal transition once hung the loader (the clothoid's curvature rate κ/L_c was ∞
+/// and its quadrature loop ran usize::MAX times); transitions too short to resolve are
+/// refused at their key, whatever their size below the limit.
+#[test]
+fn manoeuvre_transition_too_short() {
+    for lc in ["5e-324", "1e-300", "1e-5"] {
+        let text = mutate(
+            "transition_length = 50.0",
+            &format!("transition_length = {lc}"),
+        );
+        let msg = bad(
+            &text,
+            "transition_length",
+            "points[0].motion.transition_length",
+        );
+        assert!(msg.contains("2.500e-4 m"), "{msg}");
+        if lc == "5e-324" {
+            insta::assert_snapshot!(msg);
+        }
+    }
+}
+
+/// A turn of more than 100 full turns is refused at its key (each evaluation of a clothoid
+/// costs in proportion to the heading it turns).
+#[test]
+fn manoeuvre_turn_too_large() {
+    let text = mutate("turn_angle = -270.0", "turn_angle = -1e12");
+    let msg = bad(&text, "turn_angle", "points[0].motion.turn_angle");
+    insta::assert_snapshot!(msg);
+}
+
 #[test]
 fn manoeuvre_track_shorter_than_the_build_up() {
     let text = mutate("build_up_time = 60.0", "build_up_time = 1000.0");
@@ -363,6 +394,23 @@ fn rao_file_missing() {
         msg.contains("cannot read tests/motion_data/no_such_file.csv"),
         "{msg}"
     );
+}
+
+/// `/dev/zero` as a motion file was read until memory ran out, and a FIFO blocked for ever:
+/// both are refused at the `file` key, naming the file and what it is.
+#[cfg(unix)]
+#[test]
+fn rao_file_not_a_regular_file() {
+    let text = mutate("tests/motion_data/vessel_raos.csv", "/dev/zero");
+    let msg = bad(&text, "file = ", "points[1].motion.file");
+    assert!(
+        msg.contains("cannot read /dev/zero: it is a character device, not a regular file"),
+        "{msg}"
+    );
+    // The input façade refuses them as input files too, before opening them.
+    let options = hawser_io::moordyn::ConvertOptions::default();
+    let e = hawser_io::input::load_input(Path::new("/dev/zero"), &options).unwrap_err();
+    insta::assert_snapshot!(e.to_string());
 }
 
 #[test]

@@ -354,6 +354,60 @@ fn invalid_manoeuvres_are_refused() {
     }
 }
 
+/// Manoeuvres whose clothoids cannot be evaluated in bounded work are refused: a subnormal
+/// transition length once made the curvature rate κ/L_c infinite and the loader loop for
+/// ever; a huge turn angle made each evaluation cost ~|Θ| quadrature panels. At the limits
+/// the track is still exact: the exit heading is ψ0 + Θ and the kinematics are finite.
+#[test]
+fn manoeuvre_limits_bound_the_work() {
+    let ok = ManoeuvreSpec {
+        start: Vec3::zeros(),
+        heading: 0.0,
+        speed: 6.0,
+        straight_before: 100.0,
+        turn_radius: 200.0,
+        turn_angle: 1.0,
+        straight_after: None,
+        build_up_time: 10.0,
+        transition_length: 0.0,
+    };
+    let min = Manoeuvre::MIN_TRANSITION_RATIO * ok.turn_radius;
+    for lc in [5e-324, 1e-310, 1e-300, 1e-20, 0.99 * min] {
+        let bad = ManoeuvreSpec {
+            transition_length: lc,
+            ..ok.clone()
+        };
+        assert!(Manoeuvre::new(bad).is_err(), "transition {lc:e} m accepted");
+    }
+    for angle in [1.0001 * Manoeuvre::MAX_TURN_ANGLE, -1e10, 1e300] {
+        let bad = ManoeuvreSpec {
+            turn_angle: angle,
+            ..ok.clone()
+        };
+        assert!(Manoeuvre::new(bad).is_err(), "turn {angle:e} rad accepted");
+    }
+    let max_turn = Manoeuvre::MAX_TURN_ANGLE;
+    for (lc, angle) in [(min, 1.0), (ok.turn_radius * max_turn, max_turn)] {
+        let m = Manoeuvre::new(ManoeuvreSpec {
+            transition_length: lc,
+            turn_angle: angle,
+            ..ok.clone()
+        })
+        .unwrap();
+        let end = m.turn_arc_lengths()[3];
+        for s in [0.0, 0.5 * end, end, 2.0 * end] {
+            let (x, y, psi, k, kr) = m.track(s);
+            assert!([x, y, psi, k, kr].iter().all(|v| v.is_finite()), "s = {s}");
+        }
+        // The exit heading is set exactly; 1e-9 rad allows the rounding of a sum of pieces.
+        let (_, _, psi, _, _) = m.track(end + 1.0);
+        assert!((psi - angle).abs() < 1e-9, "exit heading {psi} vs {angle}");
+        let t = 2.0 * end / ok.speed;
+        let kin = m.kinematics(t);
+        assert!(kin.position.iter().all(|v| v.is_finite()));
+    }
+}
+
 // ---------------------------------------------------------------------------------------------
 // Euler angles and the 6-DOF table
 

@@ -16,7 +16,7 @@ pub use convert::{Conversion, ConvertOptions, Note};
 pub use deck::looks_like_deck;
 
 use crate::scenario::schema::Scenario;
-use crate::scenario::{Diagnostic, LoadedScenario, ScenarioError};
+use crate::scenario::{LoadedScenario, ScenarioError};
 use std::path::Path;
 
 /// A deck read, converted and validated.
@@ -73,11 +73,6 @@ pub fn to_toml(deck: &LoadedDeck, origin: &Path) -> String {
 
 /// Reads a deck file.
 pub fn load(path: &Path, options: &ConvertOptions) -> Result<LoadedDeck, ScenarioError> {
-    let source = std::fs::read_to_string(path).map_err(|e| {
-        ScenarioError::from(
-            Diagnostic::new(path, "", None, "", format!("cannot read the deck: {e}"))
-                .hint("check the path"),
-        )
-    })?;
+    let source = crate::scenario::read_file(path, "deck")?;
     parse(path, &source, options)
 }

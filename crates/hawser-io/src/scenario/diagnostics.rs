@@ -32,7 +32,8 @@ pub struct Diagnostic {
 }
 
 impl Diagnostic {
-    /// A diagnostic at `span` of `source`.
+    /// A diagnostic at `span` of `source`. Locating it scans `source` up to the span: for
+    /// many diagnostics in one source, use [`Diagnostic::indexed`].
     pub fn new(
         file: &Path,
         source: &str,
@@ -40,10 +41,34 @@ impl Diagnostic {
         key: impl Into<String>,
         message: impl Into<String>,
     ) -> Self {
-        let (line, column, source_line) = match &span {
-            Some(s) => locate(source, s.start),
-            None => (0, 0, String::new()),
-        };
+        let at = span.as_ref().map(|s| locate(source, s.start));
+        Self::located(file, source, at, span, key, message)
+    }
+
+    /// [`Diagnostic::new`] located through `index`, the [`LineIndex`] of `source`: in time
+    /// O(log lines) (plus the length of the line for a line with non-ASCII text before the
+    /// span), so that n diagnostics cost O(n log n), not O(n × size).
+    pub fn indexed(
+        file: &Path,
+        source: &str,
+        index: &LineIndex,
+        span: Option<Range<usize>>,
+        key: impl Into<String>,
+        message: impl Into<String>,
+    ) -> Self {
+        let at = span.as_ref().map(|s| index.locate(source, s.start));
+        Self::located(file, source, at, span, key, message)
+    }
+
+    fn located(
+        file: &Path,
+        source: &str,
+        at: Option<(usize, usize, String)>,
+        span: Option<Range<usize>>,
+        key: impl Into<String>,
+        message: impl Into<String>,
+    ) -> Self {
+        let (line, column, source_line) = at.unwrap_or((0, 0, String::new()));
         let value = span
             .clone()
             .and_then(|s| source.get(s))
@@ -85,6 +110,8 @@ impl Diagnostic {
 /// 1-based line of a byte offset in `source` (clamped to its end).
 pub fn line_number(source: &str, offset: usize) -> usize {
     let end = offset.min(source.len());
+    #[cfg(test)]
+    work::add(end);
     source.as_bytes()[..end]
         .iter()
         .filter(|&&c| c == b'\n')
@@ -92,8 +119,96 @@ pub fn line_number(source: &str, offset: usize) -> usize {
         + 1
 }
 
+/// The start of every line of a source, to locate many offsets in it: built in one pass
+/// over the source, then each offset's line by binary search.
+#[derive(Clone, Debug)]
+pub struct LineIndex {
+    /// Byte offset of the start of each line (the first is 0).
+    starts: Vec<usize>,
+    /// Whether each line is ASCII only (its columns are then byte differences).
+    ascii: Vec<bool>,
+    /// Length of the source [bytes].
+    len: usize,
+}
+
+impl LineIndex {
+    /// The index of `source`.
+    pub fn new(source: &str) -> Self {
+        let mut starts = vec![0];
+        let mut ascii = Vec::new();
+        let mut line_ascii = true;
+        for (i, &c) in source.as_bytes().iter().enumerate() {
+            if c == b'\n' {
+                starts.push(i + 1);
+                ascii.push(line_ascii);
+                line_ascii = true;
+            } else if !c.is_ascii() {
+                line_ascii = false;
+            }
+        }
+        ascii.push(line_ascii);
+        #[cfg(test)]
+        work::add(source.len());
+        Self {
+            starts,
+            ascii,
+            len: source.len(),
+        }
+    }
+
+    /// 1-based line of a byte offset (clamped to the end): [`line_number`] in O(log lines).
+    pub fn line(&self, offset: usize) -> usize {
+        let offset = offset.min(self.len);
+        self.starts.partition_point(|&s| s <= offset)
+    }
+
+    /// (line, column, text of the line) at `offset`, as [`locate`] gives them.
+    fn locate(&self, source: &str, offset: usize) -> (usize, usize, String) {
+        let offset = offset.min(source.len());
+        let line = self.line(offset);
+        let start = self.starts[line - 1];
+        let column = if self.ascii[line - 1] {
+            offset - start + 1
+        } else {
+            #[cfg(test)]
+            work::add(offset - start);
+            source[start..offset].chars().count() + 1
+        };
+        let end = match self.starts.get(line) {
+            Some(&next) => next - 1,
+            None => source.len(),
+        };
+        #[cfg(test)]
+        work::add(end - start);
+        (
+            line,
+            column,
+            source[start..end].trim_end_matches('\r').to_string(),
+        )
+    }
+}
+
+/// A count of the work done to locate diagnostics and write their hints (bytes scanned,
+/// sources parsed), per thread, for the tests that check it grows linearly with the number of
+/// errors.
+#[cfg(test)]
+pub(crate) mod work {
+    use std::cell::Cell;
+    thread_local!(static WORK: Cell<usize> = const { Cell::new(0) });
+    /// Counts `n` units of work.
+    pub fn add(n: usize) {
+        WORK.with(|w| w.set(w.get() + n));
+    }
+    /// The work counted on this thread so far.
+    pub fn done() -> usize {
+        WORK.with(|w| w.get())
+    }
+}
+
 fn locate(source: &str, offset: usize) -> (usize, usize, String) {
     let offset = offset.min(source.len());
+    #[cfg(test)]
+    work::add(offset);
     let before = &source[..offset];
     let line = line_number(source, offset);
     let start = before.rfind('\n').map(|i| i + 1).unwrap_or(0);
@@ -212,4 +327,33 @@ pub fn closest<'a>(word: &str, candidates: impl IntoIterator<Item = &'a str>) ->
         .filter(|(d, c)| *d <= (c.len() / 3).max(2))
         .min_by_key(|(d, _)| *d)
         .map(|(_, c)| c)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The index locates every offset as the scan does: line, column (in characters) and the
+    /// line's text, across CRLF line ends, non-ASCII text, empty lines and the end.
+    #[test]
+    fn the_line_index_locates_as_the_scan() {
+        let source = "a = 1\r\n\n# ünïcode ∑\nb = \"é\" # x\n\nlast";
+        let index = LineIndex::new(source);
+        for offset in
+            (0..=source.len() + 2).filter(|&o| source.is_char_boundary(o.min(source.len())))
+        {
+            assert_eq!(
+                index.locate(source, offset),
+                locate(source, offset),
+                "at {offset}"
+            );
+            assert_eq!(
+                index.line(offset),
+                line_number(source, offset),
+                "at {offset}"
+            );
+        }
+        let empty = LineIndex::new("");
+        assert_eq!(empty.locate("", 0), locate("", 0));
+    }
 }

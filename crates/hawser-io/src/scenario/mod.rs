@@ -3,47 +3,37 @@
 pub mod build;
 pub mod diagnostics;
 pub mod schema;
+pub mod tables;
 
 pub use build::{InputFormat, LoadedScenario};
 pub use diagnostics::{Diagnostic, ScenarioError};
 
 use std::path::Path;
 
-/// Reads and validates an input file: a hawser scenario (TOML) or a MoorDyn v2 deck,
-/// recognised by its content (dashed MoorDyn section headers), not by its extension. `deck`
-/// holds the choices a deck leaves to its host (duration, vessel motion); the notes say what
-/// was converted or has no effect (empty for TOML).
-pub fn load_input(
-    path: &Path,
-    deck: &crate::moordyn::ConvertOptions,
-) -> Result<(LoadedScenario, Vec<crate::moordyn::Note>), ScenarioError> {
-    let source = read(path)?;
-    if crate::moordyn::looks_like_deck(&source) {
-        let d = crate::moordyn::parse(path, &source, deck)?;
-        Ok((d.loaded, d.notes))
-    } else {
-        Ok((build::build(path, &source)?, Vec::new()))
-    }
+/// The text of an input file, or a diagnostic naming it.
+pub(crate) fn read_source(path: &Path) -> Result<String, ScenarioError> {
+    read_file(path, "input file")
 }
 
-fn read(path: &Path) -> Result<String, ScenarioError> {
-    std::fs::read_to_string(path).map_err(|e| {
+/// The text of `path`, or a diagnostic "cannot read the `what`: …" naming it.
+pub(crate) fn read_file(path: &Path, what: &str) -> Result<String, ScenarioError> {
+    tables::read_text_file(path).map_err(|e| {
+        let hint = match e.is_refused() {
+            true => format!(
+                "hawser reads regular files of at most {} MiB",
+                tables::MAX_FILE_BYTES >> 20
+            ),
+            false => "check the path".to_string(),
+        };
         ScenarioError::from(
-            Diagnostic::new(
-                path,
-                "",
-                None,
-                "",
-                format!("cannot read the input file: {e}"),
-            )
-            .hint("check the path"),
+            Diagnostic::new(path, "", None, "", format!("cannot read the {what}: {e}")).hint(hint),
         )
     })
 }
 
 /// Reads and validates a scenario file.
 pub fn load(path: &Path) -> Result<LoadedScenario, ScenarioError> {
-    let source = read(path)?;
+    let source = read_source(path)?;
     build::build(path, &source)
 }
 

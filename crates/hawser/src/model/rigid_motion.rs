@@ -254,7 +254,7 @@ const GAUSS8: [(Real, Real); 4] = [
 /// exact to rounding.
 fn clothoid_displacement(psi0: Real, k0: Real, kr: Real, sigma: Real) -> (Real, Real) {
     let turn = k0.abs() * sigma + 0.5 * kr.abs() * sigma * sigma;
-    let panels = ((turn / 0.5).ceil() as usize).max(1);
+    let panels = clothoid_panels(turn);
     let h = sigma / panels as Real;
     let (mut x, mut y) = (0.0, 0.0);
     for p in 0..panels {
@@ -268,6 +268,21 @@ fn clothoid_displacement(psi0: Real, k0: Real, kr: Real, sigma: Real) -> (Real, 
         }
     }
     (0.5 * h * x, 0.5 * h * y)
+}
+
+/// Most quadrature panels of one clothoid evaluation: a clothoid of [`Manoeuvre`] turns by at
+/// most L_c/(2R) ≤ |Θ|/2 ≤ [`Manoeuvre::MAX_TURN_ANGLE`]/2, which takes 629 panels of 0.5 rad;
+/// the cap only bounds the work for a turn no valid manoeuvre has (∞ or NaN from an
+/// overflowing curvature rate).
+const MAX_CLOTHOID_PANELS: usize = 1024;
+
+/// Panels of 0.5 rad for a clothoid that turns by `turn` [rad]: at least 1, at most
+/// [`MAX_CLOTHOID_PANELS`] (NaN counts as one panel).
+fn clothoid_panels(turn: Real) -> usize {
+    if turn.is_nan() {
+        return 1;
+    }
+    ((turn / 0.5).ceil().min(MAX_CLOTHOID_PANELS as Real) as usize).max(1)
 }
 
 /// A ship manoeuvre (position-vector paper §3.2, the sea trial's 270° turn): a straight run
@@ -304,10 +319,21 @@ pub struct Manoeuvre {
 }
 
 impl Manoeuvre {
+    /// Largest heading change |Θ| of a turn [rad]: 100 full turns (36 000°). A clothoid is
+    /// integrated by quadrature at a cost proportional to the heading it turns (up to |Θ|/2),
+    /// so the bound keeps every evaluation of the track to at most 629 panels.
+    pub const MAX_TURN_ANGLE: Real = 200.0 * std::f64::consts::PI;
+
+    /// Shortest curvature transition L_c, as a fraction of the turn radius R (other than 0):
+    /// a clothoid shorter than 10⁻⁶ R has a curvature rate κ/L_c that the arc lengths of the
+    /// track cannot resolve (it overflows for a subnormal L_c), and no vessel turns that way.
+    pub const MIN_TRANSITION_RATIO: Real = 1e-6;
+
     /// Builds the track; refuses non-finite values, a speed or radius ≤ 0, negative lengths or
-    /// build-up time, transitions longer than the turn (2 L_c ≤ 2 R|Θ| is needed so that the
-    /// arc is not negative: L_c ≤ R|Θ|), and a stopping track shorter than the build-up and
-    /// ramp-down distances U T_b.
+    /// build-up time, a turn beyond [`Self::MAX_TURN_ANGLE`], transitions shorter than
+    /// [`Self::MIN_TRANSITION_RATIO`] R (other than 0) or longer than the turn (2 L_c ≤ 2 R|Θ|
+    /// is needed so that the arc is not negative: L_c ≤ R|Θ|), and a stopping track shorter
+    /// than the build-up and ramp-down distances U T_b.
     pub fn new(spec: ManoeuvreSpec) -> Result<Self, ModelError> {
         let s = &spec;
         check(
@@ -330,6 +356,11 @@ impl Manoeuvre {
             "manoeuvre turn_angle",
             "the turn angle must be finite",
         )?;
+        check(
+            s.turn_angle.abs() <= Self::MAX_TURN_ANGLE,
+            "manoeuvre turn_angle",
+            "the turn angle must be at most 100 full turns (36000°) either way",
+        )?;
         for (v, what) in [
             (s.straight_before, "manoeuvre straight_before"),
             (s.build_up_time, "manoeuvre build_up_time"),
@@ -345,6 +376,11 @@ impl Manoeuvre {
         } else {
             s.transition_length
         };
+        check(
+            lc == 0.0 || lc >= Self::MIN_TRANSITION_RATIO * r,
+            "manoeuvre transition_length",
+            "a curvature transition must be 0 or at least 1e-6 of the turn radius",
+        )?;
         check(
             lc <= r * turn.abs() * (1.0 + 1e-12),
             "manoeuvre transition_length",
@@ -1069,5 +1105,28 @@ impl RaoMotion {
                 + rel_a,
             angular_acceleration: al + rm * ae + w.cross(&we_g),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A clothoid whose turn overflows (a curvature rate κ/L_c of ∞ from a subnormal L_c) or
+    /// is NaN is integrated on a bounded number of panels: the loop count once was
+    /// ⌈∞/0.5⌉ as usize = usize::MAX, and the loader never returned.
+    #[test]
+    fn clothoid_panels_are_bounded() {
+        assert_eq!(clothoid_panels(Real::INFINITY), MAX_CLOTHOID_PANELS);
+        assert_eq!(clothoid_panels(1e300), MAX_CLOTHOID_PANELS);
+        assert_eq!(clothoid_panels(Real::NAN), 1);
+        assert_eq!(clothoid_panels(0.0), 1);
+        assert_eq!(clothoid_panels(1.2), 3);
+        // The largest clothoid a valid manoeuvre has: L_c = R|Θ| with |Θ| the largest turn
+        // turns by |Θ|/2, within the cap.
+        assert!(clothoid_panels(0.5 * Manoeuvre::MAX_TURN_ANGLE) < MAX_CLOTHOID_PANELS);
+        // It returns (with a non-finite answer) rather than looping for ever.
+        let (x, _) = clothoid_displacement(0.0, 0.0, Real::INFINITY, 1.0);
+        assert!(!x.is_finite());
     }
 }

@@ -541,11 +541,7 @@ mod tests {
 
     fn build(source: &str) -> (Vec<Body>, Vec<String>) {
         let specs: Scenario = toml::from_str(source).expect("valid TOML");
-        let mut b = Builder {
-            file: Path::new("bodies.toml"),
-            source,
-            errors: Vec::new(),
-        };
+        let mut b = Builder::new(Path::new("bodies.toml"), source);
         let taken = HashMap::from([("anchor".to_string(), "point")]);
         let bodies = build_bodies(&mut b, &specs.bodies, &taken, &Environment::default());
         (bodies, b.errors.iter().map(|d| d.to_string()).collect())
