@@ -9,7 +9,9 @@
 //! water with current, an irregular sea, drag, added mass and seabed contact, under each
 //! scheme; the same with a fixed sphere and a moving cylinder in contact with a line; and the
 //! same with one `hermite` line with bending (and the obstacles), the same with both lines on
-//! winches, and with one `dg` line.
+//! winches, and with one `dg` line. And a `Session` with a coupled fairlead, an observer that
+//! reads every channel and line sample, and repeated coupling intervals: 290 intervals of a
+//! step the interval does not divide, allocation-free (RK4 and the three-level scheme).
 
 mod alloc_count;
 mod common;
@@ -52,8 +54,11 @@ fn check(name: &str, model: &Model, scheme: Scheme) {
             sim.step().unwrap();
         }
     });
+    // An evaluation at an unchanged state is a no-op: step between them so that each one
+    // evaluates (the count then includes 1000 more steps).
     let evaluations = allocations_in(|| {
         for _ in 0..1000 {
+            sim.step().unwrap();
             sim.evaluate().unwrap();
         }
     });
@@ -245,5 +250,92 @@ fn time_loop_does_not_allocate() {
     model.lines[0].formulation = Formulation::Dg;
     for scheme in [Scheme::Rk4, Scheme::SspRk3] {
         check("dg and fe lines on a shared buoy", &model, scheme);
+    }
+}
+
+/// Reads every output channel and every line's samples at each sample, into buffers sized
+/// once: what a writer does.
+struct Reader {
+    values: Vec<f64>,
+    tension: f64,
+}
+
+impl hawser::session::Observer for Reader {
+    fn sample(
+        &mut self,
+        view: &hawser::session::View<'_>,
+    ) -> Result<(), hawser::session::ObserverError> {
+        for (i, v) in self.values.iter_mut().enumerate() {
+            *v = view.channel(i);
+        }
+        for l in 0..view.system.lines.len() {
+            for n in view.line_samples(l) {
+                self.tension = self.tension.max(n.tension);
+            }
+        }
+        Ok(())
+    }
+
+    fn rewind(&mut self, _: f64) -> Result<(), hawser::session::ObserverError> {
+        Ok(())
+    }
+}
+
+#[test]
+fn session_stepping_coupling_and_observers_do_not_allocate() {
+    let top = Vec3::new(0.0, 0.0, -10.0);
+    let mut model = single_line(
+        line_type(0.05, 20.0, 1.0e7),
+        50.0,
+        20,
+        fixed("anchor", top + Vec3::new(30.0, 0.0, -35.0)),
+        Point {
+            name: "fairlead".into(),
+            position: top,
+            kind: PointKind::Coupled,
+        },
+        MassMatrix::Consistent,
+    );
+    model.settings.output_interval = 0.01;
+    for scheme in [Scheme::Rk4, Scheme::ThreeLevel] {
+        model.settings.scheme = scheme;
+        let mut session = hawser::Session::new(model.clone()).unwrap();
+        let channels = session.channels().len();
+        session.attach(Reader {
+            values: vec![0.0; channels],
+            tension: 0.0,
+        });
+        let p = session.coupled_points()[0];
+        let dt_c = 0.013;
+        let position = |t: f64| top + Vec3::new(0.5 * (1.3 * t).sin(), 0.0, 0.0);
+        let velocity = |t: f64| Vec3::new(0.65 * (1.3 * t).cos(), 0.0, 0.0);
+        let mut interval = |session: &mut hawser::Session, k: usize| {
+            let t1 = k as f64 * dt_c;
+            session
+                .set_point_kinematics(p, t1, position(t1), velocity(t1), None)
+                .unwrap();
+            session.advance_to(t1).unwrap();
+            if k % 7 == 0 {
+                // A host correcting its prediction: the interval again.
+                session
+                    .set_point_kinematics(p, t1, position(t1), velocity(t1), None)
+                    .unwrap();
+                session.advance_to(t1).unwrap();
+            }
+            std::hint::black_box(session.point_reaction(p).unwrap());
+        };
+        for k in 1..=10 {
+            interval(&mut session, k);
+        }
+        let count = allocations_in(|| {
+            for k in 11..=300 {
+                interval(&mut session, k);
+            }
+        });
+        eprintln!(
+            "{scheme:?}: {count} allocations in 290 coupling intervals to t = {:.3} s",
+            session.time()
+        );
+        assert_eq!(count, 0, "{scheme:?}: the coupled session allocated");
     }
 }

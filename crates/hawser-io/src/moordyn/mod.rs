@@ -41,9 +41,6 @@ pub fn parse(
     let mut loaded = crate::scenario::build::build_scenario(file, source, &conversion.scenario)
         .map_err(|e| conversion.in_deck_words(e))?;
     loaded.format = crate::scenario::InputFormat::MoorDyn;
-    // A deck's dtM was chosen for MoorDyn's integrator: above hawser's stability limit, take
-    // the automatic step instead of refusing it.
-    loaded.model.settings.step_above_limit = hawser::model::StepAboveLimit::UseAuto;
     Ok(LoadedDeck {
         loaded,
         scenario: conversion.scenario,

@@ -77,6 +77,17 @@ pub enum SchemeSpec {
     ThreeLevel,
 }
 
+/// What a fixed `time_step` above the stability limit does.
+#[derive(Clone, Copy, Debug, Deserialize, Serialize, JsonSchema, PartialEq, Eq)]
+#[serde(rename_all = "kebab-case")]
+pub enum StepAboveLimitSpec {
+    /// The run is refused with the limit and what sets it (default).
+    Refuse,
+    /// The automatic step is taken instead, with a warning (what MoorDyn decks and their
+    /// conversions use: a deck's `dtM` was chosen for MoorDyn's integrator).
+    Auto,
+}
+
 /// Initial condition of a dynamic run.
 #[derive(Clone, Copy, Debug, Deserialize, Serialize, JsonSchema, PartialEq, Eq)]
 #[serde(rename_all = "kebab-case")]
@@ -109,6 +120,10 @@ pub struct SimulationSpec {
     /// `"rk4"` (default), `"ssp-rk3"` or `"three-level"`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub scheme: Option<SchemeSpec>,
+    /// A fixed `time_step` above the stability limit: `"refuse"` the run (default) or take
+    /// the `"auto"` step instead.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub step_above_limit: Option<StepAboveLimitSpec>,
     /// Interval between time-series samples [s], default 0.1.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<f64>")]

@@ -81,7 +81,7 @@ pub fn panics(text: &str) -> bool {
 /// Runs the example at `path` the way `hawser run` does, for `samples` output intervals with a
 /// snapshot every `snapshot_every` of them, writing its results into `dir`.
 pub fn run_example_briefly(path: &Path, dir: &Path, samples: usize, snapshot_every: usize) {
-    let (mut loaded, _) = scenario::load_input(path, &Default::default())
+    let (mut loaded, _) = hawser_io::input::load_input(path, &Default::default())
         .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
     let settings = &mut loaded.model.settings;
     settings.duration = settings

@@ -403,6 +403,8 @@ pub(super) fn simulation_of(
         time_step,
         safety_factor: None,
         scheme: Some(SchemeSpec::Rk4),
+        // dtM was chosen for MoorDyn's integrator.
+        step_above_limit: Some(StepAboveLimitSpec::Auto),
         output_interval: output_interval.clone(),
         snapshot_interval: if line_outputs {
             Some(output_interval.unwrap_or_else(|| spanned(&anchor, 0.1)))

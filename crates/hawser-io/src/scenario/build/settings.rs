@@ -58,6 +58,10 @@ pub(super) fn build_settings(
         Some(SchemeSpec::ThreeLevel) => Scheme::ThreeLevel,
         Some(SchemeSpec::Rk4) | None => Scheme::Rk4,
     };
+    s.step_above_limit = match sim.step_above_limit {
+        Some(StepAboveLimitSpec::Auto) => StepAboveLimit::UseAuto,
+        Some(StepAboveLimitSpec::Refuse) | None => StepAboveLimit::Refuse,
+    };
     s.initial_condition = match sim.initial_condition.as_ref().map(|c| *c.get_ref()) {
         Some(InitialConditionSpec::AsDefined) => InitialCondition::AsDefined,
         Some(InitialConditionSpec::SteadyTow) => InitialCondition::SteadyTow,
