@@ -34,13 +34,78 @@ fn io_context(path: &Path, e: std::io::Error) -> std::io::Error {
     std::io::Error::new(e.kind(), format!("{}: {e}", path.display()))
 }
 
+/// Writes `value` to `path` atomically: into a temporary file beside it, then renamed over
+/// it, so that a reader (or a kill) never sees half a file.
 fn write_json(path: &Path, value: &Value) -> std::io::Result<()> {
     let text = serde_json::to_string_pretty(value).expect("JSON serialises");
-    std::fs::write(path, text + "\n").map_err(|e| io_context(path, e))
+    write_atomically(path, (text + "\n").as_bytes())
+}
+
+/// Writes `bytes` to `path` through a temporary file renamed over it.
+pub fn write_atomically(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
+    let mut tmp = path.as_os_str().to_owned();
+    tmp.push(".tmp");
+    let tmp = PathBuf::from(tmp);
+    std::fs::write(&tmp, bytes).map_err(|e| io_context(&tmp, e))?;
+    std::fs::rename(&tmp, path).map_err(|e| io_context(path, e))
+}
+
+/// The files and folders a run writes into its output folder: what `--overwrite` removes and
+/// what marks a folder as holding a run.
+pub const RUN_FILES: [&str; 7] = [
+    "status.json",
+    "summary.json",
+    "timeseries.csv",
+    "final_state.json",
+    "checkpoint.bin",
+    "run.json",
+    "snapshots",
+];
+
+/// The run files present in `dir` ([`RUN_FILES`]).
+pub fn run_files_in(dir: &Path) -> Vec<&'static str> {
+    RUN_FILES
+        .iter()
+        .copied()
+        .filter(|f| dir.join(f).symlink_metadata().is_ok())
+        .collect()
+}
+
+/// Prepares `dir` for a new run: creates it, and refuses it when it holds another run's files
+/// unless `overwrite`, which removes them first (the whole `snapshots/` folder included, so
+/// nothing stale is left beside the new results; other files are left alone).
+pub fn prepare_output_dir(dir: &Path, overwrite: bool) -> std::io::Result<()> {
+    let present = run_files_in(dir);
+    if !present.is_empty() {
+        if !overwrite {
+            return Err(std::io::Error::new(
+                std::io::ErrorKind::AlreadyExists,
+                format!(
+                    "{} holds the results of another run ({}); hint: pass --overwrite to \
+                     replace them, choose another --out, or continue an interrupted run with \
+                     `hawser resume {}`",
+                    dir.display(),
+                    present.join(", "),
+                    dir.display()
+                ),
+            ));
+        }
+        for f in present {
+            let p = dir.join(f);
+            let removed = if p.is_dir() {
+                std::fs::remove_dir_all(&p)
+            } else {
+                std::fs::remove_file(&p)
+            };
+            removed.map_err(|e| io_context(&p, e))?;
+        }
+    }
+    std::fs::create_dir_all(dir).map_err(|e| io_context(dir, e))
 }
 
 impl RunWriter {
-    /// Creates the directory and the files, writes headers and marks the run as running.
+    /// Creates the files in `dir` (prepared by [`prepare_output_dir`], or created here when
+    /// missing), writes headers and marks the run as running.
     pub fn create(
         dir: &Path,
         system: &System,
@@ -98,6 +163,121 @@ impl RunWriter {
         self.last_time
     }
 
+    /// What [`RunWriter::resume`] needs to go on from here: the length of every file written,
+    /// the statistics, the slack and snap detectors and the snapshot schedule. Flushes first.
+    pub fn progress(&mut self) -> std::io::Result<Vec<u8>> {
+        let mut e = hawser::session::Encoder::default();
+        self.timeseries.flush()?;
+        e.u64(self.timeseries.get_ref().metadata()?.len());
+        e.u64(self.snapshots.len() as u64);
+        for w in &mut self.snapshots {
+            w.flush()?;
+            e.u64(w.get_ref().metadata()?.len());
+        }
+        e.u64(self.stats.len() as u64);
+        self.stats.iter().for_each(|s| s.encode(&mut e));
+        e.u64(self.detectors.len() as u64);
+        self.detectors.iter().for_each(|d| d.encode(&mut e));
+        e.f64(self.next_snapshot);
+        e.f64(self.last_time);
+        e.u64(self.samples);
+        Ok(e.bytes)
+    }
+
+    /// Reopens the files of an interrupted run in `dir` to go on from `progress`
+    /// ([`RunWriter::progress`]): each file cut back to its length then (rows written after
+    /// the checkpoint are written again by the resumed run) and opened for appending.
+    pub fn resume(
+        dir: &Path,
+        system: &System,
+        outputs: &[OutputChannel],
+        snapshot_interval: Option<Real>,
+        scenario: &Path,
+        progress: &[u8],
+    ) -> std::io::Result<Self> {
+        let bad = |what: &str| {
+            std::io::Error::new(
+                std::io::ErrorKind::InvalidData,
+                format!("{}: the saved writer state {what}", dir.display()),
+            )
+        };
+        let mut d = hawser::session::Decoder::new(progress);
+        let get = |d: &mut hawser::session::Decoder| d.u64().map_err(|_| bad("is truncated"));
+        let open = |path: PathBuf, len: u64| -> std::io::Result<BufWriter<File>> {
+            let f = std::fs::OpenOptions::new()
+                .write(true)
+                .open(&path)
+                .map_err(|e| io_context(&path, e))?;
+            if f.metadata()?.len() < len {
+                return Err(bad(&format!(
+                    "says {} has {len} bytes, but it is shorter: it was changed since",
+                    path.display()
+                )));
+            }
+            f.set_len(len).map_err(|e| io_context(&path, e))?;
+            let mut f = f;
+            std::io::Seek::seek(&mut f, std::io::SeekFrom::End(0))?;
+            Ok(BufWriter::new(f))
+        };
+        let timeseries = open(dir.join("timeseries.csv"), get(&mut d)?)?;
+        let count = get(&mut d)? as usize;
+        let names: Vec<String> = outputs.iter().map(|c| c.name(system)).collect();
+        let channels: Vec<Channel> = outputs.iter().map(|c| c.channel).collect();
+        if count
+            != if snapshot_interval.is_some() {
+                system.lines.len()
+            } else {
+                0
+            }
+        {
+            return Err(bad("has another number of snapshot files"));
+        }
+        let mut snapshots = Vec::new();
+        for l in &system.lines[..count] {
+            let len = get(&mut d)?;
+            snapshots.push(open(
+                dir.join("snapshots").join(format!("{}.csv", l.name)),
+                len,
+            )?);
+        }
+        let n = get(&mut d)? as usize;
+        if n != channels.len() {
+            return Err(bad("has another number of channels"));
+        }
+        let stats = (0..n)
+            .map(|_| RunningStats::decode(&mut d).map_err(|_| bad("is truncated")))
+            .collect::<Result<Vec<_>, _>>()?;
+        let n = get(&mut d)? as usize;
+        if n != system.lines.len() {
+            return Err(bad("has another number of lines"));
+        }
+        let detectors = (0..n)
+            .map(|_| SlackSnapDetector::decode(&mut d).map_err(|_| bad("is truncated")))
+            .collect::<Result<Vec<_>, _>>()?;
+        let next_snapshot = d.f64().map_err(|_| bad("is truncated"))?;
+        let last_time = d.f64().map_err(|_| bad("is truncated"))?;
+        let samples = get(&mut d)?;
+        write_json(
+            &dir.join("status.json"),
+            &json!({"complete": false, "state": "running", "scenario": scenario.display().to_string(), "resumed_at": last_time}),
+        )?;
+        Ok(Self {
+            dir: dir.to_path_buf(),
+            row: vec![0.0; channels.len()],
+            stats,
+            names,
+            channels,
+            detectors,
+            timeseries,
+            snapshots,
+            snapshot_interval,
+            scenario: scenario.display().to_string(),
+            next_snapshot,
+            last_time,
+            samples,
+        })
+    }
+
     fn write_sample(&mut self, view: &View<'_>) -> std::io::Result<()> {
         let (system, time, ws) = (view.system, view.time, view.workspace);
         for (i, c) in self.channels.iter().enumerate() {
@@ -141,8 +321,14 @@ impl RunWriter {
     }
 
     /// Writes `summary.json`, `final_state.json` and `status.json` from the last state
-    /// `view`. `error` marks the run incomplete with its message.
-    pub fn write_end(&mut self, view: &View<'_>, error: Option<&str>) -> std::io::Result<()> {
+    /// `view`. `error` marks the run incomplete with its message; `interrupted` says it was
+    /// stopped from outside (it can be resumed).
+    pub fn write_end(
+        &mut self,
+        view: &View<'_>,
+        error: Option<&str>,
+        interrupted: bool,
+    ) -> std::io::Result<()> {
         let system = view.system;
         self.timeseries.flush()?;
         for s in &mut self.snapshots {
@@ -199,7 +385,13 @@ impl RunWriter {
         )?;
         write_json(
             &self.dir.join("status.json"),
-            &json!({"complete": complete, "state": if complete {"finished"} else {"stopped"}, "error": error, "end_time": self.last_time, "scenario": self.scenario}),
+            &json!({
+                "complete": complete,
+                "state": if complete { "finished" } else if interrupted { "interrupted" } else { "stopped" },
+                "error": error,
+                "end_time": self.last_time,
+                "scenario": self.scenario,
+            }),
         )
     }
 }
@@ -217,7 +409,7 @@ impl Observer for RunWriter {
     }
 
     fn finish(&mut self, view: &View<'_>, end: &RunEnd) -> Result<(), ObserverError> {
-        Ok(self.write_end(view, end.error.as_deref())?)
+        Ok(self.write_end(view, end.error.as_deref(), end.interrupted)?)
     }
 }
 

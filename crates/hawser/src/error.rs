@@ -69,6 +69,12 @@ pub enum SimulationError {
         /// What is wrong, with the numbers.
         what: String,
     },
+    /// A checkpoint that cannot be restored (another model, another format version, damaged).
+    #[error("checkpoint: {what}")]
+    Checkpoint {
+        /// Why.
+        what: String,
+    },
     /// The model is invalid.
     #[error(transparent)]
     Model(#[from] ModelError),

@@ -15,6 +15,12 @@ pub type Mat3x6 = nalgebra::Matrix3x6<Real>;
 /// A rotation as a unit quaternion (body axes to global axes).
 pub type Quat = nalgebra::UnitQuaternion<Real>;
 
+/// The unit quaternion with coordinates `[i, j, k, w]` as [`Quat::coords`] gives them, taken
+/// as they are (a saved orientation, restored bit for bit).
+pub fn quat_from_coords(c: [Real; 4]) -> Quat {
+    Quat::new_unchecked(nalgebra::Quaternion::new(c[3], c[0], c[1], c[2]))
+}
+
 /// The cross-product matrix [a]× with [a]× b = a × b.
 #[inline]
 pub fn skew(a: &Vec3) -> Mat3 {

@@ -64,6 +64,27 @@ impl RunningStats {
     }
 }
 
+impl RunningStats {
+    /// Saves the statistics exactly (a checkpoint of a writer).
+    pub fn encode(&self, e: &mut crate::session::Encoder) {
+        e.u64(self.count);
+        for x in [self.min, self.max, self.mean, self.m2] {
+            e.f64(x);
+        }
+    }
+
+    /// Statistics saved by [`RunningStats::encode`].
+    pub fn decode(d: &mut crate::session::Decoder) -> Result<Self, crate::SimulationError> {
+        Ok(Self {
+            count: d.u64()?,
+            min: d.f64()?,
+            max: d.f64()?,
+            mean: d.f64()?,
+            m2: d.f64()?,
+        })
+    }
+}
+
 /// An interval during which some element of a line was slack (strain ≤ 0).
 #[derive(Clone, Debug, PartialEq)]
 pub struct SlackInterval {
@@ -102,7 +123,74 @@ pub struct SlackSnapDetector {
     pending: Option<(SnapEvent, Real)>,
 }
 
+fn put_slack(e: &mut crate::session::Encoder, s: &SlackInterval) {
+    for x in [s.start, s.end, s.min_strain] {
+        e.f64(x);
+    }
+}
+
+fn get_slack(d: &mut crate::session::Decoder) -> Result<SlackInterval, crate::SimulationError> {
+    Ok(SlackInterval {
+        start: d.f64()?,
+        end: d.f64()?,
+        min_strain: d.f64()?,
+    })
+}
+
+fn put_snap(e: &mut crate::session::Encoder, s: &SnapEvent) {
+    for x in [s.time, s.peak_time, s.peak_tension, s.location, s.rise_rate] {
+        e.f64(x);
+    }
+}
+
+fn get_snap(d: &mut crate::session::Decoder) -> Result<SnapEvent, crate::SimulationError> {
+    Ok(SnapEvent {
+        time: d.f64()?,
+        peak_time: d.f64()?,
+        peak_tension: d.f64()?,
+        location: d.f64()?,
+        rise_rate: d.f64()?,
+    })
+}
+
 impl SlackSnapDetector {
+    /// Saves the detector exactly, open interval and pending event included.
+    pub fn encode(&self, e: &mut crate::session::Encoder) {
+        e.bool(self.slack.is_some());
+        if let Some(s) = &self.slack {
+            put_slack(e, s);
+        }
+        e.u64(self.intervals.len() as u64);
+        self.intervals.iter().for_each(|s| put_slack(e, s));
+        e.u64(self.snaps.len() as u64);
+        self.snaps.iter().for_each(|s| put_snap(e, s));
+        e.bool(self.pending.is_some());
+        if let Some((s, t)) = &self.pending {
+            put_snap(e, s);
+            e.f64(*t);
+        }
+    }
+
+    /// A detector saved by [`SlackSnapDetector::encode`].
+    pub fn decode(d: &mut crate::session::Decoder) -> Result<Self, crate::SimulationError> {
+        let slack = if d.bool()? { Some(get_slack(d)?) } else { None };
+        let n = d.u64()?;
+        let intervals = (0..n).map(|_| get_slack(d)).collect::<Result<_, _>>()?;
+        let n = d.u64()?;
+        let snaps = (0..n).map(|_| get_snap(d)).collect::<Result<_, _>>()?;
+        let pending = if d.bool()? {
+            Some((get_snap(d)?, d.f64()?))
+        } else {
+            None
+        };
+        Ok(Self {
+            slack,
+            intervals,
+            snaps,
+            pending,
+        })
+    }
+
     /// Processes one sample. `arc_mid` gives the arc length of element e's midpoint.
     pub fn push(
         &mut self,

@@ -14,11 +14,13 @@
 //! Stepping allocates nothing: the state, the workspace, the integrator's stages and the
 //! coupling buffers are sized when the session is built.
 
+mod checkpoint;
 mod coupling;
 mod initial;
 mod stepper;
 mod view;
 
+pub use checkpoint::{CHECKPOINT_VERSION, Decoder, Encoder, fnv1a, model_hash};
 pub use initial::{StepFallback, initial_state, step_fallback};
 pub use stepper::Stepper;
 pub use view::{Attached, LineSample, LineSamples, Observer, ObserverError, RunEnd, View};
