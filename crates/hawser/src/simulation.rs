@@ -108,6 +108,7 @@ impl<'a> Simulation<'a> {
         let stiffness_limit = limit;
         let n = initial.len();
         let mut ws = system.workspace();
+        system.start_wave_tables(0.0, &initial, &mut ws);
         if settings.scheme == Scheme::ThreeLevel {
             // Eq. 48 at the initial strains, bounded by the stiffness-and-damping estimate.
             let mut derivative = vec![0.0; n];
@@ -256,6 +257,11 @@ impl<'a> Simulation<'a> {
             }
         }
         Ok(&self.ws)
+    }
+
+    /// The run's workspace (scratch of the last evaluation, and the run's wave tables).
+    pub fn workspace(&self) -> &Workspace {
+        &self.ws
     }
 
     /// Runs to `duration` [s], sampling at t = 0 and every output interval.

@@ -22,6 +22,9 @@ use crate::math::{Mat3, Real, Vec3, get3, set3};
 use crate::model::{Formulation, LineEnd, Model, PointKind, Scheme};
 use crate::physics::environment::Environment;
 
+mod wave_tables;
+pub use wave_tables::WavePoints;
+
 /// Where each object's unknowns sit in the state vector.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Layout {
@@ -331,6 +334,9 @@ pub struct Workspace {
     pub bodies: Vec<crate::model::RigidKinematics>,
     /// Per line: the current mesh and length of a line on a winch (`None` for other lines).
     pub winches: Vec<Option<WinchWork>>,
+    /// The run's wave kinematics at the static position, if it asks for them
+    /// ([`System::start_wave_tables`]); direct summation otherwise.
+    pub wave_points: WavePoints,
 }
 
 /// Identifies the place in the model a state entry belongs to.
@@ -784,6 +790,7 @@ impl System {
                     })
                 })
                 .collect(),
+            wave_points: WavePoints::Direct,
         }
     }
 
@@ -1064,6 +1071,7 @@ impl System {
         dydt: &mut [Real],
         ws: &mut Workspace,
     ) -> Result<(), Location> {
+        self.prepare_wave_tables(t, ws);
         self.point_kinematics(t, y, ws);
         self.evaluate_dg_lines(t, y, dydt, ws);
         self.assemble_loads(t, y, ws);
@@ -1139,8 +1147,9 @@ impl System {
                 }
             };
             let ends = [end_state(0, l.end_a), end_state(1, l.end_b)];
-            let loads = dg.rhs(
+            let loads = dg.rhs_with(
                 &self.environment,
+                ws.wave_points.of_line(li),
                 t,
                 &y[range.clone()],
                 &ends,
@@ -1180,6 +1189,7 @@ impl System {
     /// fixed or prescribed points), and each free point's own load and mass in
     /// `ws.coupled.point_x`, `ws.coupled.point_diag`.
     pub fn assemble(&self, t: Real, y: &[Real], ws: &mut Workspace) {
+        self.prepare_wave_tables(t, ws);
         self.point_kinematics(t, y, ws);
         self.assemble_loads(t, y, ws);
     }
@@ -1189,10 +1199,11 @@ impl System {
     fn assemble_loads(&self, t: Real, y: &[Real], ws: &mut Workspace) {
         self.update_winches(t, ws);
         self.gather_lines(y, ws);
-        let options = LoadOptions {
-            current_factor: 1.0,
-        };
         for (li, l) in self.lines.iter().enumerate() {
+            let options = LoadOptions {
+                current_factor: 1.0,
+                fluid: ws.wave_points.of_line(li),
+            };
             let lw = &mut ws.lines[li];
             let blocks = &mut ws.blocks[li];
             if l.dg.is_some() {

@@ -1249,6 +1249,11 @@ fn current_profile(c: &mut Converter, t: &Token, row: &Row, dir: &Path) -> Optio
         kind: spanned(t, CurrentKind::Profile),
         velocity: None,
         profile: Some(spanned(t, rows)),
+        z: None,
+        times: None,
+        ux: None,
+        uy: None,
+        uz: None,
     })
 }
 

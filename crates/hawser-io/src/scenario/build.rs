@@ -22,8 +22,10 @@ use std::path::Path;
 use toml::Spanned;
 
 mod bodies;
+mod sea;
 mod winch;
 pub use bodies::orientation_from_degrees;
+pub use sea::{read_elevation_file, record_components};
 
 /// A scenario read from a file: the model, its output channels and where things are.
 #[derive(Clone, Debug)]
@@ -751,6 +753,7 @@ fn build_environment(b: &mut Builder, spec: Option<&EnvironmentSpec>) -> Environ
         seabed: Seabed::default(),
         current: Current::None,
         waves: Waves::None,
+        wave_kinematics: Default::default(),
         obstacles: Vec::new(),
     };
     if let Some(d) = &e.depth {
@@ -950,10 +953,16 @@ fn build_environment(b: &mut Builder, spec: Option<&EnvironmentSpec>) -> Environ
                     }
                 }
             }
+            CurrentKind::ProfileTable => {
+                if let Some(table) = sea::current_table(b, c) {
+                    env.current = table;
+                }
+            }
         }
     }
     if let Some(w) = &e.waves {
         env.waves = build_waves(b, w, env.depth, env.gravity);
+        env.wave_kinematics = sea::wave_kinematics(b, w, &env.waves);
     }
     env
 }
@@ -975,6 +984,7 @@ fn wave_value(
                 WaveKind::Regular => "a regular wave",
                 WaveKind::Jonswap => "a JONSWAP sea",
                 WaveKind::PiersonMoskowitz => "a Pierson–Moskowitz sea",
+                WaveKind::ElevationRecord => "an elevation record",
             };
             let d = b
                 .diag(Some(kind.span()), &key, format!("{what} needs `{name}`"))
@@ -1011,8 +1021,20 @@ fn build_waves(b: &mut Builder, w: &WavesSpec, depth: f64, gravity: f64) -> Wave
             "a regular wave",
             "irregular seas, `type = \"jonswap\"` or `\"pierson-moskowitz\"`",
         ),
+        WaveKind::ElevationRecord => (&[], "", ""),
         _ => (&regular_keys, "an irregular sea", "`type = \"regular\"`"),
     };
+    if kind != WaveKind::ElevationRecord {
+        for (name, span) in sea::record_keys(w) {
+            b.not_for(
+                span.is_some(),
+                span,
+                &format!("environment.waves.{name}"),
+                "a regular wave or a spectral sea",
+                "`type = \"elevation-record\"`",
+            );
+        }
+    }
     for (name, span) in misplaced {
         b.not_for(
             span.is_some(),
@@ -1056,6 +1078,10 @@ fn build_waves(b: &mut Builder, w: &WavesSpec, depth: f64, gravity: f64) -> Wave
         )
         .to_radians();
     let (sea, period) = match kind {
+        WaveKind::ElevationRecord => match sea::elevation_record(b, w, direction) {
+            Some(r) => r,
+            None => return Waves::None,
+        },
         WaveKind::Regular => {
             let height = wave_value(
                 b,
