@@ -10,9 +10,11 @@
 //! test runs the 600 s record and prints the errors over its first 60 s and over all of it,
 //! which docs/waves.md records (they agree: the short record is representative).
 //!
-//! The comparison could fail: the same statistics are printed for still water, and the
-//! waves move every line's tension standard deviation by more than the tolerance (asserted),
-//! so a wrong static-position field would show.
+//! On OC3 the waves barely reach the lines (the fairleads are 70 m deep, where the peak
+//! component is at e^{−k_p 70} = 6 % of its surface value): they change the fairlead tension's
+//! standard deviation by ~1e-5 and its maximum by ~1e-4 of themselves, so the 0.5 % target
+//! alone could not catch a wrong field. The test therefore also compares the wave-induced
+//! tension ΔT = T − T_still (same surge, same steps) between the two methods.
 
 use hawser::analysis::Channel;
 use hawser::math::Real;
@@ -27,6 +29,12 @@ use std::path::Path;
 
 /// Relative tolerance on the tension standard deviation and maximum (the issue's target).
 const TOLERANCE: Real = 5e-3;
+/// Relative tolerance on the standard deviation of the wave-induced tension T − T_still: the
+/// static-position field leaves out the change of the waves over a point's displacement δ
+/// from its static position, a relative error k δ per component; at the fairlead (surge
+/// amplitude 2 m) and the peak wavenumber k_p = 0.040 rad/m that is 8 %, less along the line
+/// (its nodes move less), so 10 % (and twice that on the waveform).
+const WAVE_PART_TOLERANCE: Real = 0.1;
 
 fn oc3(waves: bool, method: WaveKinematicsMethod, duration: Real) -> Model {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/oc3_surge.toml");
@@ -100,7 +108,9 @@ fn stats(v: &[[Real; 3]], l: usize, n: usize) -> (Real, Real) {
 }
 
 /// Runs still water, direct summation and static-position kinematics for `duration` [s];
-/// prints and checks the statistics over the first `windows` [s] of the record.
+/// prints and checks the statistics over the first `windows` [s] of the record: the target
+/// on the tension itself, and the wave-induced part ΔT = T − T_still, which on OC3 is small
+/// (the fairleads are 70 m deep) and so the sharper test of the field.
 fn compare(duration: Real, windows: &[Real]) {
     let interval = |m: &Model| match m.environment.waves.field() {
         Some(f) => WaveKinematicsMethod::default_sample_interval(f),
@@ -127,19 +137,52 @@ fn compare(duration: Real, windows: &[Real]) {
             let (sd, md) = stats(&direct, l, n);
             let (st, mt) = stats(&tabled, l, n);
             let (es, em) = ((st - sd) / sd, (mt - md) / md);
+            // The wave-induced part.
+            let dd: Vec<[Real; 3]> = direct
+                .iter()
+                .zip(&still)
+                .map(|(a, b)| [a[l] - b[l]; 3])
+                .collect();
+            let dt: Vec<[Real; 3]> = tabled
+                .iter()
+                .zip(&still)
+                .map(|(a, b)| [a[l] - b[l]; 3])
+                .collect();
+            let (wd, _) = stats(&dd, 0, n);
+            let (wt, _) = stats(&dt, 0, n);
+            let peak_d = dd[..n].iter().map(|x| x[0].abs()).fold(0.0, Real::max);
+            let peak_t = dt[..n].iter().map(|x| x[0].abs()).fold(0.0, Real::max);
+            let rms = (dd[..n]
+                .iter()
+                .zip(&dt[..n])
+                .map(|(a, b)| (a[0] - b[0]).powi(2))
+                .sum::<Real>()
+                / n as Real)
+                .sqrt();
             eprintln!(
                 "{w} s, line {}: std still {s0:.1} N, direct {sd:.1} N, static {st:.1} N \
-                 ({:+.4} %); max still {m0:.1} N, direct {md:.1} N, static {mt:.1} N ({:+.4} %)",
+                 ({:+.5} %); max still {m0:.1} N, direct {md:.1} N, static {mt:.1} N ({:+.5} %); \
+                 wave part ΔT: std direct {wd:.1} N, static {wt:.1} N ({:+.2} %), peak |ΔT| \
+                 {peak_d:.1} N vs {peak_t:.1} N ({:+.2} %), rms difference {rms:.1} N ({:.2} % of its std)",
                 l + 1,
                 es * 100.0,
-                em * 100.0
+                em * 100.0,
+                (wt - wd) / wd * 100.0,
+                (peak_t - peak_d) / peak_d * 100.0,
+                rms / wd * 100.0
             );
             assert!(es.abs() < TOLERANCE, "line {} std {es:+.2e}", l + 1);
             assert!(em.abs() < TOLERANCE, "line {} max {em:+.2e}", l + 1);
-            // The waves change what is compared by more than the tolerance.
+            // The wave-induced tension: its std within WAVE_PART_TOLERANCE, its waveform
+            // within twice that (rms of the difference over the std).
             assert!(
-                ((sd - s0) / s0).abs() > 2.0 * TOLERANCE,
-                "line {}: the waves barely change the tension (std {s0} N → {sd} N)",
+                ((wt - wd) / wd).abs() < WAVE_PART_TOLERANCE,
+                "line {} ΔT std",
+                l + 1
+            );
+            assert!(
+                rms / wd < 2.0 * WAVE_PART_TOLERANCE,
+                "line {} ΔT waveform",
                 l + 1
             );
         }
