@@ -44,6 +44,8 @@ name = "rope"
 diameter = 0.02
 mass_per_length = 0.5
 axial_stiffness = 1.0e5
+normal_drag = 1.2
+tangential_drag = 0.02
 
 [[points]]
 name = "anchor"
