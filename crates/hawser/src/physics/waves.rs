@@ -136,9 +136,9 @@ pub enum SeaState {
     Regular(RegularWave),
     /// An irregular sea.
     Irregular(IrregularSea),
-    /// Given components (for instance the Fourier components of a measured elevation record,
-    /// [`crate::physics::waves`] module doc): each its amplitude, frequency, direction and
-    /// phase, taken as they are.
+    /// Given components, each its amplitude, frequency, direction and phase, taken as they
+    /// are: for instance the Fourier components of a recorded elevation (hawser-io's
+    /// `elevation-record` scenario waves, MoorDyn's `WaveKin 3`).
     Components(Vec<ComponentSpec>),
 }
 
