@@ -250,12 +250,16 @@ pub fn kinematics_ns(
     (best, sum)
 }
 
-/// CPU time of the calling thread [s] (Linux: `/proc/thread-self/schedstat`, its time on a
-/// CPU), `None` where it cannot be read.
+/// CPU time of the calling thread [s] (`clock_gettime(CLOCK_THREAD_CPUTIME_ID)`, to the
+/// nanosecond), `None` where the clock cannot be read.
 pub fn thread_cpu_seconds() -> Option<f64> {
-    let text = std::fs::read_to_string("/proc/thread-self/schedstat").ok()?;
-    let ns: f64 = text.split_whitespace().next()?.parse().ok()?;
-    Some(ns * 1e-9)
+    let mut ts = libc::timespec {
+        tv_sec: 0,
+        tv_nsec: 0,
+    };
+    // SAFETY: `ts` is a valid, writable timespec for the duration of the call.
+    let rc = unsafe { libc::clock_gettime(libc::CLOCK_THREAD_CPUTIME_ID, &mut ts) };
+    (rc == 0).then(|| ts.tv_sec as f64 + ts.tv_nsec as f64 * 1e-9)
 }
 
 /// The median of `values` (NaN when empty).
