@@ -20,8 +20,9 @@ pub enum WaveCase {
     Still,
     /// One regular Airy wave, H 2 m, T 8 s, travelling along +x.
     Regular,
-    /// A long-crested JONSWAP sea, Hs 3 m, Tp 9 s, γ 3.3, along +x, of this many components.
-    Jonswap(usize),
+    /// A long-crested JONSWAP sea, γ 3.3, along +x: components, Hs [m], Tp [s] (`jonswap:N`
+    /// is Hs 3 m, Tp 9 s).
+    Jonswap(usize, Real, Real),
 }
 
 impl WaveCase {
@@ -31,15 +32,28 @@ impl WaveCase {
             WaveCase::AsIs => "as-is".into(),
             WaveCase::Still => "still".into(),
             WaveCase::Regular => "regular".into(),
-            WaveCase::Jonswap(n) => format!("jonswap:{n}"),
+            WaveCase::Jonswap(n, hs, tp) if *hs == 3.0 && *tp == 9.0 => format!("jonswap:{n}"),
+            WaveCase::Jonswap(n, hs, tp) => format!("jonswap:{n}:{hs}:{tp}"),
         }
     }
 }
 
-/// Parses `--waves`: as-is, still, regular, jonswap:N (N ≥ 1) or all (still, regular,
-/// jonswap:50, jonswap:200).
+/// Parses `--waves`: as-is, still, regular, jonswap:N (N ≥ 1), jonswap:N:HS:TP (Hs [m], Tp
+/// [s]) or all (still, regular, jonswap:50, jonswap:200), or a comma-separated list of them.
 pub fn parse_waves(s: &str) -> Result<Vec<WaveCase>, String> {
-    let bad = || format!("--waves {s}: expected as-is, still, regular, jonswap:N (N ≥ 1) or all");
+    if s.contains(',') {
+        let mut out = Vec::new();
+        for part in s.split(',') {
+            out.extend(parse_waves(part)?);
+        }
+        return Ok(out);
+    }
+    let bad = || {
+        format!(
+            "--waves {s}: expected as-is, still, regular, jonswap:N (N ≥ 1), jonswap:N:HS:TP \
+             or all"
+        )
+    };
     Ok(match s {
         "as-is" => vec![WaveCase::AsIs],
         "still" => vec![WaveCase::Still],
@@ -47,13 +61,28 @@ pub fn parse_waves(s: &str) -> Result<Vec<WaveCase>, String> {
         "all" => vec![
             WaveCase::Still,
             WaveCase::Regular,
-            WaveCase::Jonswap(50),
-            WaveCase::Jonswap(200),
+            WaveCase::Jonswap(50, 3.0, 9.0),
+            WaveCase::Jonswap(200, 3.0, 9.0),
         ],
-        _ => match s.strip_prefix("jonswap:").map(str::parse::<usize>) {
-            Some(Ok(n)) if n >= 1 => vec![WaveCase::Jonswap(n)],
-            _ => return Err(bad()),
-        },
+        _ => {
+            let Some(rest) = s.strip_prefix("jonswap:") else {
+                return Err(bad());
+            };
+            let parts: Vec<&str> = rest.split(':').collect();
+            let n = parts[0].parse::<usize>().ok().filter(|&n| n >= 1);
+            let (hs, tp) = match parts.len() {
+                1 => (Some(3.0), Some(9.0)),
+                3 => (
+                    parts[1].parse::<Real>().ok().filter(|x| *x > 0.0),
+                    parts[2].parse::<Real>().ok().filter(|x| *x > 0.0),
+                ),
+                _ => (None, None),
+            };
+            match (n, hs, tp) {
+                (Some(n), Some(hs), Some(tp)) => vec![WaveCase::Jonswap(n, hs, tp)],
+                _ => return Err(bad()),
+            }
+        }
     })
 }
 
@@ -68,12 +97,11 @@ pub fn waves_of(case: WaveCase, environment: &Environment) -> Result<Waves, Stri
             period: 8.0,
             direction: 0.0,
         }),
-        WaveCase::Jonswap(components) => {
-            let peak_period: Real = 9.0;
+        WaveCase::Jonswap(components, significant_height, peak_period) => {
             let fp = 1.0 / peak_period;
             SeaState::Irregular(IrregularSea {
                 spectrum: Spectrum::Jonswap {
-                    significant_height: 3.0,
+                    significant_height,
                     peak_period,
                     peak_enhancement: 3.3,
                 },
@@ -220,4 +248,30 @@ pub fn kinematics_ns(
         best = best.min(ns);
     }
     (best, sum)
+}
+
+/// CPU time of the calling thread [s] (`clock_gettime(CLOCK_THREAD_CPUTIME_ID)`, to the
+/// nanosecond), `None` where the clock cannot be read.
+pub fn thread_cpu_seconds() -> Option<f64> {
+    let mut ts = libc::timespec {
+        tv_sec: 0,
+        tv_nsec: 0,
+    };
+    // SAFETY: `ts` is a valid, writable timespec for the duration of the call.
+    let rc = unsafe { libc::clock_gettime(libc::CLOCK_THREAD_CPUTIME_ID, &mut ts) };
+    (rc == 0).then(|| ts.tv_sec as f64 + ts.tv_nsec as f64 * 1e-9)
+}
+
+/// The median of `values` (NaN when empty).
+pub fn median(values: &mut [f64]) -> f64 {
+    if values.is_empty() {
+        return f64::NAN;
+    }
+    values.sort_by(f64::total_cmp);
+    let n = values.len();
+    if n % 2 == 1 {
+        values[n / 2]
+    } else {
+        0.5 * (values[n / 2 - 1] + values[n / 2])
+    }
 }

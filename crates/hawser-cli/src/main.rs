@@ -147,6 +147,11 @@ enum Command {
         /// fluid velocity and acceleration alone).
         #[arg(long, default_value = "as-is")]
         waves: String,
+        /// Wave kinematics of the lines with `--waves`: direct (summed at every point and
+        /// evaluation), static-position (sampled at each point's static position and
+        /// interpolated in time, default sample interval) or both.
+        #[arg(long, default_value = "direct")]
+        kinematics: String,
         /// Run each case this many times and keep the fastest.
         #[arg(long, default_value_t = 1)]
         repeat: usize,
@@ -195,6 +200,7 @@ fn main() -> ExitCode {
             scheme,
             bodies,
             waves,
+            kinematics,
             repeat,
             vessel_motion,
             json,
@@ -209,6 +215,7 @@ fn main() -> ExitCode {
                 scheme: &scheme,
                 bodies: &bodies,
                 waves: &waves,
+                kinematics: &kinematics,
                 repeat,
             },
             vessel_motion,
@@ -678,6 +685,7 @@ struct BenchChoice<'a> {
     scheme: &'a str,
     bodies: &'a str,
     waves: &'a str,
+    kinematics: &'a str,
     repeat: usize,
 }
 
@@ -759,18 +767,46 @@ fn bench(
             return Ok(ExitCode::from(2));
         }
     };
+    use hawser::physics::static_kinematics::WaveKinematicsMethod;
+    let static_position: &[bool] = match choice.kinematics {
+        "direct" => &[false],
+        "static-position" => &[true],
+        "both" => &[false, true],
+        other => {
+            eprintln!("error: --kinematics {other}: expected direct, static-position or both");
+            return Ok(ExitCode::from(2));
+        }
+    };
     let mut variants = Vec::new();
     for &mass in masses {
         for &scheme in &schemes {
             for &points in as_points {
                 for &w in &wave_cases {
-                    variants.push((mass, scheme, points, w));
+                    for &sp in static_position {
+                        // Still water has no wave kinematics to choose.
+                        if sp && w == bench_cases::WaveCase::Still && static_position.len() > 1 {
+                            continue;
+                        }
+                        variants.push((mass, scheme, points, w, sp));
+                    }
                 }
             }
         }
     }
-    let mut results = Vec::new();
-    for (mass, scheme, points, wave_case) in variants {
+    // Every variant's model, system and initial state first; then the repeats interleaved
+    // (variant 1, 2, …, 1, 2, …) so that each repeat pairs the variants under the same load.
+    struct Case {
+        model: Model,
+        system: System,
+        y0: Vec<Real>,
+        wave_case: bench_cases::WaveCase,
+        static_position: bool,
+        replaced: usize,
+        free_bodies: usize,
+        mass: MassMatrix,
+    }
+    let mut cases = Vec::new();
+    for (mass, scheme, points, wave_case, sp) in variants {
         let mut model = loaded.model.clone();
         let replaced = if points {
             bench_cases::bodies_as_points(&mut model)
@@ -784,6 +820,18 @@ fn bench(
             .count();
         model.environment.waves = bench_cases::waves_of(wave_case, &model.environment)
             .map_err(|e| anyhow::anyhow!("--waves {}: {e}", wave_case.label()))?;
+        model.environment.wave_kinematics = match (sp, model.environment.waves.field()) {
+            (true, Some(f)) => WaveKinematicsMethod::StaticPosition {
+                sample_interval: WaveKinematicsMethod::default_sample_interval(f),
+            },
+            (true, None) => model.environment.wave_kinematics,
+            (false, _)
+                if choice.kinematics == "direct" && wave_case == bench_cases::WaveCase::AsIs =>
+            {
+                model.environment.wave_kinematics
+            }
+            (false, _) => WaveKinematicsMethod::Direct,
+        };
         for l in &mut model.lines {
             l.mass_matrix = mass;
             if let Some(f) = formulation {
@@ -820,27 +868,53 @@ fn bench(
         }
         .map_err(|e| anyhow::anyhow!("{e}"))?
         .0;
-        // Best of `repeat` runs from the same initial state.
-        let mut best: Option<(Session, f64)> = None;
-        for _ in 0..choice.repeat.max(1) {
-            let mut sim =
-                match Session::from_state(model.clone(), y0.clone(), SessionOptions::default()) {
-                    Ok(s) => s,
-                    Err(e) => {
-                        eprintln!("{}", step_error(file, &loaded, &e));
-                        return Ok(ExitCode::from(2));
-                    }
-                };
+        cases.push(Case {
+            model,
+            system,
+            y0,
+            wave_case,
+            static_position: sp && wave_case != bench_cases::WaveCase::Still,
+            replaced,
+            free_bodies,
+            mass,
+        });
+    }
+    // Per case: (wall, cpu) of each repeat, and the fastest run's simulation.
+    let mut times: Vec<Vec<(f64, f64)>> = vec![Vec::new(); cases.len()];
+    let mut best: Vec<Option<(Session, f64)>> = (0..cases.len()).map(|_| None).collect();
+    for _ in 0..choice.repeat.max(1) {
+        for (k, c) in cases.iter().enumerate() {
+            let cpu0 = bench_cases::thread_cpu_seconds();
             let start = Instant::now();
+            // Building the session is timed too: it builds the static-position cache.
+            let options = SessionOptions::default();
+            let mut sim = match Session::from_state(c.model.clone(), c.y0.clone(), options) {
+                Ok(s) => s,
+                Err(e) => {
+                    eprintln!("{}", step_error(file, &loaded, &e));
+                    return Ok(ExitCode::from(2));
+                }
+            };
             sim.run()?;
             let wall = start.elapsed().as_secs_f64();
-            if best.as_ref().is_none_or(|(_, w)| wall < *w) {
-                best = Some((sim, wall));
+            let cpu = match (cpu0, bench_cases::thread_cpu_seconds()) {
+                (Some(a), Some(b)) => b - a,
+                _ => wall,
+            };
+            times[k].push((wall, cpu));
+            if best[k].as_ref().is_none_or(|(_, w)| cpu < *w) {
+                best[k] = Some((sim, cpu));
             }
         }
-        let Some((sim, wall)) = best else {
+    }
+    let mut results = Vec::new();
+    for (k, c) in cases.iter().enumerate() {
+        let model = &c.model;
+        let system = &c.system;
+        let Some((sim, cpu)) = best[k].take() else {
             unreachable!("at least one run")
         };
+        let wall = times[k].iter().map(|t| t.0).fold(f64::INFINITY, f64::min);
         // Nodal degrees of freedom: N + 1 nodes of fe and hermite lines (their end nodes
         // included), Σ(P + 1) per element of dg lines (modal coefficients of q per element).
         let nodes: usize = model
@@ -852,28 +926,54 @@ fn bench(
             })
             .sum();
         let steps = sim.steps_done();
-        let node_steps = nodes as f64 * steps as f64 / wall;
+        let node_steps = nodes as f64 * steps as f64 / cpu;
         let evals = node_steps * sim.evaluations_per_step() as f64;
         let (limit, _) = system.stable_step(model.settings.scheme);
+        // Paired CPU-time ratio to the still-water case of the same mass and scheme: the
+        // median over repeats of cpu(this) / cpu(still) of the same repeat.
+        let still = cases.iter().position(|o| {
+            o.wave_case == bench_cases::WaveCase::Still
+                && o.mass == c.mass
+                && o.model.settings.scheme == model.settings.scheme
+                && o.replaced == c.replaced
+        });
+        let ratio = still.map(|s| {
+            let mut r: Vec<f64> = times[k]
+                .iter()
+                .zip(&times[s])
+                .map(|(a, b)| a.1 / b.1)
+                .collect();
+            bench_cases::median(&mut r)
+        });
+        let memory = sim
+            .workspace()
+            .wave_points
+            .tables()
+            .map(|t| t.memory_bytes());
         results.push(serde_json::json!({
             "formulation": system.lines.first().map_or("fe", |l| l.kind.name()),
             "order": model.lines.first().filter(|l| l.formulation == Formulation::Dg).map(|l| l.sections[0].order),
             "scheme": format!("{:?}", model.settings.scheme).to_lowercase(),
             "stable_step": limit,
-            "mass_matrix": format!("{mass:?}").to_lowercase(),
+            "mass_matrix": format!("{:?}", c.mass).to_lowercase(),
             "nodes": nodes,
             "time_step": sim.step_size(),
             "steps": steps,
             "duration": model.settings.duration,
             "wall_s": wall,
+            "cpu_s": cpu,
             "evaluations_per_step": sim.evaluations_per_step(),
             "node_steps_per_s": node_steps,
             "node_evaluations_per_s": evals,
-            "real_time_factor": model.settings.duration / wall,
-            "free_bodies": free_bodies,
-            "bodies_replaced_by_points": replaced,
-            "waves": wave_case.label(),
-            "us_per_step": wall * 1e6 / steps as f64,
+            "real_time_factor": model.settings.duration / cpu,
+            "free_bodies": c.free_bodies,
+            "bodies_replaced_by_points": c.replaced,
+            "waves": c.wave_case.label(),
+            "kinematics": if c.static_position { "static-position" } else { "direct" },
+            "cpu_ratio_to_still": ratio,
+            "wave_table_bytes": memory,
+            "wave_table_points": sim.workspace().wave_points.tables().map(|t| t.points()),
+            "us_per_step": cpu * 1e6 / steps as f64,
         }));
     }
     add_differences(&mut results);
@@ -894,6 +994,18 @@ fn bench(
         }
     }
     let extra = choice.bodies != "as-is" || choice.waves != "as-is";
+    for r in &results {
+        if let (Some(bytes), Some(points)) = (
+            r["wave_table_bytes"].as_u64(),
+            r["wave_table_points"].as_u64(),
+        ) {
+            eprintln!(
+                "{} static-position cache: {points} points, {bytes} bytes ({:.0} bytes per point)",
+                r["waves"].as_str().unwrap_or(""),
+                bytes as f64 / points.max(1) as f64
+            );
+        }
+    }
     if json {
         if extra {
             out!(
@@ -990,11 +1102,12 @@ fn add_differences(results: &mut [serde_json::Value]) {
 /// The table of `hawser bench --bodies/--waves`.
 fn print_variants(results: &[serde_json::Value], kinematics: &[serde_json::Value]) {
     out!(
-        "{:<8} {:<11} {:<10} {:<13} {:>6} {:>6} {:>10} {:>8} {:>9} {:>10} {:>13} {:>14} {:>15}",
+        "{:<8} {:<11} {:<10} {:<17} {:<7} {:>6} {:>6} {:>10} {:>8} {:>9} {:>10} {:>13} {:>14} {:>15} {:>10}",
         "form.",
         "scheme",
         "mass",
         "waves",
+        "kin.",
         "bodies",
         "nodes",
         "dt [s]",
@@ -1003,7 +1116,8 @@ fn print_variants(results: &[serde_json::Value], kinematics: &[serde_json::Value
         "us/step",
         "node-steps/s",
         "us/body/step",
-        "ns/node/step"
+        "ns/node/step",
+        "cpu/still"
     );
     let opt = |v: &serde_json::Value| v.as_f64().map_or("-".to_string(), |x| format!("{x:.3}"));
     for r in results {
@@ -1012,12 +1126,17 @@ fn print_variants(results: &[serde_json::Value], kinematics: &[serde_json::Value
         } else {
             r["free_bodies"].to_string()
         };
+        let kin = match r["kinematics"].as_str() {
+            Some("static-position") => "static",
+            _ => "direct",
+        };
         out!(
-            "{:<8} {:<11} {:<10} {:<13} {:>6} {:>6} {:>10.3e} {:>8} {:>9.3} {:>10.3} {:>13.3e} {:>14} {:>15}",
+            "{:<8} {:<11} {:<10} {:<17} {:<7} {:>6} {:>6} {:>10.3e} {:>8} {:>9.3} {:>10.3} {:>13.3e} {:>14} {:>15} {:>10}",
             r["formulation"].as_str().unwrap_or(""),
             r["scheme"].as_str().unwrap_or(""),
             r["mass_matrix"].as_str().unwrap_or(""),
             r["waves"].as_str().unwrap_or(""),
+            kin,
             bodies,
             r["nodes"],
             r["time_step"].as_f64().unwrap_or(0.0),
@@ -1026,7 +1145,8 @@ fn print_variants(results: &[serde_json::Value], kinematics: &[serde_json::Value
             r["us_per_step"].as_f64().unwrap_or(0.0),
             r["node_steps_per_s"].as_f64().unwrap_or(0.0),
             opt(&r["body_overhead_us_per_body_step"]),
-            opt(&r["kinematics_ns_per_node_step"])
+            opt(&r["kinematics_ns_per_node_step"]),
+            opt(&r["cpu_ratio_to_still"])
         );
     }
     if !kinematics.is_empty() {

@@ -312,7 +312,47 @@ fn bench_compares_bodies_with_points_and_seas_with_still_water() {
         k.iter()
             .all(|k| k["ns_per_evaluation"].as_f64().unwrap() > 0.0)
     );
-    for bad in [["--bodies", "some"], ["--waves", "jonswap:0"]] {
+    // `--kinematics both`: each sea summed directly and at the static position (still water
+    // once), with the paired CPU ratio to still water and the cache's size.
+    let both = [
+        "--bodies",
+        "points",
+        "--waves",
+        "still,jonswap:50:6:10",
+        "--kinematics",
+        "both",
+    ];
+    let k: serde_json::Value = serde_json::from_slice(&run(&both, true)).unwrap();
+    let runs = k["runs"].as_array().unwrap();
+    let kinds: Vec<_> = runs
+        .iter()
+        .map(|r| {
+            (
+                r["waves"].as_str().unwrap(),
+                r["kinematics"].as_str().unwrap(),
+            )
+        })
+        .collect();
+    assert_eq!(
+        kinds,
+        [
+            ("still", "direct"),
+            ("jonswap:50:6:10", "direct"),
+            ("jonswap:50:6:10", "static-position")
+        ]
+    );
+    for r in runs {
+        assert!(r["cpu_ratio_to_still"].as_f64().unwrap() > 0.0, "{r}");
+    }
+    // 8 lines × 10 elements × 2 Gauss points, 16 bytes per component and point and more.
+    assert_eq!(runs[2]["wave_table_points"], 160);
+    assert!(runs[2]["wave_table_bytes"].as_u64().unwrap() > 160 * 16 * 50);
+    for bad in [
+        ["--bodies", "some"],
+        ["--waves", "jonswap:0"],
+        ["--waves", "jonswap:50:6"],
+        ["--kinematics", "grid"],
+    ] {
         let out = hawser(&["bench", file, bad[0], bad[1], "--duration", "0.02"]);
         assert_eq!(out.status.code(), Some(2), "{bad:?}");
     }

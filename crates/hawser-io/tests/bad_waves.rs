@@ -449,3 +449,79 @@ fn never_panics_on_bad_wave_values() {
     }
     assert!(bad.is_empty(), "panics: {bad:?}");
 }
+
+/// `kinematics = "static-position"` and its `sample_interval` read into the environment; a bad
+/// interval, an interval without the method, and bad keys of an elevation record or a current
+/// table are located, with the key, the expected range and a hint.
+#[test]
+fn static_position_record_and_current_table_keys() {
+    use hawser::physics::static_kinematics::WaveKinematicsMethod;
+    let text = replaced(
+        BASE,
+        "stretching = \"vertical\"",
+        "stretching = \"vertical\"\nkinematics = \"static-position\"\nsample_interval = 0.05",
+    );
+    let s = scenario::parse(Path::new(FILE), &text).unwrap();
+    assert_eq!(
+        s.model.environment.wave_kinematics,
+        WaveKinematicsMethod::StaticPosition {
+            sample_interval: 0.05
+        }
+    );
+    bad(
+        &replaced(&text, "sample_interval = 0.05", "sample_interval = -1.0"),
+        "sample_interval",
+        "environment.waves.sample_interval",
+    );
+    let msg = error(&replaced(
+        BASE,
+        "stretching = \"vertical\"",
+        "stretching = \"vertical\"\nsample_interval = 0.05",
+    ));
+    assert!(
+        msg.contains("environment.waves.sample_interval") && msg.contains("hint"),
+        "{msg}"
+    );
+    // An elevation record: record keys misplaced on a spectral sea; spectral keys on a record;
+    // a record that does not increase.
+    let msg = error(&replaced(
+        BASE,
+        "ramp_time = 20.0",
+        "ramp_time = 20.0\ncutoff_frequency = 0.5",
+    ));
+    assert!(msg.contains("environment.waves.cutoff_frequency"), "{msg}");
+    let record = replaced(
+        BASE,
+        "type = \"jonswap\"\nsignificant_height = 3.0\npeak_period = 9.0\ngamma = 2.5\n",
+        "type = \"elevation-record\"\nelevation = [[0.0, 0.0], [1.0, 0.5], [0.5, 0.2], [2.0, 0.0], [3.0, -0.4]]\n",
+    );
+    let msg = error(&record);
+    assert!(msg.contains("environment.waves.spreading"), "{msg}");
+    let record = replaced(
+        &replaced(
+            &record,
+            "spreading = 6.0\nseed = 42\ncomponents = 150\nfrequency_range = [0.06, 0.5]\n",
+            "",
+        ),
+        "elevation = [[0.0",
+        "elevation = [[0.0",
+    );
+    bad(&record, "elevation =", "environment.waves.elevation");
+    // A current table whose rows do not match its heights.
+    let table = replaced(
+        BASE,
+        "[environment.waves]",
+        "[environment.current]\ntype = \"profile-table\"\nz = [-60.0, 0.0]\ntimes = [0.0, 10.0]\nux = [[0.0, 0.1], [0.2]]\n\n[environment.waves]",
+    );
+    let msg = error(&table);
+    assert_located(
+        &msg,
+        line_of(&table, "ux = "),
+        "environment.current.ux",
+        false,
+        true,
+    );
+    let table = replaced(&table, "times = [0.0, 10.0]", "times = [10.0, 0.0]");
+    bad(&table, "times = ", "environment.current.times");
+    assert!(!panics(&table) && !panics(&record));
+}

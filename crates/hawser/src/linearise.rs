@@ -116,7 +116,7 @@ pub(crate) fn line_forces_at_rest(
             &mut lw.force,
             &mut lw.elements,
             with_mass.then_some(&mut ws.blocks[li]),
-            LoadOptions { current_factor },
+            LoadOptions::direct(current_factor),
         );
     }
 }
@@ -138,7 +138,7 @@ pub fn force_jacobian(
     current_factor: Real,
     ws: &mut Workspace,
 ) {
-    let options = LoadOptions { current_factor };
+    let options = LoadOptions::direct(current_factor);
     kinematics_at_rest(system, y, current_factor, ws);
     let env = &system.environment;
     let mut base: Vec<Vec3> = Vec::new();

@@ -84,6 +84,11 @@ impl<'a> Simulation<'a> {
         self.stepper.step(self.system)
     }
 
+    /// The run's workspace (scratch of the last evaluation, and the run's wave tables).
+    pub fn workspace(&self) -> &Workspace {
+        self.stepper.workspace()
+    }
+
     /// Evaluates the right-hand side at the current state (fills tensions and end forces).
     pub fn evaluate(&mut self) -> Result<&Workspace, SimulationError> {
         self.stepper.evaluate(self.system)

@@ -163,6 +163,32 @@ fn time_loop_does_not_allocate() {
     for scheme in [Scheme::Rk4, Scheme::SspRk3, Scheme::ThreeLevel] {
         check("two lines on a shared buoy", &model, scheme);
     }
+    // The same with the waves at the static position (the cache's ring refilled as time
+    // advances) and a current table against time.
+    let mut tabled = model.clone();
+    tabled.environment.wave_kinematics =
+        hawser::physics::static_kinematics::WaveKinematicsMethod::StaticPosition {
+            sample_interval: 0.01,
+        };
+    tabled.environment.current = Current::Table {
+        z: vec![-60.0, 0.0],
+        time: vec![0.0, 0.05, 10.0],
+        velocity: vec![
+            Vec3::zeros(),
+            Vec3::new(0.2, 0.0, 0.0),
+            Vec3::zeros(),
+            Vec3::new(1.0, 0.3, 0.0),
+            Vec3::new(0.1, 0.0, 0.0),
+            Vec3::new(0.5, 0.0, 0.0),
+        ],
+    };
+    for scheme in [Scheme::Rk4, Scheme::SspRk3] {
+        check(
+            "two lines, static-position waves, current table",
+            &tabled,
+            scheme,
+        );
+    }
 
     // Obstacles in contact with the lower line: a fixed sphere under its middle and a
     // horizontal cylinder moving by a time series under its eighth node, with friction.
@@ -309,7 +335,7 @@ fn session_stepping_coupling_and_observers_do_not_allocate() {
         let dt_c = 0.013;
         let position = |t: f64| top + Vec3::new(0.5 * (1.3 * t).sin(), 0.0, 0.0);
         let velocity = |t: f64| Vec3::new(0.65 * (1.3 * t).cos(), 0.0, 0.0);
-        let mut interval = |session: &mut hawser::Session, k: usize| {
+        let interval = |session: &mut hawser::Session, k: usize| {
             let t1 = k as f64 * dt_c;
             session
                 .set_point_kinematics(p, t1, position(t1), velocity(t1), None)

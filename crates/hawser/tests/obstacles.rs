@@ -590,9 +590,7 @@ fn obstacle_part_of_node_forces(system: &System, ws: &Workspace, t: Real) -> Vec
             &mut forces,
             &mut elements,
             None,
-            LoadOptions {
-                current_factor: 1.0,
-            },
+            LoadOptions::direct(1.0),
         );
         (0..l.nodes())
             .map(|i| forces[l.node_vector(i)])

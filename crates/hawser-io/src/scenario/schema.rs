@@ -224,6 +224,8 @@ pub enum CurrentKind {
     Uniform,
     /// A table of velocity against height z.
     Profile,
+    /// Profiles against time: velocity at heights `z` and `times`, interpolated in both.
+    ProfileTable,
 }
 
 /// `[environment.current]`.
@@ -242,6 +244,26 @@ pub struct CurrentSpec {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<Vec<[f64; 4]>>")]
     pub profile: Option<Spanned<Vec<[f64; 4]>>>,
+    /// Heights z [m] of a `profile-table`, strictly increasing (negative below the surface).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<Vec<f64>>")]
+    pub z: Option<Spanned<Vec<f64>>>,
+    /// Times t [s] of a `profile-table`, strictly increasing.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<Vec<f64>>")]
+    pub times: Option<Spanned<Vec<f64>>>,
+    /// x velocity [m/s] of a `profile-table`: one row per time, one value per height.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<Vec<Vec<f64>>>")]
+    pub ux: Option<Spanned<Vec<Vec<f64>>>>,
+    /// y velocity [m/s] of a `profile-table` (rows as `ux`); zero if not given.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<Vec<Vec<f64>>>")]
+    pub uy: Option<Spanned<Vec<Vec<f64>>>>,
+    /// z velocity [m/s] of a `profile-table` (rows as `ux`); zero if not given.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<Vec<Vec<f64>>>")]
+    pub uz: Option<Spanned<Vec<Vec<f64>>>>,
 }
 
 /// Kind of waves.
@@ -254,6 +276,18 @@ pub enum WaveKind {
     Jonswap,
     /// An irregular sea from a Pierson–Moskowitz spectrum.
     PiersonMoskowitz,
+    /// The Fourier components of a recorded surface elevation η(t) at the origin.
+    ElevationRecord,
+}
+
+/// How line quadrature points take the wave kinematics.
+#[derive(Clone, Copy, Debug, Deserialize, Serialize, JsonSchema, PartialEq, Eq)]
+#[serde(rename_all = "kebab-case")]
+pub enum WaveKinematicsSpec {
+    /// Summed over every component at each point's current position (the reference).
+    Direct,
+    /// Summed at each point's static position at intervals and interpolated in time.
+    StaticPosition,
 }
 
 /// Continuation of the linear wave profiles above the mean water level.
@@ -323,6 +357,34 @@ pub struct WavesSpec {
     /// `"wheeler"` (default) or `"vertical"`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub stretching: Option<StretchingSpec>,
+    /// `"direct"` (default) or `"static-position"`: how lines take the wave kinematics.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<WaveKinematicsSpec>")]
+    pub kinematics: Option<Spanned<WaveKinematicsSpec>>,
+    /// Sample interval of `static-position` kinematics [s]; default 1/25 of the period of the
+    /// highest-frequency component.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub sample_interval: Option<Spanned<f64>>,
+    /// Elevation record rows `[t, η]` [s, m] of an `elevation-record` (or `elevation_file`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<Vec<[f64; 2]>>")]
+    pub elevation: Option<Spanned<Vec<[f64; 2]>>>,
+    /// File of an `elevation-record`, relative to the scenario file: rows `t η` [s, m]
+    /// (MoorDyn's `wave_elevation.txt`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<String>")]
+    pub elevation_file: Option<Spanned<String>>,
+    /// Interval [s] at which an `elevation-record` is resampled (linearly) before its Fourier
+    /// transform; default its smallest time step (MoorDyn's `dtWave`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub resample_interval: Option<Spanned<f64>>,
+    /// Components of an `elevation-record` above this frequency [Hz] are dropped; default
+    /// none (up to the Nyquist frequency).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub cutoff_frequency: Option<Spanned<f64>>,
 }
 
 /// Fourier coefficients of a drag loading function.

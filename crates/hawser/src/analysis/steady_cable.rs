@@ -378,6 +378,13 @@ impl SteadyTow {
                     "a current profile is not supported (uniform current only)",
                 ));
             }
+            Current::Table { .. } => {
+                return Err(invalid(
+                    "environment.current",
+                    "a current that varies in time is not supported (steady towing in a \
+                     uniform current only)",
+                ));
+            }
         };
         if env.waves.field().is_some() {
             return Err(invalid(

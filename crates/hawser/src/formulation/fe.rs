@@ -88,10 +88,12 @@ pub fn line_forces(
         // Drag and fluid inertia at two Gauss points (eqs. 16, 19–23).
         let root_stretch = stretch.max(0.0).sqrt();
         let w = 0.5 * l0;
-        for &xi in &GAUSS {
+        for (g, &xi) in GAUSS.iter().enumerate() {
             let (na, nb) = (1.0 - xi, xi);
             let f = fluid_load(
                 env,
+                &options.fluid,
+                2 * e + g,
                 lt,
                 sec.area,
                 time,

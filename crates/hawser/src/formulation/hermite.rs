@@ -225,7 +225,7 @@ pub fn line_forces(
         let ve = [qdot[idx[0]], qdot[idx[1]], qdot[idx[2]], qdot[idx[3]]];
         let mut fe = [Vec3::zeros(); 4];
         let net_weight = (rho_w * sec.area - lt.mass_per_length) * g;
-        for &(xi, wg) in &GAUSS {
+        for (gp, &(xi, wg)) in GAUSS.iter().enumerate() {
             let (s, d1, d2, _) = shape(xi, l);
             let w = wg * l;
             let r = combine(&s, &qe);
@@ -268,6 +268,8 @@ pub fn line_forces(
             }
             f += fluid_load(
                 env,
+                &load.fluid,
+                GAUSS.len() * e + gp,
                 lt,
                 sec.area,
                 time,

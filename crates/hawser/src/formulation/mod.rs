@@ -21,6 +21,7 @@ use crate::model::{LineType, MassMatrix};
 use crate::physics::environment::Environment;
 use crate::physics::hydrodynamics::{drag_force, fluid_inertia_force};
 use crate::physics::material::AxialLaw;
+use crate::physics::static_kinematics::FluidPoints;
 
 pub use crate::model::StrainMeasure;
 pub use hermite::HermiteOptions;
@@ -262,11 +263,14 @@ impl ElementState {
 /// to the water (the current scaled by `current_factor`), and, in moving water, the
 /// Froude–Krylov and added-mass force of the water's acceleration. `still_water` skips the
 /// fluid kinematics where there is no current and no wave. Shared by every formulation at its
-/// own quadrature points.
+/// own quadrature points: `fluid` and `point` say which of the line's points this is, for
+/// wave kinematics at the static position ([`FluidPoints`]).
 #[allow(clippy::too_many_arguments)]
 #[inline]
 pub fn fluid_load(
     env: &Environment,
+    fluid: &FluidPoints,
+    point: usize,
     line_type: &LineType,
     area: Real,
     time: Real,
@@ -282,7 +286,7 @@ pub fn fluid_load(
     if still_water {
         return drag_force(&lt.drag, rho, lt.diameter, root_stretch, tau, &-v);
     }
-    let (velocity, acceleration) = env.fluid_kinematics(r, time);
+    let (velocity, acceleration) = fluid.kinematics(env, point, r, time);
     let relative = velocity * current_factor - v;
     drag_force(&lt.drag, rho, lt.diameter, root_stretch, tau, &relative)
         + fluid_inertia_force(
@@ -322,11 +326,23 @@ impl std::ops::AddAssign for Energy {
 }
 
 /// Load scaling for statics continuation (the mass blocks are assembled when the caller
-/// passes them).
+/// passes them), and where the line's quadrature points take the fluid kinematics.
 #[derive(Clone, Copy, Debug)]
-pub struct LoadOptions {
+pub struct LoadOptions<'a> {
     /// Multiplies the current velocity seen by drag [-].
     pub current_factor: Real,
+    /// Direct summation, or the line's points in the static-position cache.
+    pub fluid: FluidPoints<'a>,
+}
+
+impl LoadOptions<'_> {
+    /// The full current, direct wave kinematics.
+    pub fn direct(current_factor: Real) -> Self {
+        Self {
+            current_factor,
+            fluid: FluidPoints::Direct,
+        }
+    }
 }
 
 /// Evaluates the generalized forces of a line on its vectors (see the module doc) at

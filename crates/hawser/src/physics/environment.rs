@@ -2,6 +2,7 @@
 
 use crate::math::{Real, Vec3};
 use crate::physics::obstacles::Obstacle;
+use crate::physics::static_kinematics::WaveKinematicsMethod;
 use crate::physics::waves::Waves;
 
 /// Standard gravity [m/s²] (SPEC §1).
@@ -35,6 +36,9 @@ pub struct Environment {
     /// Sea state; [`Waves::None`] by default. Build it with [`Waves::new`] for this
     /// environment's `depth` and `gravity`.
     pub waves: Waves,
+    /// How line quadrature points take the wave kinematics: direct summation (default) or
+    /// at their static position, interpolated in time.
+    pub wave_kinematics: WaveKinematicsMethod,
     /// Rigid spheres and cylinders, fixed or moving, that lines touch; none by default.
     pub obstacles: Vec<Obstacle>,
 }
@@ -49,12 +53,13 @@ impl Default for Environment {
             seabed: Default::default(),
             current: Current::None,
             waves: Waves::None,
+            wave_kinematics: WaveKinematicsMethod::Direct,
             obstacles: Vec::new(),
         }
     }
 }
 
-/// Current: steady, depth-dependent water velocity [m/s].
+/// Current: water velocity [m/s] that depends on the height z, and for a table also on time.
 #[derive(Clone, Debug, PartialEq, Default)]
 pub enum Current {
     /// Still water.
@@ -70,32 +75,103 @@ pub enum Current {
         /// Velocity [m/s] at each height.
         velocity: Vec<Vec3>,
     },
+    /// Profiles against time (MoorDyn's `current_profile_dynamic.txt`): velocity [m/s] at
+    /// heights `z` [m] and times `time` [s], interpolated bilinearly (linearly in z, then in
+    /// t) and held constant beyond the first and last height and time. Its local acceleration
+    /// ∂u/∂t is that of the interpolant: within [t_k, t_{k+1}) the constant
+    /// (u(z, t_{k+1}) − u(z, t_k)) / (t_{k+1} − t_k), zero before the first and from the last
+    /// time on.
+    Table {
+        /// Heights z [m], strictly increasing.
+        z: Vec<Real>,
+        /// Times t [s], strictly increasing.
+        time: Vec<Real>,
+        /// Velocity [m/s] at (time k, height i), at index k · z.len() + i.
+        velocity: Vec<Vec3>,
+    },
+}
+
+/// Linear interpolation in a strictly increasing table `xs` at x, held constant beyond its
+/// ends: (index k of the upper entry, weight w of it), the value being
+/// (1 − w) f[k − 1] + w f[k] (k = 1 and w = 0 below the table, w = 1 at or above its end).
+#[inline]
+fn bracket(xs: &[Real], x: Real) -> (usize, Real) {
+    let n = xs.len();
+    if n < 2 || x <= xs[0] {
+        return (1.min(n.saturating_sub(1)), 0.0);
+    }
+    if x >= xs[n - 1] {
+        return (n - 1, 1.0);
+    }
+    let k = xs.partition_point(|&v| v <= x).clamp(1, n - 1);
+    (k, (x - xs[k - 1]) / (xs[k] - xs[k - 1]))
+}
+
+/// Velocity [m/s] of a profile `velocity` at heights `zs` [m], at height z [m].
+#[inline]
+fn profile_at(zs: &[Real], velocity: &[Vec3], z: Real) -> Vec3 {
+    match zs.len() {
+        0 => Vec3::zeros(),
+        1 => velocity[0],
+        _ => {
+            let (k, w) = bracket(zs, z);
+            velocity[k - 1] * (1.0 - w) + velocity[k] * w
+        }
+    }
 }
 
 impl Current {
-    /// Water velocity [m/s] at height z [m].
+    /// Water velocity [m/s] at height z [m] and time t [s].
     #[inline]
-    pub fn velocity(&self, z: Real) -> Vec3 {
+    pub fn velocity(&self, z: Real, t: Real) -> Vec3 {
         match self {
             Current::None => Vec3::zeros(),
             Current::Uniform(u) => *u,
-            Current::Profile { z: zs, velocity } => {
-                let n = zs.len();
-                if n == 0 {
-                    return Vec3::zeros();
+            Current::Profile { z: zs, velocity } => profile_at(zs, velocity, z),
+            Current::Table {
+                z: zs,
+                time,
+                velocity,
+            } => {
+                let nz = zs.len();
+                if time.len() < 2 {
+                    return profile_at(zs, &velocity[..nz], z);
                 }
-                if z <= zs[0] {
-                    return velocity[0];
-                }
-                if z >= zs[n - 1] {
-                    return velocity[n - 1];
-                }
-                // Binary search for the bracketing interval.
-                let k = zs.partition_point(|&zk| zk <= z).clamp(1, n - 1);
-                let w = (z - zs[k - 1]) / (zs[k] - zs[k - 1]);
-                velocity[k - 1] * (1.0 - w) + velocity[k] * w
+                let (k, w) = bracket(time, t);
+                let before = profile_at(zs, &velocity[(k - 1) * nz..k * nz], z);
+                let after = profile_at(zs, &velocity[k * nz..(k + 1) * nz], z);
+                before * (1.0 - w) + after * w
             }
         }
+    }
+
+    /// Local acceleration ∂u/∂t [m/s²] of the water at height z [m] and time t [s]: zero but
+    /// for a [`Current::Table`] inside its time range.
+    #[inline]
+    pub fn acceleration(&self, z: Real, t: Real) -> Vec3 {
+        match self {
+            Current::Table {
+                z: zs,
+                time,
+                velocity,
+            } => {
+                let (nz, nt) = (zs.len(), time.len());
+                if nt < 2 || t < time[0] || t >= time[nt - 1] {
+                    return Vec3::zeros();
+                }
+                let (k, _) = bracket(time, t);
+                let before = profile_at(zs, &velocity[(k - 1) * nz..k * nz], z);
+                let after = profile_at(zs, &velocity[k * nz..(k + 1) * nz], z);
+                (after - before) / (time[k] - time[k - 1])
+            }
+            _ => Vec3::zeros(),
+        }
+    }
+
+    /// Whether the current changes in time (so that ∂u/∂t can be non-zero).
+    #[inline]
+    pub fn is_unsteady(&self) -> bool {
+        matches!(self, Current::Table { .. })
     }
 }
 
@@ -118,8 +194,8 @@ impl Environment {
         self.fluid_kinematics(position, time).0
     }
 
-    /// Local fluid acceleration ∂u/∂t at a point [m/s²] and time [s]: the waves' (steady
-    /// currents add none), zero in the air. This is what the Froude–Krylov and added-mass
+    /// Local fluid acceleration ∂u/∂t at a point [m/s²] and time [s]: the waves' plus that of
+    /// a current table (steady currents add none), zero in the air. This is what the Froude–Krylov and added-mass
     /// terms of Morison's equation take (SPEC §1).
     #[inline]
     pub fn fluid_acceleration(&self, position: &Vec3, time: Real) -> Vec3 {
@@ -134,17 +210,45 @@ impl Environment {
     #[inline]
     pub fn fluid_kinematics(&self, position: &Vec3, time: Real) -> (Vec3, Vec3) {
         match &self.waves {
-            Waves::None if position.z < 0.0 => (self.current.velocity(position.z), Vec3::zeros()),
-            Waves::None => (Vec3::zeros(), Vec3::zeros()),
+            Waves::None => self.fluid_kinematics_with_waves(
+                (position.z < 0.0, Vec3::zeros(), Vec3::zeros()),
+                position,
+                time,
+            ),
             Waves::Airy(field) => {
                 let k = field.kinematics(position, time);
-                let velocity = if k.submerged {
-                    self.current.velocity(position.z) + k.velocity
-                } else {
-                    Vec3::zeros()
-                };
-                (velocity, k.acceleration)
+                self.fluid_kinematics_with_waves(
+                    (k.submerged, k.velocity, k.acceleration),
+                    position,
+                    time,
+                )
             }
+        }
+    }
+
+    /// Fluid velocity [m/s] and local acceleration [m/s²] at a point [m] and time [s] from the
+    /// waves' part `(submerged, velocity, acceleration)` there, however it was found (direct
+    /// summation or [`crate::physics::static_kinematics`]): in the water the current at the
+    /// point's height plus the waves, and for an unsteady current its ∂u/∂t added to the
+    /// waves' (it enters the Froude–Krylov and added-mass terms like theirs); nothing in the
+    /// air.
+    #[inline]
+    pub fn fluid_kinematics_with_waves(
+        &self,
+        waves: (bool, Vec3, Vec3),
+        position: &Vec3,
+        time: Real,
+    ) -> (Vec3, Vec3) {
+        let (submerged, u, a) = waves;
+        if !submerged {
+            return (Vec3::zeros(), Vec3::zeros());
+        }
+        let z = position.z;
+        let velocity = self.current.velocity(z, time) + u;
+        if self.current.is_unsteady() {
+            (velocity, a + self.current.acceleration(z, time))
+        } else {
+            (velocity, a)
         }
     }
 
@@ -260,8 +364,9 @@ mod tests {
             z: vec![-100.0, 0.0],
             velocity: vec![Vec3::new(0.0, 0.0, 0.0), Vec3::new(1.0, 0.0, 0.0)],
         };
-        assert_eq!(c.velocity(-50.0).x, 0.5);
-        assert_eq!(c.velocity(-200.0).x, 0.0);
-        assert_eq!(c.velocity(5.0).x, 1.0);
+        assert_eq!(c.velocity(-50.0, 0.0).x, 0.5);
+        assert_eq!(c.velocity(-200.0, 0.0).x, 0.0);
+        assert_eq!(c.velocity(5.0, 0.0).x, 1.0);
+        assert_eq!(c.acceleration(-50.0, 0.0), Vec3::zeros());
     }
 }

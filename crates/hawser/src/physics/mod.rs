@@ -6,4 +6,5 @@ pub mod hydrodynamics;
 pub mod material;
 pub mod obstacles;
 pub mod seabed;
+pub mod static_kinematics;
 pub mod waves;

@@ -136,6 +136,24 @@ pub enum SeaState {
     Regular(RegularWave),
     /// An irregular sea.
     Irregular(IrregularSea),
+    /// Given components, each its amplitude, frequency, direction and phase, taken as they
+    /// are: for instance the Fourier components of a recorded elevation (hawser-io's
+    /// `elevation-record` scenario waves, MoorDyn's `WaveKin 3`).
+    Components(Vec<ComponentSpec>),
+}
+
+/// One given wave component of [`SeaState::Components`]: it contributes
+/// η = a cos(k (x cos β + y sin β) − ω t + φ).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ComponentSpec {
+    /// Amplitude a [m], ≥ 0.
+    pub amplitude: Real,
+    /// Angular frequency ω [rad/s], > 0.
+    pub angular_frequency: Real,
+    /// Direction of propagation β [rad], from +x toward +y.
+    pub direction: Real,
+    /// Phase φ [rad] at the origin at t = 0.
+    pub phase: Real,
 }
 
 /// How the linear profiles, defined for z ≤ 0, are continued up to the instantaneous surface η.
@@ -349,6 +367,7 @@ impl Waves {
                 )]
             }
             SeaState::Irregular(sea) => irregular_components(sea, depth, gravity)?,
+            SeaState::Components(list) => given_components(list, depth, gravity)?,
         };
         let amplitude_sum = components.iter().map(|c| c.amplitude).sum();
         Ok(Waves::Airy(WaveField {
@@ -523,6 +542,114 @@ impl WaveField {
             acceleration: Vec3::new(ah_x, ah_y, aw) * r + u * dr,
             kinematic_pressure: p * r,
         }
+    }
+}
+
+impl WaveField {
+    /// (sin, cos) of the spatial part k_j (x cos β_j + y sin β_j) of every component's phase
+    /// at (x, y) [m], into `out` (one per component).
+    pub(crate) fn spatial_phases(&self, x: Real, y: Real, out: &mut [(Real, Real)]) {
+        for (c, o) in self.components.iter().zip(out.iter_mut()) {
+            *o = (c.kx * x + c.ky * y).sin_cos();
+        }
+    }
+
+    /// (sin, cos) of the time part φ_j − ω_j t of every component's phase at t [s], into
+    /// `out`: the part of θ_j that all points share at one time.
+    pub(crate) fn temporal_phases(&self, t: Real, out: &mut [(Real, Real)]) {
+        for (c, o) in self.components.iter().zip(out.iter_mut()) {
+            *o = (c.phase - c.angular_frequency * t).sin_cos();
+        }
+    }
+
+    /// The fields of [`WaveField::kinematics`] at a point of height `z` [m] whose spatial
+    /// phases are `spatial` ([`WaveField::spatial_phases`]), at the time of `temporal`
+    /// ([`WaveField::temporal_phases`]) and ramp (r, dr/dt): θ_j from the two parts by the
+    /// angle-addition formulas (4 products, no sine or cosine). When the surface η is below
+    /// `z`, the fields are those at the surface z = η (the continuation that the
+    /// static-position kinematics take for a point that the surface leaves behind); the
+    /// elevation η [m] is returned with them. `phases` is scratch, one per component.
+    pub(crate) fn kinematics_from_phases(
+        &self,
+        z: Real,
+        ramp: (Real, Real),
+        spatial: &[(Real, Real)],
+        temporal: &[(Real, Real)],
+        phases: &mut [(Real, Real)],
+    ) -> (Real, WaveKinematics) {
+        let (r, dr) = ramp;
+        if r == 0.0 {
+            return (
+                0.0,
+                WaveKinematics {
+                    submerged: z <= 0.0,
+                    ..Default::default()
+                },
+            );
+        }
+        let mut eta = 0.0;
+        for (((c, &(ss, cs)), &(st, ct)), p) in self
+            .components
+            .iter()
+            .zip(spatial)
+            .zip(temporal)
+            .zip(phases.iter_mut())
+        {
+            // sin(a + b), cos(a + b).
+            *p = (ss * ct + cs * st, cs * ct - ss * st);
+            eta += c.amplitude * p.1;
+        }
+        let eta = r * eta;
+        let z = z.min(eta);
+        let h = self.depth;
+        let zs = match self.spec.stretching {
+            Stretching::Wheeler if h.is_finite() => {
+                h * (z - eta) / (h + eta).max(Real::MIN_POSITIVE)
+            }
+            Stretching::Wheeler => z - eta,
+            Stretching::Vertical => z.min(0.0),
+        }
+        .clamp(-h, 0.0);
+        let (mut uh_x, mut uh_y, mut w) = (0.0, 0.0, 0.0);
+        let (mut ah_x, mut ah_y, mut aw) = (0.0, 0.0, 0.0);
+        let mut p = 0.0;
+        for (c, &(s, co)) in self.components.iter().zip(phases.iter()) {
+            let e1 = (c.wavenumber * zs).exp();
+            if e1 < NEGLIGIBLE_DEPTH_FACTOR {
+                break;
+            }
+            let e2 = c.exp_2kh / e1;
+            let cosh_factor = (e1 + e2) * c.inv_sinh_scale;
+            let sinh_factor = (e1 - e2) * c.inv_sinh_scale;
+            let pressure_factor = (e1 + e2) * c.inv_cosh_scale;
+            let uh = c.velocity_amplitude * cosh_factor * co;
+            let ah = c.acceleration_amplitude * cosh_factor * s;
+            uh_x += uh * c.cos_direction;
+            uh_y += uh * c.sin_direction;
+            w += c.velocity_amplitude * sinh_factor * s;
+            ah_x += ah * c.cos_direction;
+            ah_y += ah * c.sin_direction;
+            aw -= c.acceleration_amplitude * sinh_factor * co;
+            p += c.pressure_amplitude * pressure_factor * co;
+        }
+        let u = Vec3::new(uh_x, uh_y, w);
+        (
+            eta,
+            WaveKinematics {
+                submerged: true,
+                velocity: u * r,
+                acceleration: Vec3::new(ah_x, ah_y, aw) * r + u * dr,
+                kinematic_pressure: p * r,
+            },
+        )
+    }
+
+    /// Highest angular frequency among the components [rad/s].
+    pub fn highest_frequency(&self) -> Real {
+        self.components
+            .iter()
+            .map(|c| c.angular_frequency)
+            .fold(0.0, Real::max)
     }
 }
 
@@ -722,6 +849,47 @@ fn spreading_offset(rng: &mut Pcg64, s: Real) -> Real {
             return theta;
         }
     }
+}
+
+/// The components of [`SeaState::Components`], sorted by increasing frequency (and so
+/// wavenumber, which the depth cut-off of the kinematics relies on).
+fn given_components(
+    list: &[ComponentSpec],
+    depth: Real,
+    gravity: Real,
+) -> Result<Vec<WaveComponent>, ModelError> {
+    for (j, c) in list.iter().enumerate() {
+        check(
+            c.amplitude.is_finite() && c.amplitude >= 0.0,
+            &format!("component {j} amplitude"),
+            "a component's amplitude must be ≥ 0 m",
+        )?;
+        check(
+            c.angular_frequency.is_finite() && c.angular_frequency > 0.0,
+            &format!("component {j} frequency"),
+            "a component's frequency must be > 0 rad/s",
+        )?;
+        check(
+            c.direction.is_finite() && c.phase.is_finite(),
+            &format!("component {j} direction and phase"),
+            "a component's direction and phase must be finite",
+        )?;
+    }
+    let mut sorted = list.to_vec();
+    sorted.sort_by(|a, b| a.angular_frequency.total_cmp(&b.angular_frequency));
+    Ok(sorted
+        .iter()
+        .map(|c| {
+            WaveComponent::new(
+                c.amplitude,
+                c.angular_frequency,
+                c.direction,
+                c.phase,
+                depth,
+                gravity,
+            )
+        })
+        .collect())
 }
 
 fn irregular_components(

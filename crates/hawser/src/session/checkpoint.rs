@@ -258,6 +258,14 @@ impl Session {
         put_saved(&mut e, &self.coupling.start);
         e.u64(self.coupling.start_samples.0);
         e.f64(self.coupling.start_samples.1);
+        // The static positions of the wave kinematics cache: recorded at the start of the run,
+        // not where the run is now.
+        let tables = self.system.wave_table_positions(self.stepper.workspace());
+        e.bool(tables.is_some());
+        for line in tables.iter().flatten() {
+            e.u64(line.len() as u64);
+            line.iter().for_each(|p| e.vec3(p));
+        }
         e.bytes
     }
 
@@ -309,6 +317,21 @@ impl Session {
         session.coupling.interval = open.then_some(interval);
         session.coupling.start = get_saved(&mut d)?;
         session.coupling.start_samples = (d.u64()?, d.f64()?);
+        if d.bool()? {
+            let mut positions = Vec::new();
+            for l in 0..session.system.lines.len() {
+                let n = d.u64()? as usize;
+                if n != session.system.fluid_points(l) {
+                    return Err(bad(
+                        "the checkpoint's wave kinematics points do not match".into()
+                    ));
+                }
+                positions.push((0..n).map(|_| d.vec3()).collect::<Result<Vec<_>, _>>()?);
+            }
+            session
+                .system
+                .restore_wave_tables(&positions, &mut session.stepper.ws);
+        }
         session.samples = samples;
         session.last_sample = last_sample;
         if !d.rest().is_empty() {

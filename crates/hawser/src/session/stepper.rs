@@ -158,6 +158,7 @@ impl Stepper {
         let stiffness_limit = limit;
         let n = initial.len();
         let mut ws = system.workspace();
+        system.start_wave_tables(0.0, &initial, &mut ws);
         if settings.scheme == Scheme::ThreeLevel {
             // Eq. 48 at the initial strains, bounded by the stiffness-and-damping estimate.
             let mut derivative = vec![0.0; n];

@@ -16,11 +16,13 @@ mod line;
 mod rhs;
 mod shapes;
 mod stability;
+mod wave_tables;
 mod workspace;
 
 pub use layout::Layout;
 pub use line::SystemLine;
 use rhs::SphereContact;
+pub use wave_tables::WavePoints;
 pub use workspace::{CouplingTracks, LineWork, WinchWork, Workspace};
 
 use crate::error::ModelError;

@@ -214,6 +214,7 @@ impl System {
         dydt: &mut [Real],
         ws: &mut Workspace,
     ) -> Result<(), Location> {
+        self.prepare_wave_tables(t, ws);
         self.point_kinematics(t, y, ws);
         self.evaluate_dg_lines(t, y, dydt, ws);
         self.assemble_loads(t, y, ws);
@@ -289,8 +290,9 @@ impl System {
                 }
             };
             let ends = [end_state(0, l.end_a), end_state(1, l.end_b)];
-            let loads = dg.rhs(
+            let loads = dg.rhs_with(
                 &self.environment,
+                ws.wave_points.of_line(li),
                 t,
                 &y[range.clone()],
                 &ends,
@@ -330,6 +332,7 @@ impl System {
     /// fixed or prescribed points), and each free point's own load and mass in
     /// `ws.coupled.point_x`, `ws.coupled.point_diag`.
     pub fn assemble(&self, t: Real, y: &[Real], ws: &mut Workspace) {
+        self.prepare_wave_tables(t, ws);
         self.point_kinematics(t, y, ws);
         self.assemble_loads(t, y, ws);
     }
@@ -339,10 +342,11 @@ impl System {
     fn assemble_loads(&self, t: Real, y: &[Real], ws: &mut Workspace) {
         self.update_winches(t, ws);
         self.gather_lines(y, ws);
-        let options = LoadOptions {
-            current_factor: 1.0,
-        };
         for (li, l) in self.lines.iter().enumerate() {
+            let options = LoadOptions {
+                current_factor: 1.0,
+                fluid: ws.wave_points.of_line(li),
+            };
             let lw = &mut ws.lines[li];
             let blocks = &mut ws.blocks[li];
             if l.dg.is_some() {

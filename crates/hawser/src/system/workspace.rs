@@ -57,6 +57,9 @@ pub struct Workspace {
     /// The host's kinematics of the coupled points and bodies over the current coupling
     /// interval, sized once.
     pub coupling: CouplingTracks,
+    /// The run's wave kinematics at the static position, if it asks for them
+    /// ([`System::start_wave_tables`]); direct summation otherwise.
+    pub wave_points: WavePoints,
 }
 
 /// The kinematics a coupling host has set ([`crate::model::PointTrack`],
@@ -132,6 +135,7 @@ impl System {
                     })
                 })
                 .collect(),
+            wave_points: WavePoints::Direct,
             coupling: CouplingTracks {
                 points: self
                     .points

@@ -29,6 +29,7 @@ use toml::Spanned;
 mod line_types;
 mod options;
 mod outputs;
+mod water;
 use line_types::convert_line_types;
 use options::{environment_of, read_options, simulation_of};
 use outputs::convert_outputs;

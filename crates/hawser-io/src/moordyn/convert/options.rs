@@ -16,7 +16,7 @@ pub(super) struct Options<'r> {
 }
 
 impl<'r> Options<'r> {
-    fn get(&self, names: &[&str]) -> Option<(&'r Token, &'r Row)> {
+    pub(super) fn get(&self, names: &[&str]) -> Option<(&'r Token, &'r Row)> {
         self.rows
             .iter()
             .rev()
@@ -46,6 +46,7 @@ const USED_OPTIONS: &[&str] = &[
     "statdynfricscale",
     "dtout",
     "wavekin",
+    "dtwave",
     "currents",
     "seafloorfile",
 ];
@@ -90,8 +91,9 @@ const NOTED_OPTIONS: &[(&[&str], &str)] = &[
         " has no effect: hawser prints conversion notes instead",
     ),
     (
-        &["dtwave", "wavekin_rampt"],
-        " has no effect: waves are off (WaveKin 0)",
+        &["wavekin_rampt"],
+        " has no effect: MoorDyn 2.7 does not read it (hawser ramps its waves up by its own \
+         `ramp_time`)",
     ),
     (
         &["unifycurrentgrid"],
@@ -221,16 +223,7 @@ pub(super) fn environment_of(
             static_friction_scale,
         )
     });
-    if let Some((t, row)) = o.get(&["wavekin"])
-        && parse_number(&t.text) != Some(0.0)
-    {
-        let d = c
-            .diag(Some(t.span.clone()), "OPTIONS › WaveKin", "wave kinematics are not available yet")
-            .expected("WaveKin 0 (still water)")
-            .hint("waves come with hawser's sea-state support; set WaveKin to 0 to run in still water");
-        c.errors.push(d);
-        let _ = row;
-    }
+    let waves = super::water::waves_of(c, o, dir);
     if let Some((t, _)) = o.get(&["seafloorfile"]) {
         let d = c
             .diag(
@@ -243,22 +236,28 @@ pub(super) fn environment_of(
         c.errors.push(d);
     }
     let current = match o.get(&["currents"]) {
-        Some((t, row)) => match parse_number(&t.text) {
-            Some(0.0) => None,
-            Some(1.0) => current_profile(c, t, row, dir),
-            _ => {
-                let d = c
+        Some((t, row)) => {
+            match parse_number(&t.text) {
+                Some(0.0) => None,
+                Some(1.0) => current_profile(c, t, row, dir),
+                Some(2.0) => super::water::dynamic_current(c, t, row, dir),
+                _ => {
+                    let d = c
                     .diag(
                         Some(t.span.clone()),
                         "OPTIONS › Currents",
                         format!("Currents mode `{}` is not supported", t.text),
                     )
-                    .expected("0 (none) or 1 (steady profile from current_profile.txt)")
-                    .hint("time-varying and gridded currents are not available yet");
-                c.errors.push(d);
-                None
+                    .expected(
+                        "0 (none), 1 (steady profile from current_profile.txt) or 2 (profiles \
+                         against time from current_profile_dynamic.txt)",
+                    )
+                    .hint("MoorDyn's node-approach and 4D gridded currents are not read: use 1 or 2");
+                    c.errors.push(d);
+                    None
+                }
             }
-        },
+        }
         None => None,
     };
     let seabed = depth.as_ref().map(|_| SeabedSpec {
@@ -277,7 +276,7 @@ pub(super) fn environment_of(
         depth,
         seabed,
         current,
-        waves: None,
+        waves,
     }
 }
 
@@ -313,6 +312,11 @@ fn current_profile(c: &mut Converter, t: &Token, row: &Row, dir: &Path) -> Optio
         kind: spanned(t, CurrentKind::Profile),
         velocity: None,
         profile: Some(spanned(t, rows)),
+        z: None,
+        times: None,
+        ux: None,
+        uy: None,
+        uz: None,
     })
 }
 

@@ -51,6 +51,7 @@ pub(super) fn build_environment(b: &mut Builder, spec: Option<&EnvironmentSpec>)
         seabed: Seabed::default(),
         current: Current::None,
         waves: Waves::None,
+        wave_kinematics: Default::default(),
         obstacles: Vec::new(),
     };
     if let Some(d) = &e.depth {
@@ -250,10 +251,16 @@ pub(super) fn build_environment(b: &mut Builder, spec: Option<&EnvironmentSpec>)
                     }
                 }
             }
+            CurrentKind::ProfileTable => {
+                if let Some(table) = super::sea::current_table(b, c) {
+                    env.current = table;
+                }
+            }
         }
     }
     if let Some(w) = &e.waves {
         env.waves = build_waves(b, w, env.depth, env.gravity);
+        env.wave_kinematics = super::sea::wave_kinematics(b, w, &env.waves);
     }
     env
 }
@@ -275,6 +282,7 @@ fn wave_value(
                 WaveKind::Regular => "a regular wave",
                 WaveKind::Jonswap => "a JONSWAP sea",
                 WaveKind::PiersonMoskowitz => "a Pierson–Moskowitz sea",
+                WaveKind::ElevationRecord => "an elevation record",
             };
             let d = b
                 .diag(Some(kind.span()), &key, format!("{what} needs `{name}`"))
@@ -311,8 +319,20 @@ fn build_waves(b: &mut Builder, w: &WavesSpec, depth: f64, gravity: f64) -> Wave
             "a regular wave",
             "irregular seas, `type = \"jonswap\"` or `\"pierson-moskowitz\"`",
         ),
+        WaveKind::ElevationRecord => (&[], "", ""),
         _ => (&regular_keys, "an irregular sea", "`type = \"regular\"`"),
     };
+    if kind != WaveKind::ElevationRecord {
+        for (name, span) in super::sea::record_keys(w) {
+            b.not_for(
+                span.is_some(),
+                span,
+                &format!("environment.waves.{name}"),
+                "a regular wave or a spectral sea",
+                "`type = \"elevation-record\"`",
+            );
+        }
+    }
     for (name, span) in misplaced {
         b.not_for(
             span.is_some(),
@@ -356,6 +376,10 @@ fn build_waves(b: &mut Builder, w: &WavesSpec, depth: f64, gravity: f64) -> Wave
         )
         .to_radians();
     let (sea, period) = match kind {
+        WaveKind::ElevationRecord => match super::sea::elevation_record(b, w, direction) {
+            Some(r) => r,
+            None => return Waves::None,
+        },
         WaveKind::Regular => {
             let height = wave_value(
                 b,

@@ -18,6 +18,7 @@ mod lines;
 mod motions;
 mod obstacles;
 mod points;
+mod sea;
 mod settings;
 mod toml_errors;
 mod winch;
@@ -30,6 +31,7 @@ pub use motions::vessel_point_motion;
 use motions::{build_motion, build_rigid_motion};
 use obstacles::build_obstacles;
 use points::build_points;
+pub use sea::{read_elevation_file, record_components};
 use settings::{build_release, build_settings, check_steady_tow};
 use toml_errors::schema_errors;
 

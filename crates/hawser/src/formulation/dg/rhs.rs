@@ -19,6 +19,7 @@ use crate::math::{Real, Vec3, add3, get3, set3, solve3};
 use crate::physics::environment::Environment;
 use crate::physics::hydrodynamics::added_mass_matrix;
 use crate::physics::obstacles::total_force_at;
+use crate::physics::static_kinematics::FluidPoints;
 
 /// Scratch of a line's right-hand side, sized once by [`DgWorkspace::new`]: values at the
 /// quadrature points, at the two ends of every element, at the interfaces, and the modes of
@@ -232,6 +233,22 @@ impl DgLine {
         dstate: &mut [Real],
         ws: &mut DgWorkspace,
     ) -> [EndLoad; 2] {
+        self.rhs_with(env, FluidPoints::Direct, time, state, ends, dstate, ws)
+    }
+
+    /// [`DgLine::rhs`] with the fluid kinematics of the line's Gauss points taken as `fluid`
+    /// says (point p of the line is its p-th Gauss point, element by element).
+    #[allow(clippy::too_many_arguments)]
+    pub fn rhs_with(
+        &self,
+        env: &Environment,
+        fluid: FluidPoints,
+        time: Real,
+        state: &[Real],
+        ends: &[EndState; 2],
+        dstate: &mut [Real],
+        ws: &mut DgWorkspace,
+    ) -> [EndLoad; 2] {
         let n = self.elements.len();
 
         // 1. q, ν and r at the Gauss points and element ends; positions r = r_A + ∫q ds.
@@ -393,6 +410,8 @@ impl DgLine {
                 let mut f = Vec3::new(0.0, 0.0, net_weight);
                 f += fluid_load(
                     env,
+                    &fluid,
+                    p,
                     lt,
                     sec.properties.area,
                     time,
