@@ -6,19 +6,19 @@ use clap::{Parser, Subcommand};
 use hawser::SimulationError;
 use hawser::math::Real;
 use hawser::model::{MassMatrix, Model, TimeStep};
-use hawser::session::{Observer, ObserverError, RunEnd, Session, SessionOptions, View};
+use hawser::session::{Session, SessionOptions};
 use hawser::statics::StaticOptions;
 use hawser::system::{System, Workspace};
-use hawser_io::results::{RunWriter, statics_json};
+use hawser_io::results::statics_json;
 use hawser_io::scenario::tables::read_text_file;
 use hawser_io::scenario::{self, Diagnostic, InputFormat, LoadedScenario};
-use indicatif::{ProgressBar, ProgressStyle};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::Instant;
 
 mod bench_cases;
 mod modes;
+mod run;
 mod validate;
 
 /// `println!` that ends the program quietly when stdout is a closed pipe (`hawser ... | head`)
@@ -82,8 +82,24 @@ enum Command {
         /// the time, line and node if it diverges).
         #[arg(long)]
         allow_unstable_step: bool,
+        /// Replace the results of an earlier run in the output directory (its files are
+        /// removed first); without it such a directory is refused.
+        #[arg(long)]
+        overwrite: bool,
+        /// Save a checkpoint (checkpoint.bin) every SECONDS of simulated time, from which
+        /// `hawser resume` continues; a run stopped by Ctrl-C or SIGTERM always saves one.
+        #[arg(long, value_name = "SECONDS")]
+        checkpoint_every: Option<Real>,
         #[command(flatten)]
         deck: DeckArgs,
+    },
+    /// Continue an interrupted run from its checkpoint, appending to its results.
+    Resume {
+        /// The output directory of the interrupted run.
+        dir: PathBuf,
+        /// Hide the progress bar.
+        #[arg(long)]
+        quiet: bool,
     },
     /// Find the static equilibrium and print tensions and positions.
     Statics {
@@ -170,7 +186,8 @@ enum Command {
     Validate(validate::ValidateArgs),
 }
 
-/// Exit codes: 0 success, 1 simulation or statics failure, 2 bad input.
+/// Exit codes: 0 success, 1 simulation or statics failure, 2 bad input, 130 and 143 a run
+/// stopped by SIGINT and SIGTERM (resumable).
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
@@ -179,8 +196,19 @@ fn main() -> ExitCode {
             out,
             quiet,
             allow_unstable_step,
+            overwrite,
+            checkpoint_every,
             deck,
-        } => run(&file, &out, quiet, allow_unstable_step, &deck),
+        } => run::run(
+            &file,
+            &out,
+            quiet,
+            allow_unstable_step,
+            overwrite,
+            checkpoint_every,
+            &deck,
+        ),
+        Command::Resume { dir, quiet } => run::resume(&dir, quiet),
         Command::Statics { file, json } => statics(&file, json),
         Command::Check { file, deck } => check(&file, &deck),
         Command::Convert { file, out, deck } => convert(&file, out.as_deref(), &deck),
@@ -331,177 +359,6 @@ fn step_error(file: &Path, loaded: &LoadedScenario, e: &SimulationError) -> Stri
         return d.to_string();
     }
     e.to_string()
-}
-
-/// Shows progress while a run goes: the bar on a terminal.
-struct Progress {
-    bar: Option<ProgressBar>,
-    start: Instant,
-}
-
-impl Observer for Progress {
-    fn sample(&mut self, view: &View<'_>) -> Result<(), ObserverError> {
-        let time = view.time;
-        if let Some(bar) = &self.bar {
-            let wall = self.start.elapsed().as_secs_f64();
-            bar.set_position((time * 1000.0) as u64);
-            if wall > 0.0 {
-                bar.set_message(format!("t = {time:.2} s, {:.1}× real time", time / wall));
-            }
-        }
-        Ok(())
-    }
-
-    fn finish(&mut self, _: &View<'_>, _: &RunEnd) -> Result<(), ObserverError> {
-        if let Some(bar) = self.bar.take() {
-            bar.finish_and_clear();
-        }
-        Ok(())
-    }
-}
-
-/// Builds the session of a loaded scenario: exit code 2 for a step refused at the
-/// `time_step` key, 1 for failed statics (both already reported).
-fn session_of(
-    file: &Path,
-    loaded: &LoadedScenario,
-    options: SessionOptions,
-) -> Result<std::result::Result<Session, ExitCode>> {
-    match Session::with_options(loaded.model.clone(), options) {
-        Ok(s) => Ok(Ok(s)),
-        Err(SimulationError::Statics(e)) => {
-            eprintln!("error: {e}");
-            Ok(Err(ExitCode::from(1)))
-        }
-        Err(e @ SimulationError::StepTooLarge { .. }) => {
-            eprintln!("{}", step_error(file, loaded, &e));
-            Ok(Err(ExitCode::from(2)))
-        }
-        Err(SimulationError::Model(e)) => {
-            Err(anyhow::Error::new(e).context("the model is invalid"))
-        }
-        Err(e) => Err(e.into()),
-    }
-}
-
-fn run(
-    file: &Path,
-    out: &Path,
-    quiet: bool,
-    allow_unstable_step: bool,
-    deck: &DeckArgs,
-) -> Result<ExitCode> {
-    let Some(loaded) = load_with(file, deck, quiet) else {
-        return Ok(ExitCode::from(2));
-    };
-    if !loaded.has_simulation {
-        eprintln!(
-            "error: {} has no [simulation] table\n  = hint: add `[simulation]` with `duration = ...` (s)",
-            file.display()
-        );
-        return Ok(ExitCode::from(2));
-    }
-    let t0 = Instant::now();
-    let options = SessionOptions {
-        allow_unstable_step,
-        ..Default::default()
-    };
-    let mut session = match session_of(file, &loaded, options)? {
-        Ok(s) => s,
-        Err(code) => return Ok(code),
-    };
-    if let Some(f) = session.step_fallback() {
-        eprintln!(
-            "warning: the deck's dtM = {} s is above hawser's stability limit {:.4e} s \
-             (set by {}); using time_step = \"auto\"",
-            f.requested, f.limit, f.culprit
-        );
-    }
-    let model = &loaded.model;
-    if let Some(sol) = session.initial_statics()
-        && !quiet
-    {
-        eprintln!(
-            "statics: {} after {} iterations, residual {:.2e} N ({:.2} s)",
-            sol.method,
-            sol.iterations,
-            sol.residual,
-            t0.elapsed().as_secs_f64()
-        );
-    }
-    let (limit, culprit) = session.stable_step();
-    let (limit, culprit) = (limit, culprit.to_string());
-    if session.step_size() > limit {
-        eprintln!(
-            "warning: time step {:.4e} s is above the stability estimate {:.4e} s ({}); --allow-unstable-step is set",
-            session.step_size(),
-            limit,
-            culprit
-        );
-    }
-    if (session.sample_interval() - model.settings.output_interval).abs()
-        > 1e-9 * model.settings.output_interval
-    {
-        eprintln!(
-            "note: output_interval {} s is not a whole number of {} s steps; sampling every {} s",
-            model.settings.output_interval,
-            session.step_size(),
-            session.sample_interval()
-        );
-    }
-    if !quiet {
-        eprintln!(
-            "time step {:.4e} s (stability limit {:.4e} s, set by {}), {} steps",
-            session.step_size(),
-            limit,
-            culprit,
-            (model.settings.duration / session.step_size()).ceil()
-        );
-    }
-    let writer = RunWriter::create(
-        out,
-        session.system(),
-        session.channels(),
-        model.settings.snapshot_interval,
-        file,
-    )?;
-    session.attach(writer);
-    let bar = (!quiet).then(|| {
-        let bar = ProgressBar::new((model.settings.duration * 1000.0) as u64);
-        bar.set_style(
-            ProgressStyle::with_template(
-                "{bar:40} {percent:>3}% {msg} [elapsed {elapsed}, ETA {eta}]",
-            )
-            .expect("valid template"),
-        );
-        bar
-    });
-    let start = Instant::now();
-    session.attach(Progress { bar, start });
-    let result = session.run();
-    let wall = start.elapsed().as_secs_f64();
-    session.finish(result.as_ref().err())?;
-    match result {
-        Ok(()) => {
-            if !quiet {
-                eprintln!(
-                    "done: {:.2} s simulated in {wall:.2} s ({:.1}× real time); results in {}",
-                    session.time(),
-                    session.time() / wall.max(1e-9),
-                    out.display()
-                );
-            }
-            Ok(ExitCode::SUCCESS)
-        }
-        Err(e) => {
-            eprintln!(
-                "error: {e}\n  = results up to t = {:.6} s are in {} (marked incomplete)",
-                session.last_sample_time(),
-                out.display()
-            );
-            Ok(ExitCode::from(1))
-        }
-    }
 }
 
 fn statics(file: &Path, json: bool) -> Result<ExitCode> {

@@ -1,0 +1,451 @@
+//! `hawser run` and `hawser resume`: a session driven to its end with the result writer and the
+//! progress display attached, checkpoints at an interval of simulated time, and a clean stop on
+//! SIGINT or SIGTERM (rows flushed, summary over what ran, a checkpoint, exit 130 or 143).
+
+use crate::{DeckArgs, load_with, step_error};
+use anyhow::{Context, Result};
+use hawser::SimulationError;
+use hawser::math::Real;
+use hawser::session::{
+    Decoder, Encoder, Observer, ObserverError, ObserverId, RunEnd, Session, SessionOptions, View,
+};
+use hawser_io::results::{RunWriter, prepare_output_dir, write_atomically};
+use hawser_io::scenario::LoadedScenario;
+use indicatif::{ProgressBar, ProgressStyle};
+use serde_json::json;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::time::Instant;
+
+/// What `hawser run` was asked: kept in `run.json` beside the results, so that `hawser
+/// resume` runs the same scenario with the same choices.
+struct Invocation {
+    scenario: PathBuf,
+    deck: DeckArgs,
+    allow_unstable_step: bool,
+    checkpoint_every: Option<Real>,
+}
+
+impl Invocation {
+    fn to_json(&self) -> serde_json::Value {
+        json!({
+            "scenario": self.scenario.display().to_string(),
+            "duration": self.deck.deck_duration,
+            "vessel_motion": self.deck.vessel_motion.as_ref().map(|p| p.display().to_string()),
+            "allow_unstable_step": self.allow_unstable_step,
+            "checkpoint_every": self.checkpoint_every,
+            "hawser": env!("CARGO_PKG_VERSION"),
+        })
+    }
+
+    fn from_json(v: &serde_json::Value) -> Option<Self> {
+        Some(Self {
+            scenario: PathBuf::from(v["scenario"].as_str()?),
+            deck: DeckArgs {
+                deck_duration: v["duration"].as_f64(),
+                vessel_motion: v["vessel_motion"].as_str().map(PathBuf::from),
+            },
+            allow_unstable_step: v["allow_unstable_step"].as_bool().unwrap_or(false),
+            checkpoint_every: v["checkpoint_every"].as_f64(),
+        })
+    }
+}
+
+/// Shows progress while a run goes: the bar on a terminal.
+struct Progress {
+    bar: Option<ProgressBar>,
+    start: Instant,
+}
+
+impl Observer for Progress {
+    fn sample(&mut self, view: &View<'_>) -> Result<(), ObserverError> {
+        let time = view.time;
+        if let Some(bar) = &self.bar {
+            let wall = self.start.elapsed().as_secs_f64();
+            bar.set_position((time * 1000.0) as u64);
+            if wall > 0.0 {
+                bar.set_message(format!("t = {time:.2} s, {:.1}× real time", time / wall));
+            }
+        }
+        Ok(())
+    }
+
+    fn finish(&mut self, _: &View<'_>, _: &RunEnd) -> Result<(), ObserverError> {
+        if let Some(bar) = self.bar.take() {
+            bar.finish_and_clear();
+        }
+        Ok(())
+    }
+}
+
+impl Progress {
+    fn new(quiet: bool, duration: Real, done: Real) -> Self {
+        let bar = (!quiet).then(|| {
+            let bar = ProgressBar::new((duration * 1000.0) as u64);
+            bar.set_style(
+                ProgressStyle::with_template(
+                    "{bar:40} {percent:>3}% {msg} [elapsed {elapsed}, ETA {eta}]",
+                )
+                .expect("valid template"),
+            );
+            bar.set_position((done * 1000.0) as u64);
+            bar
+        });
+        Self {
+            bar,
+            start: Instant::now(),
+        }
+    }
+}
+
+/// The stop flags of SIGINT and SIGTERM. A second signal of the same kind ends the process at
+/// once (exit 130 or 143), for a run that does not stop quickly enough.
+struct Signals {
+    any: Arc<AtomicBool>,
+    interrupt: Arc<AtomicBool>,
+    terminate: Arc<AtomicBool>,
+}
+
+impl Signals {
+    fn install() -> Self {
+        use signal_hook::consts::{SIGINT, SIGTERM};
+        let s = Self {
+            any: Arc::new(AtomicBool::new(false)),
+            interrupt: Arc::new(AtomicBool::new(false)),
+            terminate: Arc::new(AtomicBool::new(false)),
+        };
+        for (signal, flag, code) in [
+            (SIGINT, &s.interrupt, 130),
+            (SIGTERM, &s.terminate, 143),
+        ] {
+            // A failure to install leaves the default action (the process ends).
+            let _ = signal_hook::flag::register_conditional_shutdown(signal, code, flag.clone());
+            let _ = signal_hook::flag::register(signal, flag.clone());
+            let _ = signal_hook::flag::register(signal, s.any.clone());
+        }
+        s
+    }
+
+    /// The exit code of the signal that stopped the run.
+    fn exit_code(&self) -> u8 {
+        if self.terminate.load(Ordering::Relaxed) {
+            143
+        } else {
+            130
+        }
+    }
+}
+
+/// Builds the session of a loaded scenario: exit code 2 for a step refused at the
+/// `time_step` key, 1 for failed statics (both already reported).
+pub(crate) fn session_of(
+    file: &Path,
+    loaded: &LoadedScenario,
+    options: SessionOptions,
+) -> Result<std::result::Result<Session, ExitCode>> {
+    match Session::with_options(loaded.model.clone(), options) {
+        Ok(s) => Ok(Ok(s)),
+        Err(SimulationError::Statics(e)) => {
+            eprintln!("error: {e}");
+            Ok(Err(ExitCode::from(1)))
+        }
+        Err(e @ SimulationError::StepTooLarge { .. }) => {
+            eprintln!("{}", step_error(file, loaded, &e));
+            Ok(Err(ExitCode::from(2)))
+        }
+        Err(SimulationError::Model(e)) => {
+            Err(anyhow::Error::new(e).context("the model is invalid"))
+        }
+        Err(e) => Err(e.into()),
+    }
+}
+
+/// `hawser run`.
+pub(crate) fn run(
+    file: &Path,
+    out: &Path,
+    quiet: bool,
+    allow_unstable_step: bool,
+    overwrite: bool,
+    checkpoint_every: Option<Real>,
+    deck: &DeckArgs,
+) -> Result<ExitCode> {
+    let signals = Signals::install();
+    if let Some(c) = checkpoint_every
+        && !(c > 0.0 && c.is_finite())
+    {
+        eprintln!(
+            "error: --checkpoint-every {c}: expected a positive number of seconds of simulated time"
+        );
+        return Ok(ExitCode::from(2));
+    }
+    let Some(loaded) = load_with(file, deck, quiet) else {
+        return Ok(ExitCode::from(2));
+    };
+    if !loaded.has_simulation {
+        eprintln!(
+            "error: {} has no [simulation] table\n  = hint: add `[simulation]` with `duration = ...` (s)",
+            file.display()
+        );
+        return Ok(ExitCode::from(2));
+    }
+    if let Err(e) = prepare_output_dir(out, overwrite) {
+        eprintln!("error: {e}");
+        return Ok(ExitCode::from(2));
+    }
+    let t0 = Instant::now();
+    let options = SessionOptions {
+        allow_unstable_step,
+        ..Default::default()
+    };
+    let mut session = match session_of(file, &loaded, options)? {
+        Ok(s) => s,
+        Err(code) => return Ok(code),
+    };
+    if let Some(f) = session.step_fallback() {
+        eprintln!(
+            "warning: the deck's dtM = {} s is above hawser's stability limit {:.4e} s \
+             (set by {}); using time_step = \"auto\"",
+            f.requested, f.limit, f.culprit
+        );
+    }
+    let model = &loaded.model;
+    if let Some(sol) = session.initial_statics()
+        && !quiet
+    {
+        eprintln!(
+            "statics: {} after {} iterations, residual {:.2e} N ({:.2} s)",
+            sol.method,
+            sol.iterations,
+            sol.residual,
+            t0.elapsed().as_secs_f64()
+        );
+    }
+    let (limit, culprit) = session.stable_step();
+    let (limit, culprit) = (limit, culprit.to_string());
+    if session.step_size() > limit {
+        eprintln!(
+            "warning: time step {:.4e} s is above the stability estimate {:.4e} s ({}); --allow-unstable-step is set",
+            session.step_size(),
+            limit,
+            culprit
+        );
+    }
+    if (session.sample_interval() - model.settings.output_interval).abs()
+        > 1e-9 * model.settings.output_interval
+    {
+        eprintln!(
+            "note: output_interval {} s is not a whole number of {} s steps; sampling every {} s",
+            model.settings.output_interval,
+            session.step_size(),
+            session.sample_interval()
+        );
+    }
+    if !quiet {
+        eprintln!(
+            "time step {:.4e} s (stability limit {:.4e} s, set by {}), {} steps",
+            session.step_size(),
+            limit,
+            culprit,
+            (model.settings.duration / session.step_size()).ceil()
+        );
+    }
+    let invocation = Invocation {
+        scenario: std::fs::canonicalize(file).unwrap_or_else(|_| file.to_path_buf()),
+        deck: deck.clone(),
+        allow_unstable_step,
+        checkpoint_every,
+    };
+    let text = serde_json::to_string_pretty(&invocation.to_json())? + "\n";
+    write_atomically(&out.join("run.json"), text.as_bytes())?;
+    let writer = RunWriter::create(
+        out,
+        session.system(),
+        session.channels(),
+        model.settings.snapshot_interval,
+        file,
+    )?;
+    let writer = session.attach(writer);
+    session.attach(Progress::new(quiet, model.settings.duration, 0.0));
+    drive(session, writer, out, checkpoint_every, &signals, quiet)
+}
+
+/// `hawser resume DIR`: goes on from the checkpoint of an interrupted run, with the scenario
+/// and choices of its `run.json`, appending to its files.
+pub(crate) fn resume(dir: &Path, quiet: bool) -> Result<ExitCode> {
+    let signals = Signals::install();
+    let refuse = |why: String| {
+        eprintln!("error: cannot resume the run in {}: {why}", dir.display());
+        Ok(ExitCode::from(2))
+    };
+    let invocation = match std::fs::read_to_string(dir.join("run.json"))
+        .ok()
+        .and_then(|t| serde_json::from_str(&t).ok())
+        .and_then(|v| Invocation::from_json(&v))
+    {
+        Some(i) => i,
+        None => {
+            return refuse(
+                "it has no readable run.json (it was not written by `hawser run`, or by an \
+                 older hawser)"
+                    .into(),
+            );
+        }
+    };
+    let bytes = match std::fs::read(dir.join("checkpoint.bin")) {
+        Ok(b) => b,
+        Err(_) => {
+            let complete = std::fs::read_to_string(dir.join("status.json"))
+                .is_ok_and(|s| s.contains("\"complete\": true"));
+            return refuse(if complete {
+                "the run is complete".into()
+            } else {
+                "it has no checkpoint.bin (the run stopped before its first checkpoint, or \
+                 diverged); hint: run it again with --overwrite"
+                    .into()
+            });
+        }
+    };
+    let mut d = Decoder::new(&bytes);
+    let (session_bytes, writer_bytes) = match d.u64() {
+        Ok(n) if (n as usize) <= d.rest().len() => d.rest().split_at(n as usize),
+        _ => return refuse("its checkpoint.bin is truncated or corrupt".into()),
+    };
+    let file = invocation.scenario.as_path();
+    let Some(loaded) = load_with(file, &invocation.deck, quiet) else {
+        return Ok(ExitCode::from(2));
+    };
+    let options = SessionOptions {
+        allow_unstable_step: invocation.allow_unstable_step,
+        ..Default::default()
+    };
+    let mut session = match Session::restore(loaded.model.clone(), session_bytes, options) {
+        Ok(s) => s,
+        Err(e) => return refuse(format!("{e} (scenario {})", file.display())),
+    };
+    let writer = match RunWriter::resume(
+        dir,
+        session.system(),
+        session.channels(),
+        loaded.model.settings.snapshot_interval,
+        file,
+        writer_bytes,
+    ) {
+        Ok(w) => w,
+        Err(e) => return refuse(e.to_string()),
+    };
+    if !quiet {
+        eprintln!(
+            "resuming {} at t = {:.6} s (step {:.4e} s, {} steps done)",
+            file.display(),
+            session.time(),
+            session.step_size(),
+            session.steps_done()
+        );
+    }
+    let writer = session.attach(writer);
+    let done = session.time();
+    session.attach(Progress::new(quiet, loaded.model.settings.duration, done));
+    drive(
+        session,
+        writer,
+        dir,
+        invocation.checkpoint_every,
+        &signals,
+        quiet,
+    )
+}
+
+/// Writes the session and its writer's progress into `checkpoint.bin` (atomically).
+fn write_checkpoint(session: &mut Session, writer: ObserverId, out: &Path) -> Result<()> {
+    let core = session.checkpoint();
+    let progress = session
+        .observer_mut::<RunWriter>(writer)
+        .expect("the writer is attached")
+        .progress()
+        .context("cannot save the writer's progress")?;
+    let mut e = Encoder::default();
+    e.u64(core.len() as u64);
+    e.bytes.extend_from_slice(&core);
+    e.bytes.extend_from_slice(&progress);
+    write_atomically(&out.join("checkpoint.bin"), &e.bytes)?;
+    Ok(())
+}
+
+/// Runs the session to its end, checkpointing every `every` seconds of simulated time (at the
+/// first sample time at or after each multiple), and stops cleanly on a signal.
+fn drive(
+    mut session: Session,
+    writer: ObserverId,
+    out: &Path,
+    every: Option<Real>,
+    signals: &Signals,
+    quiet: bool,
+) -> Result<ExitCode> {
+    session.set_interrupt(signals.any.clone());
+    let end = session.end_time();
+    let interval = session.sample_interval();
+    let start = Instant::now();
+    let simulated_from = session.time();
+    let result = loop {
+        let target = match every {
+            Some(c) => {
+                let next = ((session.time() + 0.5 * interval) / c).ceil() * c;
+                ((next / interval - 1e-9).ceil() * interval).min(end)
+            }
+            None => end,
+        };
+        if let Err(e) = session.advance_to(target) {
+            break Err(e);
+        }
+        if session.time() >= end - 0.5 * session.step_size() {
+            break Ok(());
+        }
+        write_checkpoint(&mut session, writer, out)?;
+    };
+    let wall = start.elapsed().as_secs_f64();
+    let interrupted = matches!(result, Err(SimulationError::Interrupted { .. }));
+    if interrupted {
+        write_checkpoint(&mut session, writer, out)?;
+    }
+    let finished = session.finish(result.as_ref().err());
+    if !interrupted {
+        // A finished or diverged run cannot be resumed.
+        let _ = std::fs::remove_file(out.join("checkpoint.bin"));
+    }
+    finished?;
+    match result {
+        Ok(()) => {
+            if !quiet {
+                let simulated = session.time() - simulated_from;
+                eprintln!(
+                    "done: {:.2} s simulated in {wall:.2} s ({:.1}× real time); results in {}",
+                    session.time(),
+                    simulated / wall.max(1e-9),
+                    out.display()
+                );
+            }
+            Ok(ExitCode::SUCCESS)
+        }
+        Err(e) if interrupted => {
+            eprintln!(
+                "{e}: results up to t = {:.6} s are in {} (marked interrupted), with a \
+                 checkpoint; continue with `hawser resume {}`",
+                session.last_sample_time(),
+                out.display(),
+                out.display()
+            );
+            Ok(ExitCode::from(signals.exit_code()))
+        }
+        Err(e) => {
+            eprintln!(
+                "error: {e}\n  = results up to t = {:.6} s are in {} (marked incomplete)",
+                session.last_sample_time(),
+                out.display()
+            );
+            Ok(ExitCode::from(1))
+        }
+    }
+}
