@@ -116,10 +116,7 @@ impl Signals {
             interrupt: Arc::new(AtomicBool::new(false)),
             terminate: Arc::new(AtomicBool::new(false)),
         };
-        for (signal, flag, code) in [
-            (SIGINT, &s.interrupt, 130),
-            (SIGTERM, &s.terminate, 143),
-        ] {
+        for (signal, flag, code) in [(SIGINT, &s.interrupt, 130), (SIGTERM, &s.terminate, 143)] {
             // A failure to install leaves the default action (the process ends).
             let _ = signal_hook::flag::register_conditional_shutdown(signal, code, flag.clone());
             let _ = signal_hook::flag::register(signal, flag.clone());

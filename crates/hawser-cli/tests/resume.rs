@@ -1,0 +1,258 @@
+//! Interrupt and resume: a run stopped by SIGINT or SIGTERM, or killed (SIGKILL) after a
+//! periodic checkpoint, then continued by `hawser resume`, writes a `timeseries.csv`, snapshots
+//! and `summary.json` byte-identical to the uninterrupted run's: RK4, SSP-RK3 and the
+//! three-level scheme on the catenary mooring, and RK4 with a free body in irregular waves
+//! (the ROV example). A stopped run exits 130 (SIGINT) or 143 (SIGTERM) with its status
+//! "interrupted"; an output folder holding a run is refused without `--overwrite`.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+use std::time::{Duration, Instant};
+
+fn root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
+}
+
+fn hawser() -> Command {
+    let mut c = Command::new(env!("CARGO_BIN_EXE_hawser"));
+    c.current_dir(root());
+    c
+}
+
+/// A scenario in a fresh folder: `example` with the simulation duration set to `duration`,
+/// `extra` lines added to `[simulation]`, and its data files found where they are.
+fn scenario(name: &str, example: &str, duration: f64, extra: &str) -> (PathBuf, PathBuf) {
+    let dir = std::env::temp_dir().join(format!("hawser_resume_{name}_{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let text = std::fs::read_to_string(root().join("examples").join(example)).unwrap();
+    let data = root().join("examples/data");
+    let mut out = String::new();
+    for line in text.lines() {
+        if line.trim_start().starts_with("duration =") && !out.contains("duration =") {
+            out.push_str(&format!("duration = {duration}\n{extra}\n"));
+        } else {
+            out.push_str(&line.replace("\"data/", &format!("\"{}/", data.display())));
+            out.push('\n');
+        }
+    }
+    let path = dir.join("scenario.toml");
+    std::fs::write(&path, out).unwrap();
+    (dir, path)
+}
+
+fn rows(csv: &Path) -> usize {
+    std::fs::read_to_string(csv).map_or(0, |t| t.lines().count())
+}
+
+/// Runs to the end, uninterrupted.
+fn run_whole(scenario: &Path, out: &Path) {
+    let s = hawser()
+        .args(["run", scenario.to_str().unwrap(), "--quiet", "--out"])
+        .arg(out)
+        .status()
+        .unwrap();
+    assert!(s.success(), "uninterrupted run failed");
+}
+
+/// Starts a run and sends `signal` once its time series has `after` rows (or, with
+/// `checkpoint`, once it has written a checkpoint); returns its exit code.
+fn run_and_stop(
+    scenario: &Path,
+    out: &Path,
+    signal: i32,
+    after: usize,
+    checkpoint: Option<f64>,
+) -> Option<i32> {
+    let mut cmd = hawser();
+    cmd.args(["run", scenario.to_str().unwrap(), "--quiet", "--out"])
+        .arg(out)
+        .stderr(Stdio::piped());
+    if let Some(c) = checkpoint {
+        cmd.args(["--checkpoint-every", &c.to_string()]);
+    }
+    let mut child = cmd.spawn().unwrap();
+    let start = Instant::now();
+    loop {
+        let ready = match checkpoint {
+            Some(_) => {
+                out.join("checkpoint.bin").exists() && rows(&out.join("timeseries.csv")) > after
+            }
+            None => rows(&out.join("timeseries.csv")) > after,
+        };
+        if ready {
+            break;
+        }
+        assert!(
+            child.try_wait().unwrap().is_none(),
+            "the run ended before it could be stopped"
+        );
+        assert!(start.elapsed() < Duration::from_secs(600), "no progress");
+        std::thread::sleep(Duration::from_millis(5));
+    }
+    unsafe { libc::kill(child.id() as i32, signal) };
+    let status = child.wait().unwrap();
+    assert!(
+        child.try_wait().unwrap().is_some(),
+        "the run is still going"
+    );
+    status.code()
+}
+
+fn resume(out: &Path) {
+    let o = hawser()
+        .args(["resume", "--quiet"])
+        .arg(out)
+        .output()
+        .unwrap();
+    assert!(
+        o.status.success(),
+        "resume failed: {}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+}
+
+/// The run's results, with the scenario path (which `status.json` names) left out.
+fn assert_same_results(a: &Path, b: &Path) {
+    for f in ["timeseries.csv", "summary.json", "final_state.json"] {
+        let (x, y) = (
+            std::fs::read(a.join(f)).unwrap(),
+            std::fs::read(b.join(f)).unwrap(),
+        );
+        assert!(x == y, "{f} differs between the whole and the resumed run");
+    }
+    if a.join("snapshots").exists() {
+        for e in std::fs::read_dir(a.join("snapshots")).unwrap() {
+            let p = e.unwrap().path();
+            let q = b.join("snapshots").join(p.file_name().unwrap());
+            assert!(
+                std::fs::read(&p).unwrap() == std::fs::read(&q).unwrap(),
+                "snapshot {} differs",
+                p.display()
+            );
+        }
+    }
+    let status = std::fs::read_to_string(b.join("status.json")).unwrap();
+    assert!(status.contains("\"complete\": true"), "{status}");
+    assert!(
+        !b.join("checkpoint.bin").exists(),
+        "a finished run keeps no checkpoint"
+    );
+}
+
+fn interrupt_and_resume(name: &str, example: &str, duration: f64, extra: &str, signal: i32) {
+    let (dir, path) = scenario(name, example, duration, extra);
+    let (whole, parts) = (dir.join("whole"), dir.join("parts"));
+    run_whole(&path, &whole);
+    let total = rows(&whole.join("timeseries.csv"));
+    let code = run_and_stop(&path, &parts, signal, total / 3, None);
+    let expected = if signal == libc::SIGINT { 130 } else { 143 };
+    assert_eq!(code, Some(expected), "{name}: exit code of the stopped run");
+    let status = std::fs::read_to_string(parts.join("status.json")).unwrap();
+    assert!(status.contains("\"state\": \"interrupted\""), "{status}");
+    assert!(parts.join("summary.json").exists());
+    assert!(
+        rows(&parts.join("timeseries.csv")) < total,
+        "{name}: stopped too late"
+    );
+    resume(&parts);
+    assert_same_results(&whole, &parts);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn rk4_interrupted_by_sigint_resumes_bit_for_bit() {
+    interrupt_and_resume("rk4", "catenary_mooring.toml", 12.0, "", libc::SIGINT);
+}
+
+#[test]
+fn ssp_rk3_interrupted_by_sigterm_resumes_bit_for_bit() {
+    interrupt_and_resume(
+        "ssp",
+        "catenary_mooring.toml",
+        12.0,
+        "scheme = \"ssp-rk3\"",
+        libc::SIGTERM,
+    );
+}
+
+#[test]
+fn three_level_interrupted_resumes_bit_for_bit() {
+    interrupt_and_resume(
+        "three_level",
+        "catenary_mooring.toml",
+        12.0,
+        "scheme = \"three-level\"",
+        libc::SIGINT,
+    );
+}
+
+#[test]
+fn free_body_in_waves_interrupted_resumes_bit_for_bit() {
+    interrupt_and_resume("rov", "rov_irregular_waves.toml", 12.0, "", libc::SIGINT);
+}
+
+#[test]
+fn killed_after_a_checkpoint_resumes_bit_for_bit() {
+    // SIGKILL leaves no chance to flush or save: the periodic checkpoint and the files cut
+    // back to their length at that checkpoint carry the run.
+    let (dir, path) = scenario("kill", "catenary_mooring.toml", 12.0, "");
+    let (whole, parts) = (dir.join("whole"), dir.join("parts"));
+    run_whole(&path, &whole);
+    let total = rows(&whole.join("timeseries.csv"));
+    let code = run_and_stop(&path, &parts, libc::SIGKILL, total / 3, Some(2.0));
+    assert_eq!(code, None, "killed by a signal");
+    resume(&parts);
+    assert_same_results(&whole, &parts);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn a_folder_holding_a_run_is_refused_without_overwrite() {
+    let (dir, path) = scenario("overwrite", "catenary_mooring.toml", 0.5, "");
+    let out = dir.join("out");
+    run_whole(&path, &out);
+    // A stale snapshot and a file of the user's own.
+    std::fs::write(out.join("snapshots/old_line.csv"), "stale").unwrap();
+    std::fs::write(out.join("notes.txt"), "mine").unwrap();
+    let o = hawser()
+        .args(["run", path.to_str().unwrap(), "--quiet", "--out"])
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(2));
+    let e = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        e.contains("holds the results of another run") && e.contains("--overwrite"),
+        "{e}"
+    );
+    let o = hawser()
+        .args([
+            "run",
+            path.to_str().unwrap(),
+            "--quiet",
+            "--overwrite",
+            "--out",
+        ])
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(
+        !out.join("snapshots/old_line.csv").exists(),
+        "stale snapshot left"
+    );
+    assert!(
+        out.join("notes.txt").exists(),
+        "the user's own file was removed"
+    );
+    // Nothing to resume in a finished run.
+    let o = hawser()
+        .args(["resume", "--quiet"])
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("the run is complete"));
+    let _ = std::fs::remove_dir_all(&dir);
+}
