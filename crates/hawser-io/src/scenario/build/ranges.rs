@@ -387,10 +387,8 @@ mod tests {
                             );
                         }
                     }
-                    "number" | "integer" => {
-                        if !out.contains(&path.to_string()) {
-                            out.push(path.to_string());
-                        }
+                    "number" | "integer" if !out.contains(&path.to_string()) => {
+                        out.push(path.to_string());
                     }
                     _ => {}
                 }
