@@ -7,6 +7,7 @@
 // `!(x > 0.0)` is deliberate throughout: it rejects NaN, which `x <= 0.0` would let through.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
+pub mod fuzzing;
 pub mod input;
 pub mod moordyn;
 pub mod results;

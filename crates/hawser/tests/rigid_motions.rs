@@ -307,9 +307,9 @@ fn curvature_transitions_keep_the_turn_exact() {
     assert!((ex - x).hypot(ey - y) < 1e-5, "exit {ex}, {ey} vs {x}, {y}");
 }
 
-#[test]
-fn invalid_manoeuvres_are_refused() {
-    let ok = ManoeuvreSpec {
+/// A valid turn of 1 rad on a 200 m radius without transitions, for the refusal tests.
+fn one_radian_turn() -> ManoeuvreSpec {
+    ManoeuvreSpec {
         start: Vec3::zeros(),
         heading: 0.0,
         speed: 6.0,
@@ -319,7 +319,12 @@ fn invalid_manoeuvres_are_refused() {
         straight_after: None,
         build_up_time: 10.0,
         transition_length: 0.0,
-    };
+    }
+}
+
+#[test]
+fn invalid_manoeuvres_are_refused() {
+    let ok = one_radian_turn();
     assert!(Manoeuvre::new(ok.clone()).is_ok());
     for bad in [
         ManoeuvreSpec {
@@ -360,17 +365,7 @@ fn invalid_manoeuvres_are_refused() {
 /// the track is still exact: the exit heading is ψ0 + Θ and the kinematics are finite.
 #[test]
 fn manoeuvre_limits_bound_the_work() {
-    let ok = ManoeuvreSpec {
-        start: Vec3::zeros(),
-        heading: 0.0,
-        speed: 6.0,
-        straight_before: 100.0,
-        turn_radius: 200.0,
-        turn_angle: 1.0,
-        straight_after: None,
-        build_up_time: 10.0,
-        transition_length: 0.0,
-    };
+    let ok = one_radian_turn();
     let min = Manoeuvre::MIN_TRANSITION_RATIO * ok.turn_radius;
     for lc in [5e-324, 1e-310, 1e-300, 1e-20, 0.99 * min] {
         let bad = ManoeuvreSpec {

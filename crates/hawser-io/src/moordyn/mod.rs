@@ -49,18 +49,20 @@ pub fn parse(
 }
 
 /// The scenario as TOML text, headed by comments that give its origin and the conversion
-/// notes.
+/// notes. It always reads back (a test checks it over decks of arbitrary text): deck words
+/// quoted in the comments have their control characters escaped, which TOML comments cannot
+/// hold, and names in the scenario are TOML strings.
 pub fn to_toml(deck: &LoadedDeck, origin: &Path) -> String {
     let mut out = format!(
         "# hawser scenario converted from the MoorDyn deck {}\n# by hawser {}; docs/moordyn.md lists the conventions converted.\n",
-        origin.display(),
+        comment_text(&origin.display().to_string()),
         env!("CARGO_PKG_VERSION")
     );
     for n in &deck.notes {
         if n.line > 0 {
-            out += &format!("# deck line {}: {}\n", n.line, n.message);
+            out += &format!("# deck line {}: {}\n", n.line, comment_text(&n.message));
         } else {
-            out += &format!("# {}\n", n.message);
+            out += &format!("# {}\n", comment_text(&n.message));
         }
     }
     out += "\n";
@@ -72,4 +74,17 @@ pub fn to_toml(deck: &LoadedDeck, origin: &Path) -> String {
 pub fn load(path: &Path, options: &ConvertOptions) -> Result<LoadedDeck, ScenarioError> {
     let source = crate::scenario::read_file(path, "deck")?;
     parse(path, &source, options)
+}
+
+/// `text` as the body of a TOML comment: control characters (which a comment cannot hold, a
+/// line break least of all) written as Rust escapes, `\u{7}`; the rest unchanged.
+fn comment_text(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    for c in text.chars() {
+        match c.is_control() && c != '\t' {
+            true => out.extend(c.escape_unicode()),
+            false => out.push(c),
+        }
+    }
+    out
 }

@@ -199,7 +199,7 @@ pub fn read_dynamic_profile(
     ),
     String,
 > {
-    let text = std::fs::read_to_string(path)
+    let text = crate::scenario::tables::read_text_file(path)
         .map_err(|e| format!("{}: cannot read it: {e}", path.display()))?;
     let lines: Vec<&str> = text.lines().collect();
     let at = |n: usize| format!("{}:{}", path.display(), n + 1);

@@ -116,6 +116,8 @@ pub(super) fn build_bodies(
                         .expected("[roll, pitch, yaw] in degrees");
                     b.push(d);
                     Quat::identity()
+                } else if !b.physical(Some(o.span()), &k("orientation"), &a) {
+                    Quat::identity()
                 } else {
                     orientation_from_degrees(a)
                 }
@@ -317,6 +319,8 @@ fn build_inertia(b: &mut Builder, v: &Spanned<InertiaSpec>, key: &str) -> Mat3 {
                     or a symmetric positive definite 3×3 tensor";
     let problem = if m.iter().any(|x| !x.is_finite()) {
         Some("`inertia` has a non-finite entry")
+    } else if !b.physical(Some(v.span()), key, m.as_slice()) {
+        return Mat3::identity();
     } else if (m - m.transpose()).abs().max() > 1e-9 * m.abs().max() {
         Some("`inertia` is not symmetric")
     } else if !(m.abs().max() > 0.0) || m.cholesky().is_none() {
@@ -466,6 +470,12 @@ fn build_thrust(b: &mut Builder, t: &ThrustSpec, key: &str) -> Thrust {
                 b.push(d);
                 return Thrust::None;
             }
+            if !rows
+                .iter()
+                .all(|r| b.physical(Some(table.span()), &k("table"), r))
+            {
+                return Thrust::None;
+            }
             Thrust::Schedule {
                 times: rows.iter().map(|r| r[0]).collect(),
                 forces: rows.iter().map(|r| Vec3::new(r[1], r[2], r[3])).collect(),
@@ -510,6 +520,9 @@ fn non_negative6(b: &mut Builder, v: &Spanned<[f64; 6]>, key: &str, expected: &s
         b.push(d);
         return Vec6::zeros();
     }
+    if !b.physical(Some(v.span()), key, &a) {
+        return Vec6::zeros();
+    }
     Vec6::from(a)
 }
 
@@ -529,6 +542,9 @@ fn non_negative3(b: &mut Builder, v: &Spanned<[f64; 3]>, key: &str, expected: &s
             .expected(expected.to_string())
             .hint("write 0 for an axis without drag");
         b.push(d);
+        return Vec3::zeros();
+    }
+    if !b.physical(Some(v.span()), key, &a) {
         return Vec3::zeros();
     }
     Vec3::from(a)

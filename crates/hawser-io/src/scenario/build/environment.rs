@@ -229,7 +229,10 @@ pub(super) fn build_environment(b: &mut Builder, spec: Option<&EnvironmentSpec>)
                                 .expected("rows [z, ux, uy, uz] in m and m/s, z increasing")
                                 .hint("list the deepest point first, e.g. [[-100, 0, 0, 0], [0, 0.5, 0, 0]]");
                             b.push(d);
-                        } else {
+                        } else if rows
+                            .iter()
+                            .all(|r| b.physical(Some(p.span()), "environment.current.profile", r))
+                        {
                             env.current = Current::Profile {
                                 z: rows.iter().map(|r| r[0]).collect(),
                                 velocity: rows
@@ -528,6 +531,12 @@ fn build_waves(b: &mut Builder, w: &WavesSpec, depth: f64, gravity: f64) -> Wave
                                 5.0 * fp
                             ));
                         b.push(d);
+                    } else {
+                        b.physical(
+                            Some(r.span()),
+                            "environment.waves.frequency_range",
+                            &[lo, hi],
+                        );
                     }
                     (2.0 * PI * lo, 2.0 * PI * hi)
                 }

@@ -93,7 +93,13 @@ pub(super) fn build_line_types(
                 } else {
                     None
                 };
-                if let Some(problem) = problem {
+                let physical = problem.is_some()
+                    || rows
+                        .iter()
+                        .all(|r| b.physical(Some(table.span()), &k("tension_strain"), r));
+                if !physical {
+                    AxialStiffness::Linear(1.0)
+                } else if let Some(problem) = problem {
                     let d = b
                         .diag(Some(table.span()), &k("tension_strain"), problem)
                         .expected("rows [strain, tension] in - and N, starting at [0, 0], strain increasing, tension non-decreasing")
@@ -165,16 +171,37 @@ pub(super) fn build_line_types(
             }
         };
         let drag = match (&t.loading_functions, &t.normal_drag, &t.tangential_drag) {
-            (Some(lf), None, None) => DragModel::LoadingFunctions {
-                normal: LoadingFunction {
-                    cos: lf.normal.cos.clone(),
-                    sin: lf.normal.sin.clone(),
-                },
-                tangential: LoadingFunction {
-                    cos: lf.tangential.cos.clone(),
-                    sin: lf.tangential.sin.clone(),
-                },
-            },
+            (Some(lf), None, None) => {
+                // The coefficients carry no span of their own: errors point at the type's name.
+                for (which, f) in [("normal", &lf.normal), ("tangential", &lf.tangential)] {
+                    for (part, c) in [("cos", &f.cos), ("sin", &f.sin)] {
+                        let key = k(&format!("loading_functions.{which}.{part}"));
+                        if c.iter().any(|x| !x.is_finite()) {
+                            let d = b
+                                .diag(
+                                    Some(t.name.span()),
+                                    &key,
+                                    format!("`{key}` has a non-finite coefficient"),
+                                )
+                                .expected("finite Fourier coefficients [-]")
+                                .hint("nan and inf are not allowed here");
+                            b.push(d);
+                        } else {
+                            b.physical(Some(t.name.span()), &key, c);
+                        }
+                    }
+                }
+                DragModel::LoadingFunctions {
+                    normal: LoadingFunction {
+                        cos: lf.normal.cos.clone(),
+                        sin: lf.normal.sin.clone(),
+                    },
+                    tangential: LoadingFunction {
+                        cos: lf.tangential.cos.clone(),
+                        sin: lf.tangential.sin.clone(),
+                    },
+                }
+            }
             (None, Some(n), Some(tg)) => DragModel::Morison {
                 normal: b.num(
                     n,

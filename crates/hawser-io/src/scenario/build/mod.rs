@@ -18,6 +18,7 @@ mod lines;
 mod motions;
 mod obstacles;
 mod points;
+mod ranges;
 mod sea;
 mod settings;
 mod toml_errors;
@@ -132,7 +133,47 @@ impl<'a> Builder<'a> {
             self.push(d);
             return 1.0;
         }
+        if !self.physical(Some(v.span()), key, &[x]) {
+            return 1.0;
+        }
         x
+    }
+
+    /// Checks finite `values` of `key` (written at `span`) against the key's physical range
+    /// ([`ranges`]); reports the first one outside it. Whether all are inside.
+    fn physical(&mut self, span: Option<Range<usize>>, key: &str, values: &[f64]) -> bool {
+        let Some(range) = ranges::range_of(key) else {
+            return true;
+        };
+        let outside = values.iter().enumerate().find(|&(j, &x)| {
+            let b = range.bounds(j);
+            x.is_finite() && !(b.min <= x && x <= b.max)
+        });
+        let Some((j, &x)) = outside else {
+            return true;
+        };
+        let bounds = range.bounds(j);
+        let message = match values.len() {
+            1 => format!("`{key}` is outside its physical range"),
+            _ => format!(
+                "`{key}` has {} (entry {j}) outside its physical range",
+                ranges::number(x)
+            ),
+        };
+        let d = self
+            .diag(span, key, message)
+            .expected(format!(
+                "{}, from {} to {}",
+                bounds.unit,
+                ranges::number(bounds.min),
+                ranges::number(bounds.max)
+            ))
+            .hint(
+                "no physical system comes near this bound: check the unit and the exponent \
+                 (values beyond it would overflow the computation)",
+            );
+        self.push(d);
+        false
     }
 
     fn opt(
@@ -160,6 +201,8 @@ impl<'a> Builder<'a> {
                 )
                 .expected("three finite numbers [m]");
             self.push(d);
+        } else {
+            self.physical(Some(v.span()), key, a);
         }
         Vec3::new(a[0], a[1], a[2])
     }

@@ -182,6 +182,7 @@ pub(super) fn build_motion(
             }
         }
         MotionKind::TimeSeries => {
+            let table_key = k(if m.file.is_some() { "file" } else { "table" });
             let rows: Option<(Vec<[f64; 4]>, Option<Range<usize>>)> = match (&m.table, &m.file) {
                 (Some(t), None) => Some((t.get_ref().clone(), Some(t.span()))),
                 (None, Some(f)) => {
@@ -218,8 +219,10 @@ pub(super) fn build_motion(
                         || !rows.windows(2).all(|w| w[1][0] > w[0][0])
                         || rows.iter().flatten().any(|x| !x.is_finite())
                     {
-                        let d = b.diag(span, &k("table"), "the time series needs at least one row and strictly increasing times").expected("rows [t, x, y, z] in s and m");
+                        let d = b.diag(span, &k("table"), "the time series needs at least one row and strictly increasing times").expected("rows [t, x, y, z] in s and m").hint("sort the rows by time, e.g. `table = [[0.0, 0.0, 0.0, -10.0], [10.0, 5.0, 0.0, -10.0]]`");
                         b.push(d);
+                        Motion::Fixed { position: centre }
+                    } else if !rows.iter().all(|r| b.physical(span.clone(), &table_key, r)) {
                         Motion::Fixed { position: centre }
                     } else {
                         Motion::TimeSeries {
@@ -505,6 +508,12 @@ pub(super) fn build_rigid_motion(
                     return placeholder;
                 }
             };
+            if !rows
+                .iter()
+                .all(|r| b.physical(Some(f.span()), &k("file"), r))
+            {
+                return placeholder;
+            }
             match vessel_time_series(&rows, offset) {
                 Ok(s) if !rows.is_empty() => RigidMotion::TimeSeries(s),
                 _ => {
@@ -824,6 +833,9 @@ fn finite3(b: &mut Builder, v: &Spanned<ScalarOrVec3>, key: &str, unit: &str) ->
         b.push(d);
         return [0.0; 3];
     }
+    if !b.physical(Some(v.span()), key, &a) {
+        return [0.0; 3];
+    }
     a
 }
 
@@ -848,8 +860,11 @@ fn frequency_of(b: &mut Builder, m: &MotionSpec, key: &str) -> [f64; 3] {
             if f3.iter().any(|x| !(x.is_finite() && *x >= 0.0)) {
                 let d = b
                     .diag(Some(f.span()), key, "frequency must be ≥ 0")
-                    .expected("Hz, ≥ 0");
+                    .expected("Hz, ≥ 0")
+                    .hint("the frequency of the motion in Hz, e.g. 0.1 for a 10 s period");
                 b.push(d);
+            } else if !b.physical(Some(f.span()), key, &f3) {
+                return [0.0; 3];
             }
             f3
         }
@@ -862,8 +877,12 @@ fn frequency_of(b: &mut Builder, m: &MotionSpec, key: &str) -> [f64; 3] {
                         &key.replace("frequency", "period"),
                         "period must be > 0",
                     )
-                    .expected("s, > 0");
+                    .expected("s, > 0")
+                    .hint("the period of the motion in seconds, e.g. 10.0");
                 b.push(d);
+                return [0.0; 3];
+            }
+            if !b.physical(Some(p.span()), &key.replace("frequency", "period"), &p3) {
                 return [0.0; 3];
             }
             p3.map(|p| 1.0 / p)

@@ -97,6 +97,8 @@ pub(super) fn build_obstacles(
                                 .hint("e.g. [0, 1, 0] for a horizontal cylinder along y");
                             b.push(d);
                             Vec3::z()
+                        } else if !b.physical(Some(a.span()), &k("axis"), a.get_ref()) {
+                            Vec3::z()
                         } else {
                             v.normalize()
                         }

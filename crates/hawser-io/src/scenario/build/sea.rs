@@ -79,6 +79,12 @@ pub(super) fn current_table(b: &mut Builder, c: &CurrentSpec) -> Option<Current>
     };
     increasing("environment.current.z", z, "m", b);
     increasing("environment.current.times", times, "s", b);
+    b.physical(Some(z.span()), "environment.current.z", z.get_ref());
+    b.physical(
+        Some(times.span()),
+        "environment.current.times",
+        times.get_ref(),
+    );
     let (nz, nt) = (z.get_ref().len(), times.get_ref().len());
     let rows = |name: &str, v: Option<&Spanned<Vec<Vec<f64>>>>, b: &mut Builder| {
         let Some(v) = v else {
@@ -114,7 +120,9 @@ pub(super) fn current_table(b: &mut Builder, c: &CurrentSpec) -> Option<Current>
                 .expected("finite velocities [m/s]");
             b.push(d);
         }
-        r.iter().flatten().copied().collect()
+        let flat: Vec<f64> = r.iter().flatten().copied().collect();
+        b.physical(Some(v.span()), &key, &flat);
+        flat
     };
     let x = rows("ux", Some(ux), b);
     let y = rows("uy", c.uy.as_ref(), b);
@@ -168,15 +176,28 @@ pub(super) fn elevation_record(
         );
     }
     let (rows, span, key) = match (&w.elevation, &w.elevation_file) {
-        (Some(e), None) => (
-            e.get_ref().iter().map(|r| (r[0], r[1])).collect::<Vec<_>>(),
-            e.span(),
-            "environment.waves.elevation",
-        ),
+        (Some(e), None) => {
+            let flat: Vec<f64> = e.get_ref().iter().flat_map(|r| [r[0], r[1]]).collect();
+            if !b.physical(Some(e.span()), "environment.waves.elevation", &flat) {
+                return None;
+            }
+            (
+                e.get_ref().iter().map(|r| (r[0], r[1])).collect::<Vec<_>>(),
+                e.span(),
+                "environment.waves.elevation",
+            )
+        }
         (None, Some(f)) => {
             let path = b.file.parent().unwrap_or(Path::new(".")).join(f.get_ref());
             match read_elevation_file(&path) {
-                Ok(rows) => (rows, f.span(), "environment.waves.elevation_file"),
+                Ok(rows) => {
+                    let flat: Vec<f64> = rows.iter().flat_map(|&(t, e)| [t, e]).collect();
+                    let key = "environment.waves.elevation_file";
+                    if !b.physical(Some(f.span()), key, &flat) {
+                        return None;
+                    }
+                    (rows, f.span(), key)
+                }
                 Err(e) => {
                     let d = b
                         .diag(Some(f.span()), "environment.waves.elevation_file", e)
@@ -254,7 +275,7 @@ pub(super) fn elevation_record(
 /// Reads rows `t η` [s, m] (space, tab or comma separated); lines that do not start with a
 /// number (headers, `#` comments) and blank lines are skipped. Errors name the file and line.
 pub fn read_elevation_file(path: &Path) -> Result<Vec<(f64, f64)>, String> {
-    let text = std::fs::read_to_string(path)
+    let text = crate::scenario::tables::read_text_file(path)
         .map_err(|e| format!("cannot read {}: {e}", path.display()))?;
     let mut rows = Vec::new();
     for (n, line) in text.lines().enumerate() {

@@ -72,7 +72,9 @@ pub(super) fn build_settings(
         span = Some(ts.span());
         match ts.get_ref() {
             TimeStepSpec::Value(dt) if dt.is_finite() && *dt > 0.0 => {
-                s.time_step = TimeStep::Fixed(*dt)
+                if b.physical(Some(ts.span()), "simulation.time_step", &[*dt]) {
+                    s.time_step = TimeStep::Fixed(*dt)
+                }
             }
             TimeStepSpec::Keyword(k) if k == "auto" => s.time_step = TimeStep::Auto,
             _ => {

@@ -90,6 +90,8 @@ pub(super) fn build_winch(
                 .expected("m/s, finite (> 0 pays out, < 0 hauls in, 0 holds)")
                 .hint("give the payout rate of unstretched line");
             b.push(d);
+        } else {
+            b.physical(Some(s.payout_rate.span()), &sk("payout_rate"), &[rate]);
         }
         ok &= b.errors.len() == errors;
         stages.push(WinchStage {
