@@ -214,3 +214,87 @@ fn coupling_calls_that_cannot_be_taken_are_errors() {
     // The lines pull the fairleads down and out towards the anchors.
     assert!(f[2] < 0.0 && f[0] > 0.0, "{f:?}");
 }
+
+/// The OC3 scenario text with every prescribed fairlead written `type = "coupled"` (its
+/// motion removed): what a host's scenario file looks like.
+fn oc3_coupled_text() -> String {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/oc3_surge.toml");
+    let text = std::fs::read_to_string(path).unwrap();
+    text.lines()
+        .filter(|l| !l.starts_with("motion = "))
+        .map(|l| l.replace("type = \"prescribed\"", "type = \"coupled\""))
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
+/// `type = "coupled"` in a scenario builds the core's coupled points, at their `position`:
+/// the same model as the prescribed one turned coupled by hand.
+#[test]
+fn coupled_points_come_from_the_scenario_key() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples");
+    let loaded = scenario::parse(&dir.join("oc3_coupled.toml"), &oc3_coupled_text()).unwrap();
+    let (by_hand, _) = coupled(&oc3());
+    assert_eq!(loaded.model.points, by_hand.points);
+    let s = Session::new(loaded.model).unwrap();
+    assert_eq!(s.coupled_points(), &[3, 4, 5][..]);
+    assert_eq!(s.coupled_dofs(), 9);
+}
+
+/// Not driven by a host, a coupled point stays where it starts: the run equals the run with
+/// the same points fixed, bit for bit.
+#[test]
+fn an_undriven_coupled_point_stays_at_its_position() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples");
+    let text = oc3_coupled_text();
+    let coupled = scenario::parse(&dir.join("a.toml"), &text).unwrap().model;
+    let fixed = scenario::parse(
+        &dir.join("b.toml"),
+        &text.replace("type = \"coupled\"", "type = \"fixed\""),
+    )
+    .unwrap()
+    .model;
+    let mut a = Session::new(coupled).unwrap();
+    let mut b = Session::new(fixed).unwrap();
+    a.advance_to(2.0).unwrap();
+    b.advance_to(2.0).unwrap();
+    assert_eq!(a.state(), b.state());
+}
+
+/// A coupled body (a platform whose pose the host sets) with its fairleads on it: six
+/// coupled degrees of freedom; a `motion` on it is refused with the key named.
+#[test]
+fn coupled_bodies_come_from_the_scenario_key() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples");
+    let mut text = oc3_coupled_text().replace(
+        "type = \"coupled\"\nposition = [5.2, 0.0, -70.0]",
+        "type = \"body\"\nbody = \"platform\"\nposition = [5.2, 0.0, 0.0]",
+    );
+    for (x, y) in [("-2.6", "4.5"), ("-2.6", "-4.5")] {
+        text = text.replace(
+            &format!("type = \"coupled\"\nposition = [{x}, {y}, -70.0]"),
+            &format!("type = \"body\"\nbody = \"platform\"\nposition = [{x}, {y}, 0.0]"),
+        );
+    }
+    text.push_str(
+        "\n\n[[bodies]]\nname = \"platform\"\ntype = \"coupled\"\nposition = [0.0, 0.0, -70.0]\n\
+         mass = 1.0\ninertia = [1.0, 1.0, 1.0]\n",
+    );
+    let model = scenario::parse(&dir.join("c.toml"), &text)
+        .unwrap_or_else(|e| panic!("{e}"))
+        .model;
+    assert_eq!(model.bodies[0].kind, hawser::model::BodyKind::Coupled);
+    let s = Session::new(model).unwrap();
+    assert_eq!(s.coupled_bodies(), &[0][..]);
+    assert_eq!(s.coupled_dofs(), 6);
+    let bad = text.replace(
+        "type = \"coupled\"\nposition = [0.0, 0.0, -70.0]",
+        "type = \"coupled\"\nposition = [0.0, 0.0, -70.0]\nmotion = { type = \"fixed\" }",
+    );
+    let e = scenario::parse(&dir.join("d.toml"), &bad)
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("bodies[0].motion") && e.contains("coupled"),
+        "{e}"
+    );
+}

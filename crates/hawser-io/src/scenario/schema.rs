@@ -482,6 +482,10 @@ pub enum PointKindSpec {
     Prescribed,
     /// Fixed on a rigid body (`body`), at `position` in body axes from the body origin.
     Body,
+    /// Moved by a host program at each coupling step (the Python session, the C ABI, the
+    /// MoorDyn-compatible library); it starts at `position`, and the lines' reaction force on
+    /// it is read back. Run alone (the CLI), it stays at `position`.
+    Coupled,
 }
 
 /// `[[points]]`.
@@ -491,7 +495,7 @@ pub struct PointSpec {
     /// Name, referenced by lines and channels.
     #[schemars(with = "String")]
     pub name: Spanned<String>,
-    /// `"fixed"`, `"free"`, `"prescribed"` or `"body"`.
+    /// `"fixed"`, `"free"`, `"prescribed"`, `"body"` or `"coupled"`.
     #[serde(rename = "type")]
     #[schemars(with = "PointKindSpec")]
     pub kind: Spanned<PointKindSpec>,
@@ -847,6 +851,10 @@ pub enum BodyKindSpec {
     /// Moves as its `motion` table says (a vessel, a test rig): any rigid motion of
     /// `[points.motion]` that a vessel takes.
     Prescribed,
+    /// Moved by a host program at each coupling step (a floating platform in OpenFAST or
+    /// WEC-Sim); it starts at `position` and `orientation`, and the loads of the lines on it
+    /// are read back. Run alone (the CLI), it stays at its starting pose.
+    Coupled,
 }
 
 /// An inertia tensor: principal moments or a full matrix.

@@ -262,6 +262,7 @@ pub(super) fn build_bodies(
                                 "a `{}` body has no `motion`",
                                 match kind {
                                     BodyKindSpec::Free => "free",
+                                    BodyKindSpec::Coupled => "coupled",
                                     _ => "fixed",
                                 }
                             ),
@@ -277,6 +278,7 @@ pub(super) fn build_bodies(
                         position,
                         orientation,
                     }),
+                    BodyKindSpec::Coupled => BodyKind::Coupled,
                     _ => BodyKind::Free,
                 }
             }

@@ -41,6 +41,7 @@ pub(super) fn build_points(
             PointKindSpec::Free => "a free point",
             PointKindSpec::Prescribed => "a prescribed point",
             PointKindSpec::Body => "a point on a body",
+            PointKindSpec::Coupled => "a coupled point",
         };
         if kind != PointKindSpec::Body
             && let Some(body) = &p.body
@@ -87,6 +88,7 @@ pub(super) fn build_points(
         }
         let point_kind = match kind {
             PointKindSpec::Fixed => PointKind::Fixed,
+            PointKindSpec::Coupled => PointKind::Coupled,
             PointKindSpec::Free => PointKind::Free {
                 mass: b.opt(
                     &p.mass,
