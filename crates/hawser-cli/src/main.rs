@@ -108,6 +108,10 @@ enum Command {
         /// Print the full solution as JSON.
         #[arg(long)]
         json: bool,
+        /// Print the solver's iteration log (residual, shift and step of each Newton
+        /// iteration, each change of method) to standard error.
+        #[arg(long)]
+        trace: bool,
     },
     /// Validate a scenario file or MoorDyn deck without running it.
     Check {
@@ -160,7 +164,7 @@ fn main() -> ExitCode {
             &deck,
         ),
         Command::Resume { dir, quiet } => run::resume(&dir, quiet),
-        Command::Statics { file, json } => statics(&file, json),
+        Command::Statics { file, json, trace } => statics(&file, json, trace),
         Command::Check { file, deck } => check(&file, &deck),
         Command::Convert { file, out, deck } => convert(&file, out.as_deref(), &deck),
         Command::Schema => {
@@ -282,25 +286,35 @@ fn step_error(file: &Path, loaded: &LoadedScenario, e: &SimulationError) -> Stri
     e.to_string()
 }
 
-fn statics(file: &Path, json: bool) -> Result<ExitCode> {
+fn statics(file: &Path, json: bool, trace: bool) -> Result<ExitCode> {
     let Some(loaded) = load(file) else {
         return Ok(ExitCode::from(2));
     };
     let system = system_of(&loaded.model)?;
-    let sol = match hawser::statics::solve(&system, None, &StaticOptions::default()) {
+    let options = StaticOptions {
+        trace,
+        ..StaticOptions::default()
+    };
+    let sol = match hawser::statics::solve(&system, None, &options) {
         Ok(s) => s,
         Err(e) => {
             eprintln!("error: {e}");
             return Ok(ExitCode::from(1));
         }
     };
+    for line in &sol.log {
+        eprintln!("{line}");
+    }
     let mut ws = system.workspace();
     hawser::statics::evaluate(&system, &sol.state, &mut ws);
     if json {
-        out!(
-            "{}",
-            serde_json::to_string_pretty(&statics_json(&system, &ws))?
-        );
+        let mut j = statics_json(&system, &ws);
+        j["solver"] = serde_json::json!({
+            "method": sol.method,
+            "iterations": sol.iterations,
+            "residual": sol.residual,
+        });
+        out!("{}", serde_json::to_string_pretty(&j)?);
         return Ok(ExitCode::SUCCESS);
     }
     out!(

@@ -13,6 +13,46 @@ pub enum ModelError {
         /// Why, with the expected range and unit.
         why: String,
     },
+    /// A `dg` line in a run whose scheme integrates second-order equations in positions only.
+    #[error(
+        "line {line}: uses `dg`, a first-order system in q and v, which the {scheme} scheme \
+         (for second-order equations in positions) cannot step: use scheme = \"ssp-rk3\" (the \
+         DG paper's) or \"rk4\""
+    )]
+    SchemeCannotStepDg {
+        /// The scheme's name as in the scenario key (`three-level`).
+        scheme: &'static str,
+        /// The first `dg` line's name.
+        line: String,
+    },
+    /// A free rigid body in a run whose scheme does not integrate rigid bodies.
+    #[error(
+        "body {body}: is free: the {scheme} scheme does not integrate rigid bodies yet; use \
+         scheme = \"rk4\" or \"ssp-rk3\""
+    )]
+    SchemeCannotStepBodies {
+        /// The scheme's name as in the scenario key (`three-level`).
+        scheme: &'static str,
+        /// The first free body's name.
+        body: String,
+    },
+    /// A state vector given to a session has the wrong length.
+    #[error("the initial state: has {given} entries where the model's state has {expected}")]
+    StateLength {
+        /// Entries given.
+        given: usize,
+        /// Entries of the model's state.
+        expected: usize,
+    },
+    /// A massless free point where only `dg` lines meet: nothing carries its inertia.
+    #[error(
+        "point {point}: is a massless free point joining dg lines, whose ends carry no mass: \
+         give it a mass (a massless point at the end of a single dg line is that line's free end)"
+    )]
+    MasslessDgJoint {
+        /// The point's name.
+        point: String,
+    },
 }
 
 /// A time integration that cannot go on.

@@ -315,6 +315,24 @@ fn three_level_refuses_dg() {
     let y = system.straight_state();
     let err = Simulation::new(&system, &model.settings, y).err().unwrap();
     assert!(err.to_string().contains("ssp-rk3"), "{err}");
+    // Hosts match on the cause; the message is the one CLI users always read.
+    assert!(
+        matches!(
+            &err,
+            hawser::SimulationError::Model(hawser::error::ModelError::SchemeCannotStepDg {
+                scheme: "three-level",
+                ..
+            })
+        ),
+        "{err:?}"
+    );
+    assert!(
+        err.to_string().starts_with(
+            "line L: uses `dg`, a first-order system in q and v, which the three-level scheme \
+             (for second-order equations in positions) cannot step"
+        ),
+        "{err}"
+    );
 }
 
 /// A rope started compressed comes to rest on its anchors (the modal filter, docs/dg.md): a

@@ -132,3 +132,58 @@ fn point_force_balances_the_hanging_mass_in_statics() {
         "{on_anchor}"
     );
 }
+
+/// The iteration log is kept only when asked for, and it tells the iterations as they were:
+/// when Newton alone converged, the last accepted step's residual is the solution's; when it
+/// fell back to another method, the log says that Newton failed and names the fallback. This
+/// hanging mass (started 10 m to the side of its anchor) needs the fallback.
+#[test]
+fn the_trace_logs_the_iterations_only_when_asked() {
+    let model = single_line(
+        line_type(0.02, 0.5, 1e6),
+        10.0,
+        5,
+        fixed("a", Vec3::new(0.0, 0.0, -10.0)),
+        free("b", Vec3::new(10.0, 0.0, -10.0), 5.0, 0.0),
+        MassMatrix::Lumped,
+    );
+    let system = System::new(&model).unwrap();
+    let quiet = solve(&system, None, &StaticOptions::default()).unwrap();
+    assert!(quiet.log.is_empty(), "{:?}", quiet.log);
+    let options = StaticOptions {
+        trace: true,
+        ..StaticOptions::default()
+    };
+    let traced = solve(&system, None, &options).unwrap();
+    assert_eq!(traced.state, quiet.state, "tracing changes nothing");
+    assert_eq!(traced.method, quiet.method);
+    let failed = traced
+        .log
+        .iter()
+        .any(|l| l.starts_with("newton failed after"));
+    assert_eq!(
+        failed,
+        traced.method != "newton",
+        "{}: {:?}",
+        traced.method,
+        traced.log
+    );
+    assert!(failed, "this case falls back ({})", traced.method);
+    let newton = |l: &String| l.starts_with("newton ") && l.contains(" -> ");
+    assert!(traced.log.iter().any(newton), "{:?}", traced.log);
+    // A case Newton solves alone: the same line with its end held, the mass hung below.
+    let mut model = model.clone();
+    model.points[1].position = Vec3::new(0.0, 0.0, -20.0);
+    let system = System::new(&model).unwrap();
+    let sol = solve(&system, None, &options).unwrap();
+    assert_eq!(sol.method, "newton", "{:?}", sol.log);
+    let last = sol.log.iter().rev().find(|l| newton(l)).unwrap();
+    let after = last.split(" -> ").nth(1).unwrap();
+    let r: f64 = after.split(' ').next().unwrap().parse().unwrap();
+    // The log prints 4 significant digits.
+    assert!(
+        (r - sol.residual).abs() <= 1e-3 * sol.residual,
+        "{last} vs {}",
+        sol.residual
+    );
+}

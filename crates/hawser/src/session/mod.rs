@@ -90,14 +90,12 @@ impl Session {
     ) -> Result<Self, SimulationError> {
         let system = System::new(&model)?;
         if state.len() != system.layout.len {
-            return Err(SimulationError::Model(crate::error::ModelError::Invalid {
-                what: "the initial state".into(),
-                why: format!(
-                    "has {} entries where the model's state has {}",
-                    state.len(),
-                    system.layout.len
-                ),
-            }));
+            return Err(SimulationError::Model(
+                crate::error::ModelError::StateLength {
+                    given: state.len(),
+                    expected: system.layout.len,
+                },
+            ));
         }
         Self::assemble(model, system, state, None, &options)
     }

@@ -122,20 +122,15 @@ pub(crate) fn scheme_error(system: &System, scheme: Scheme) -> Option<Simulation
     if scheme == Scheme::ThreeLevel
         && let Some(l) = system.lines.iter().find(|l| l.dg.is_some())
     {
-        return Some(SimulationError::Model(ModelError::Invalid {
-            what: format!("line {}", l.name),
-            why: "uses `dg`, a first-order system in q and v, which the three-level scheme \
-                  (for second-order equations in positions) cannot step: use scheme = \
-                  \"ssp-rk3\" (the DG paper's) or \"rk4\""
-                .into(),
+        return Some(SimulationError::Model(ModelError::SchemeCannotStepDg {
+            scheme: "three-level",
+            line: l.name.clone(),
         }));
     }
     if scheme == Scheme::ThreeLevel && !system.free_bodies.is_empty() {
-        return Some(SimulationError::Model(ModelError::Invalid {
-            what: format!("body {}", system.bodies[system.free_bodies[0]].body.name),
-            why: "is free: the three-level scheme does not integrate rigid bodies yet; use \
-                  scheme = \"rk4\" or \"ssp-rk3\""
-                .into(),
+        return Some(SimulationError::Model(ModelError::SchemeCannotStepBodies {
+            scheme: "three-level",
+            body: system.bodies[system.free_bodies[0]].body.name.clone(),
         }));
     }
     None

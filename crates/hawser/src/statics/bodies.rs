@@ -468,5 +468,6 @@ fn newton_on_poses(
         iterations,
         residual: sol.residual.max(r.amax()),
         method: "newton on the bodies' poses around the lines' statics",
+        log: sol.log,
     })
 }

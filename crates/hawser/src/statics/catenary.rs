@@ -136,9 +136,6 @@ pub fn solve(
     let scale = weight * length + ea * 1e-12;
     for _ in 0..200 {
         let (rx, rz, _) = residual(x, z, length, weight, ea, seabed, h, vb);
-        if std::env::var_os("HAWSER_DEBUG_CATENARY").is_some() {
-            eprintln!("catenary: H {h:.6e} V {vb:.6e} rx {rx:.3e} rz {rz:.3e}");
-        }
         if rx.abs() < 1e-12 * length.max(x) && rz.abs() < 1e-12 * length.max(x) {
             let va = vb - weight * length;
             let grounded = if seabed && va < 0.0 {

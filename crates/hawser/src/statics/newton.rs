@@ -25,6 +25,10 @@ pub struct StaticOptions {
     pub relative_tolerance: Real,
     /// Seed lines with the elastic catenary (true) or straight lines (false).
     pub catenary_seed: bool,
+    /// Keep an iteration log in [`StaticSolution::log`] (each Newton iteration's residual,
+    /// shift and step; each change of method). The core prints nothing: a host or the CLI
+    /// (`hawser statics --trace`) shows it.
+    pub trace: bool,
 }
 
 impl Default for StaticOptions {
@@ -33,6 +37,7 @@ impl Default for StaticOptions {
             max_iterations: 100,
             relative_tolerance: 1e-9,
             catenary_seed: true,
+            trace: false,
         }
     }
 }
@@ -48,6 +53,36 @@ pub struct StaticSolution {
     pub residual: Real,
     /// Method that converged.
     pub method: &'static str,
+    /// The iteration log, one line per event, when [`StaticOptions::trace`] was set (else
+    /// empty).
+    pub log: Vec<String>,
+}
+
+/// The iteration log of a static solve ([`StaticOptions::trace`]).
+#[derive(Clone, Debug, Default)]
+pub(crate) struct Trace {
+    on: bool,
+    lines: Vec<String>,
+}
+
+impl Trace {
+    pub(crate) fn new(on: bool) -> Self {
+        Self {
+            on,
+            lines: Vec::new(),
+        }
+    }
+
+    /// Records the line `f` makes, when tracing (the text is not built otherwise).
+    pub(crate) fn push(&mut self, f: impl FnOnce() -> String) {
+        if self.on {
+            self.lines.push(f());
+        }
+    }
+
+    pub(crate) fn into_lines(self) -> Vec<String> {
+        self.lines
+    }
 }
 
 /// Force scale [N] of the system: total weight magnitude of lines and points plus point loads.
@@ -275,6 +310,7 @@ fn newton(
     tol: Real,
     max_iter: usize,
     ws: &mut Workspace,
+    trace: &mut Trace,
 ) -> (bool, usize, Real) {
     let len = y.len();
     let mut r = vec![0.0; len];
@@ -294,7 +330,6 @@ fn newton(
     let (mut norm, _) = residual(system, y, current_factor, ws, &mut r);
     let mut merit = two_norm(&r);
     let mut mu: Real = 0.0;
-    let debug = std::env::var_os("HAWSER_DEBUG_NEWTON").is_some();
     for it in 0..max_iter {
         let tol = effective_tolerance(tol, ws);
         if norm <= tol {
@@ -321,9 +356,7 @@ fn newton(
             let solved = newton_step(system, &r, mu - applied, ws, &mut delta);
             applied = mu;
             if !solved {
-                if debug {
-                    eprintln!("newton {it}: singular with mu {mu:.2e}");
-                }
+                trace.push(|| format!("newton {it}: singular with mu {mu:.2e}"));
                 mu = (mu * 10.0).max(1e-9 * scale);
                 continue;
             }
@@ -344,11 +377,12 @@ fn newton(
                 if tn.is_finite() && tm < merit {
                     y.copy_from_slice(&trial);
                     r.copy_from_slice(&trial_r);
-                    if debug {
-                        eprintln!(
-                            "newton {it}: |R| {norm:.3e} -> {tn:.3e} (tol {tol:.1e}), mu {mu:.2e}, alpha {alpha:.2e}"
-                        );
-                    }
+                    trace.push(|| {
+                        format!(
+                            "newton {it}: |R| {norm:.3e} -> {tn:.3e} N (tolerance {tol:.1e} N), \
+                             mu {mu:.2e}, alpha {alpha:.2e}"
+                        )
+                    });
                     norm = tn;
                     merit = tm;
                     accepted = true;
@@ -360,11 +394,12 @@ fn newton(
                 mu = if mu > 1e-9 * scale { mu * 0.1 } else { 0.0 };
                 break;
             }
-            if debug {
-                eprintln!(
-                    "newton {it}: rejected step with mu {mu:.2e} (|R| {norm:.3e}, largest move {big:.3e} m)"
-                );
-            }
+            trace.push(|| {
+                format!(
+                    "newton {it}: rejected step with mu {mu:.2e} (|R| {norm:.3e} N, largest \
+                     move {big:.3e} m)"
+                )
+            });
             mu = (mu * 10.0).max(1e-6 * scale);
         }
         if !accepted {
@@ -529,6 +564,7 @@ fn solve_at_rest(
             } else {
                 "newton with the bodies held"
             },
+            log: sol.log,
         });
     }
     check_supported(system)?;
@@ -544,15 +580,24 @@ fn solve_at_rest(
     zero_velocities(system, &mut y);
     let tol = options.relative_tolerance * force_scale(system);
     let seed = y.clone();
-    let (ok, it, res) = newton(system, &mut y, 1.0, tol, options.max_iterations, &mut ws);
+    let mut trace = Trace::new(options.trace);
+    let max_iter = options.max_iterations;
+    let (ok, it, res) = newton(system, &mut y, 1.0, tol, max_iter, &mut ws, &mut trace);
     if ok {
         return Ok(StaticSolution {
             state: y,
             iterations: it,
             residual: res,
             method: "newton",
+            log: trace.into_lines(),
         });
     }
+    trace.push(|| {
+        format!(
+            "newton failed after {it} iterations (residual {res:.3e} N, tolerance {tol:.3e} N): \
+             load continuation on the current and point loads"
+        )
+    });
     // Load continuation on the current and point loads from the seed.
     let mut total = it;
     y.copy_from_slice(&seed);
@@ -562,13 +607,9 @@ fn solve_at_rest(
     while lambda < 1.0 {
         let target = (lambda + step).min(1.0);
         let mut trial = y.clone();
+        trace.push(|| format!("load continuation: load factor {target:.4}"));
         let (ok, it, _) = newton(
-            system,
-            &mut trial,
-            target,
-            tol,
-            options.max_iterations,
-            &mut ws,
+            system, &mut trial, target, tol, max_iter, &mut ws, &mut trace,
         );
         total += it;
         if ok {
@@ -584,12 +625,13 @@ fn solve_at_rest(
         }
     }
     if cont_ok {
-        let (_, _, res) = newton(system, &mut y, 1.0, tol, options.max_iterations, &mut ws);
+        let (_, _, res) = newton(system, &mut y, 1.0, tol, max_iter, &mut ws, &mut trace);
         return Ok(StaticSolution {
             state: y,
             iterations: total,
             residual: res,
             method: "newton with load continuation",
+            log: trace.into_lines(),
         });
     }
     // Dynamic relaxation, then Newton to polish.
@@ -597,14 +639,17 @@ fn solve_at_rest(
     let (newton_res, worst) = residual(system, &seed, 1.0, &mut ws, &mut r);
     let location = system.locate(worst);
     y.copy_from_slice(&seed);
+    trace.push(|| "load continuation failed: dynamic relaxation from the seed".to_string());
     let dr_res = dynamic_relaxation::relax(system, &mut y, tol, &mut ws);
-    let (ok, it, res) = newton(system, &mut y, 1.0, tol, options.max_iterations, &mut ws);
+    trace.push(|| format!("dynamic relaxation: residual {dr_res:.3e} N; newton to polish"));
+    let (ok, it, res) = newton(system, &mut y, 1.0, tol, max_iter, &mut ws, &mut trace);
     if ok || dr_res <= effective_tolerance(tol, &ws) {
         return Ok(StaticSolution {
             state: y,
             iterations: total + it,
             residual: res.min(dr_res),
             method: "dynamic relaxation",
+            log: trace.into_lines(),
         });
     }
     Err(StaticsError::NotConverged {

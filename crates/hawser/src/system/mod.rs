@@ -252,12 +252,8 @@ impl System {
                 .filter(|l| l.end_a == p || l.end_b == p)
                 .all(|l| l.dg.is_some());
             if only_dg && !(mass > 0.0) {
-                return Err(ModelError::Invalid {
-                    what: format!("point {}", points[p].name),
-                    why: "is a massless free point joining dg lines, whose ends carry no mass: \
-                          give it a mass (a massless point at the end of a single dg line is \
-                          that line's free end)"
-                        .into(),
+                return Err(ModelError::MasslessDgJoint {
+                    point: points[p].name.clone(),
                 });
             }
         }

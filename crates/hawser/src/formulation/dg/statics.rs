@@ -134,12 +134,6 @@ pub fn steady_state(
         std::mem::swap(&mut r0, &mut r1);
         out.step = alpha * norm(&dx);
         out.residual = norm(&r0);
-        if std::env::var_os("HAWSER_DEBUG_DG_STATICS").is_some() {
-            eprintln!(
-                "dg statics: iteration {it}: alpha {alpha}, step {:.3e}, residual {:.3e}",
-                out.step, out.residual
-            );
-        }
         if !out.residual.is_finite() {
             return Err(out);
         }
