@@ -1,5 +1,5 @@
 //! A run that diverges stops with the time, line, node and stable-step estimate, exits 1, and
-//! keeps the results written so far, marked incomplete (issue 2, item 6).
+//! keeps the results written so far, marked incomplete.
 
 use std::path::PathBuf;
 use std::process::Command;

@@ -5,7 +5,7 @@
 //! script also runs hawser and prints both side by side). The quantities compared are the same
 //! in both codes: |F_net| of a line's end node (MoorDyn's FairTen/AnchTen channels).
 //!
-//! Tolerances (issue 5): static fairlead and anchor tensions within 0.2 %; the OC3 fairlead
+//! Tolerances: static fairlead and anchor tensions within 0.2 %; the OC3 fairlead
 //! tension minimum, maximum and mean in a 2 m, 10 s surge within 0.5 %. Both codes discretise
 //! the same line differently (hawser's two-point Gauss drag on elements against MoorDyn's
 //! nodal drag on the chord direction; hawser's √(1+ε) on drag), so they agree to the

@@ -14,7 +14,7 @@
 //!
 //! Degrees of freedom are grouped by owner ([`DofOwner`]): the interior nodes of every line,
 //! then every free point, three translations each. Fixed and prescribed points are not degrees
-//! of freedom: their motion is given. Rigid bodies (issue 6) will add an owner with six
+//! of freedom: their motion is given. Free rigid bodies are not linearised yet: each would add an owner with six
 //! degrees of freedom (translation and rotation about a reference point); their rows couple
 //! to the line ends at their fairleads through the rigid-body transformation, and the
 //! [`connection_stiffness`] condensation below is the hook for the 6×6 mooring stiffness a

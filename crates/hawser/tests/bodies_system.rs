@@ -1,4 +1,4 @@
-//! Rigid bodies coupled to lines in a system (issue 6): the 6-DOF bodies enter the coupled
+//! Rigid bodies coupled to lines in a system: the 6-DOF bodies enter the coupled
 //! solve through the points fixed on them (`linalg::CoupledSystem`'s body slots).
 
 use hawser::math::{Mat3, Quat, Real, Vec3, Vec6};

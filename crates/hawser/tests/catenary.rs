@@ -1,4 +1,4 @@
-//! Elastic catenary: FE statics against the closed form (SPEC §7, issue 2 item 7), through
+//! Elastic catenary: FE statics against the closed form (SPEC §7), through
 //! the verification suite's cases (`hawser::verification`, where the models, the closed form
 //! and the tolerances are documented).
 //!

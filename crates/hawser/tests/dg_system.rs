@@ -1,4 +1,4 @@
-//! `dg` lines inside a whole system (issue 3): the DG discretisation coupled to points through
+//! `dg` lines inside a whole system: the DG discretisation coupled to points through
 //! its end fluxes, started from statics, stepped by the system's Runge–Kutta schemes, and
 //! compared with the other formulations on the same scenarios.
 

@@ -1,4 +1,4 @@
-//! The `hermite` formulation (issue 4 item 1) against closed forms: the elastic catenary
+//! The `hermite` formulation against closed forms: the elastic catenary
 //! (end tensions and the observed order of the position error), simply supported beam
 //! frequencies from its bending stiffness, and agreement with `fe` on the same scenario.
 
@@ -177,7 +177,7 @@ fn simply_supported_beam_frequencies() {
 }
 
 /// The same catenary mooring with the seabed, solved by `fe` and by `hermite`: static end
-/// tensions within 0.1 % (issue 4 item 4) on converged meshes (5 m elements for `hermite`,
+/// tensions within 0.1 % on converged meshes (5 m elements for `hermite`,
 /// 1.25 m for `fe`; the anchor tension converges slowly in both, through the kink of the
 /// shape at the touchdown point: fe 280 → 560 elements and hermite 70 → 140 change it by
 /// 0.1–0.5 %), and both within 0.2 % of the closed form with seabed contact.
@@ -239,7 +239,7 @@ impl hawser::simulation::Observer for Tensions {
 /// A chain hanging between an anchor and a fairlead that surges 2 m at 8 s (ramped over one
 /// period), 16 s from the static state, RK4 at the automatic step: the fairlead tension
 /// histories of `fe` (80 elements) and `hermite` (20 elements) agree within 1 % RMS of the
-/// mean tension (issue 4 item 4), on meshes whose own refinement changes them by less.
+/// mean tension, on meshes whose own refinement changes them by less.
 #[test]
 fn fe_and_hermite_agree_on_a_moving_fairlead() {
     use hawser::model::{Motion, PointKind, Settings, TimeStep};

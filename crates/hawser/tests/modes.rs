@@ -1,4 +1,4 @@
-//! Linearisation and modal analysis (issue 7): natural frequencies against closed forms,
+//! Linearisation and modal analysis: natural frequencies against closed forms,
 //! connection stiffness against the elastic catenary and against finite differences of
 //! static solutions, and the sparse shift-invert solver against the dense one.
 //!

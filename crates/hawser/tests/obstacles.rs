@@ -1,4 +1,4 @@
-//! Lines in contact with obstacles (issue 6 item 4, [`hawser::physics::obstacles`]): statics
+//! Lines in contact with obstacles ([`hawser::physics::obstacles`]): statics
 //! over a frictionless cylinder against the exact equilibrium and the frictionless tension
 //! law; the capstan equation with friction in steady sliding; a line draped on a sphere with
 //! the penetration of the penalty law; a moving cylinder sweeping a slack line, its force

@@ -1,4 +1,4 @@
-//! Prescribed rigid-body motions (issue 6 item 2): the ship manoeuvre's track geometry and
+//! Prescribed rigid-body motions: the ship manoeuvre's track geometry and
 //! kinematics, the 6-DOF spline table against an analytic motion (convergence with the
 //! sampling interval), the Euler-angle kinematic map, and the RAO motion against the wave
 //! field it shares with the lines (regular waves, the phase convention, a JONSWAP response

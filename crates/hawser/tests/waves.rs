@@ -1,4 +1,4 @@
-//! The sea state (issue 6 item 3) against linear wave theory: the dispersion relation, regular
+//! The sea state against linear wave theory: the dispersion relation, regular
 //! Airy kinematics at several depths, Wheeler stretching, the deep-water limit, spectra
 //! recovered from generated elevation records, reproducibility from the seed, and a taut line
 //! loaded by a regular wave.

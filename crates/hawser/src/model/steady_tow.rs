@@ -1,5 +1,5 @@
 //! Steady towing: the tow velocity of a system whose vessel moves at constant velocity (the
-//! elastic-link paper's "solution-setting mode", §5; issue 6 item 6).
+//! elastic-link paper's "solution-setting mode", §5).
 //!
 //! A system towed at a constant velocity V settles into a shape that is steady in the frame
 //! moving with the vessel: every material point moves at V, the water streams past each at

@@ -1,5 +1,5 @@
 //! Linear (Airy) waves: a regular wave, or an irregular sea as a sum of Airy components drawn
-//! from a JONSWAP or Pierson–Moskowitz spectrum with a seed (SPEC §2, issue 6 item 3).
+//! from a JONSWAP or Pierson–Moskowitz spectrum with a seed (SPEC §2).
 //!
 //! Every component j has amplitude a_j [m], angular frequency ω_j [rad/s], wavenumber k_j
 //! [rad/m] from the dispersion relation ω² = g k tanh(k h), a direction of propagation β_j

@@ -1,4 +1,4 @@
-//! Validation against the DG paper's physical cases (issue 3): the runs and the analysis of
+//! Validation against the DG paper's physical cases: the runs and the analysis of
 //! their time series, formulation-neutral and without I/O. The models come from the scenario
 //! files under `examples/` (read by `hawser-io`); the report is written by
 //! `hawser-io`'s `dg_report` example into `docs/verification/dg.md`.

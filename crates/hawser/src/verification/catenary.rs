@@ -273,7 +273,7 @@ pub fn catenary_errors_of_order(
 }
 
 /// Expected order of convergence in h of node positions and end forces: `fe` 2 (linear
-/// elements), `hermite` 4 (cubic interpolation, issue 4); `dg`: not measured on statics (see
+/// elements), `hermite` 4 (cubic interpolation); `dg`: not measured on statics (see
 /// [`catenary_convergence`]).
 pub fn expected_order(f: Formulation) -> Option<Real> {
     match f {

@@ -1,5 +1,5 @@
 //! The verification suite: reference problems with known answers (SPEC §7 "Analytic checks",
-//! issue 4 item 3), each built in code for a chosen [`Formulation`], run through the public
+//! each built in code for a chosen [`Formulation`], run through the public
 //! model, system, statics and simulation API, and compared with its reference.
 //!
 //! A case returns rows ([`Check`]): quantity with unit, expected and computed value, error,

@@ -1,5 +1,5 @@
 //! A steady towed cable against an independent integration of the steady cable equations
-//! (issue 4 item 3): the elastic-link paper's system 1 (SPEC §7; docs/towing.md), solved by
+//!: the elastic-link paper's system 1 (SPEC §7; docs/towing.md), solved by
 //! hawser's statics in the frame of the ship (the water streams past at −V as a uniform
 //! current, the body is a free point with drag area and a constant stabiliser force), against
 //! [`crate::analysis::steady_cable`], which integrates the steady cable equations from the
