@@ -132,7 +132,7 @@ impl RunWriter {
             let sd = dir.join("snapshots");
             std::fs::create_dir_all(&sd).map_err(|e| io_context(&sd, e))?;
             for l in &system.lines {
-                let p = sd.join(format!("{}.csv", l.name));
+                let p = sd.join(format!("{}.csv", safe_file_name(&l.name)));
                 let mut w = BufWriter::new(File::create(&p).map_err(|e| io_context(&p, e))?);
                 writeln!(
                     w,
@@ -508,4 +508,42 @@ pub fn statics_json(system: &System, ws: &Workspace) -> Value {
         v["tow_velocity"] = json!([t.x, t.y, t.z]);
     }
     v
+}
+
+/// `name` as a file name that stays inside its folder: path separators, `:`, control
+/// characters and a leading `.` become `_` (scenario files refuse such names already; a
+/// model built in code may still hold them).
+pub fn safe_file_name(name: &str) -> String {
+    let mut s: String = name
+        .chars()
+        .map(|c| {
+            if matches!(c, '/' | '\\' | ':') || c.is_control() {
+                '_'
+            } else {
+                c
+            }
+        })
+        .collect();
+    if s.starts_with('.') || s.is_empty() {
+        s.insert(0, '_');
+    }
+    s
+}
+
+#[cfg(test)]
+mod safe_name_tests {
+    use super::safe_file_name;
+
+    #[test]
+    fn names_cannot_leave_the_folder() {
+        assert_eq!(safe_file_name("L1"), "L1");
+        assert_eq!(safe_file_name("../../etc/passwd"), "_.._.._etc_passwd");
+        assert_eq!(safe_file_name("a\\b:c\u{7}"), "a_b_c_");
+        assert_eq!(safe_file_name(".hidden"), "_.hidden");
+        assert_eq!(safe_file_name(""), "_");
+        for n in ["../x", "/abs", "a/../../b", ".."] {
+            let p = std::path::Path::new("out").join(safe_file_name(n));
+            assert_eq!(p.parent(), Some(std::path::Path::new("out")), "{n}");
+        }
+    }
 }

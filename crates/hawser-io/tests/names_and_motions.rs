@@ -152,3 +152,24 @@ fn vessel_motion_rotates_points_about_the_vessel_origin() {
         -Vec3::x()
     ));
 }
+
+/// Names become file names (snapshots/NAME.csv): a path separator, `:` or a control
+/// character in a line's or point's name is refused at the name, so nothing can be written
+/// outside the output folder.
+#[test]
+fn names_that_would_leave_the_output_folder_are_refused() {
+    const FIXED: &str = "motion = { type = \"fixed\" }";
+    // As written in TOML (basic strings): `up/x`, `a\b`, `c:d`, `bell` + BEL.
+    for bad in [r#""up/x""#, r#""a\\b""#, r#""c:d""#, r#""bell\u0007""#] {
+        let text = scenario(FIXED, "p").replace("name = \"L1\"", &format!("name = {bad}"));
+        let e = parse(Path::new("s.toml"), &text).unwrap_err().to_string();
+        assert!(
+            e.contains("lines[0].name") && e.contains("file names"),
+            "{bad}: {e}"
+        );
+        let text = scenario(FIXED, "p").replace("name = \"p\"", &format!("name = {bad}"));
+        let text = text.replace("end_b = \"p\"", &format!("end_b = {bad}"));
+        let e = parse(Path::new("s.toml"), &text).unwrap_err().to_string();
+        assert!(e.contains("points[1].name"), "{bad}: {e}");
+    }
+}

@@ -110,6 +110,17 @@ impl<'a> Builder<'a> {
                 )
                 .hint(format!("they become channel names such as `{example}`"));
             self.push(d);
+        } else if n.contains(['/', '\\', ':']) || n.chars().any(char::is_control) {
+            // Line names name snapshot files: a separator would write outside the output
+            // folder, and a control character makes a file name no tool handles.
+            let d = self
+                .diag(
+                    Some(name.span()),
+                    key,
+                    format!("{kind} names must not hold `/`, `\\`, `:` or control characters"),
+                )
+                .hint("they become file names in the output folder (snapshots/NAME.csv)");
+            self.push(d);
         }
     }
 
