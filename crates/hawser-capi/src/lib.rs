@@ -8,7 +8,6 @@
 // `!(x > 0.0)` is deliberate: it rejects NaN.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
-#[cfg(feature = "ffi")]
 pub mod ffi;
 pub mod host;
 
