@@ -13,6 +13,8 @@
 //! - Status codes `MOORDYN_SUCCESS` (0) and the negative `MOORDYN_*` errors; errors printed on
 //!   standard error, as MoorDyn prints them.
 #![warn(missing_docs)]
+// `!(x > 0.0)` is deliberate: it rejects NaN.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 use hawser_capi::guard;
 use hawser_capi::host::{Convention, ErrorKind, Host, HostError};
@@ -117,7 +119,7 @@ unsafe fn slice_mut<'a, T>(p: *mut T, n: usize, what: &str) -> Result<&'a mut [T
 
 /// # Safety
 /// `p` is null or a NUL-terminated string.
-unsafe fn path<'a>(p: *const c_char, default: &'a str) -> Result<&'a str, HostError> {
+unsafe fn path(p: *const c_char, default: &str) -> Result<&str, HostError> {
     if p.is_null() {
         return Ok(default);
     }
