@@ -11,9 +11,11 @@
 
 pub mod convert;
 pub mod deck;
+pub mod host_coupling;
 
 pub use convert::{Conversion, ConvertOptions, Note};
 pub use deck::looks_like_deck;
+pub use host_coupling::couple_deck_points;
 
 use crate::scenario::schema::Scenario;
 use crate::scenario::{LoadedScenario, ScenarioError};

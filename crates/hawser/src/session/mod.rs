@@ -15,6 +15,7 @@
 //! coupling buffers are sized when the session is built.
 
 mod checkpoint;
+mod constant_velocity;
 mod coupling;
 mod initial;
 mod stepper;
