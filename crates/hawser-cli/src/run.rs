@@ -188,10 +188,6 @@ pub(crate) fn run(
         );
         return Ok(ExitCode::from(2));
     }
-    if let Err(e) = prepare_output_dir(out, overwrite) {
-        eprintln!("error: {e}");
-        return Ok(ExitCode::from(2));
-    }
     let t0 = Instant::now();
     let options = SessionOptions {
         allow_unstable_step,
@@ -201,6 +197,11 @@ pub(crate) fn run(
         Ok(s) => s,
         Err(code) => return Ok(code),
     };
+    // Only once the input is accepted: refused input writes nothing.
+    if let Err(e) = prepare_output_dir(out, overwrite) {
+        eprintln!("error: {e}");
+        return Ok(ExitCode::from(2));
+    }
     if let Some(f) = session.step_fallback() {
         eprintln!(
             "warning: the deck's dtM = {} s is above hawser's stability limit {:.4e} s \
