@@ -18,7 +18,7 @@
 
 use hawser::Model;
 use hawser::math::{Real, Vec3};
-use hawser::model::{Motion, PointKind};
+use hawser::model::{Motion, couple_prescribed_points};
 use hawser::session::Session;
 use hawser_io::scenario;
 use std::path::Path;
@@ -26,20 +26,6 @@ use std::path::Path;
 fn oc3() -> Model {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/oc3_surge.toml");
     scenario::load(&path).expect("oc3_surge.toml").model
-}
-
-/// The model with its prescribed points coupled, and the motions the host feeds them.
-fn coupled(model: &Model) -> (Model, Vec<(usize, Motion)>) {
-    let mut m = model.clone();
-    let mut motions = Vec::new();
-    for (i, p) in m.points.iter_mut().enumerate() {
-        if let PointKind::Prescribed(motion) = &p.kind {
-            p.position = motion.initial_position();
-            motions.push((i, motion.clone()));
-            p.kind = PointKind::Coupled;
-        }
-    }
-    (m, motions)
 }
 
 /// Feeds the host's kinematics at `t1` to the session: positions and velocities, and the
@@ -65,7 +51,7 @@ fn run_coupled(
     end: Real,
     accelerations: bool,
 ) -> (Session, Vec<Vec<Real>>) {
-    let (m, motions) = coupled(model);
+    let (m, motions) = couple_prescribed_points(model);
     let mut session = Session::new(m).expect("coupled session");
     feed_with(&mut session, &motions, 0.0, accelerations);
     let lines = session.system().lines.len();
@@ -157,7 +143,7 @@ fn coupled_tension_extremes_do_not_depend_on_the_coupling_interval() {
 #[test]
 fn a_repeated_interval_replaces_the_first_attempt() {
     let model = oc3();
-    let (m, motions) = coupled(&model);
+    let (m, motions) = couple_prescribed_points(&model);
     let (mut once, mut twice) = (Session::new(m.clone()).unwrap(), Session::new(m).unwrap());
     for s in [&mut once, &mut twice] {
         feed(s, &motions, 0.0);
@@ -184,7 +170,7 @@ fn a_repeated_interval_replaces_the_first_attempt() {
 
 #[test]
 fn coupling_calls_that_cannot_be_taken_are_errors() {
-    let (m, _) = coupled(&oc3());
+    let (m, _) = couple_prescribed_points(&oc3());
     let mut s = Session::new(m).unwrap();
     let p = s.coupled_points()[0];
     let anchor = 0;
@@ -233,7 +219,7 @@ fn oc3_coupled_text() -> String {
 fn coupled_points_come_from_the_scenario_key() {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples");
     let loaded = scenario::parse(&dir.join("oc3_coupled.toml"), &oc3_coupled_text()).unwrap();
-    let (by_hand, _) = coupled(&oc3());
+    let (by_hand, _) = couple_prescribed_points(&oc3());
     assert_eq!(loaded.model.points, by_hand.points);
     let s = Session::new(loaded.model).unwrap();
     assert_eq!(s.coupled_points(), &[3, 4, 5][..]);

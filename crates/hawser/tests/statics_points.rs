@@ -40,16 +40,21 @@ fn free_points_held_by_nothing_have_no_equilibrium_and_are_named() {
     );
 }
 
-#[test]
-fn the_same_pair_hung_from_an_anchor_has_an_equilibrium() {
-    let model = single_line(
+/// A 5 kg mass on a 10 m line from an anchor, started level with the anchor 10 m to its side.
+fn hanging_mass() -> hawser::Model {
+    single_line(
         line_type(0.02, 0.5, 1e6),
         10.0,
         5,
         fixed("a", Vec3::new(0.0, 0.0, -10.0)),
         free("b", Vec3::new(10.0, 0.0, -10.0), 5.0, 0.0),
         MassMatrix::Lumped,
-    );
+    )
+}
+
+#[test]
+fn the_same_pair_hung_from_an_anchor_has_an_equilibrium() {
+    let model = hanging_mass();
     let system = System::new(&model).unwrap();
     let sol =
         solve(&system, None, &StaticOptions::default()).expect("a hanging mass has an equilibrium");
@@ -105,14 +110,7 @@ fn a_clump_weight_rests_on_the_seabed() {
 fn point_force_balances_the_hanging_mass_in_statics() {
     use hawser::analysis::Channel;
     use hawser::statics::evaluate;
-    let model = single_line(
-        line_type(0.02, 0.5, 1e6),
-        10.0,
-        5,
-        fixed("a", Vec3::new(0.0, 0.0, -10.0)),
-        free("b", Vec3::new(10.0, 0.0, -10.0), 5.0, 0.0),
-        MassMatrix::Lumped,
-    );
+    let model = hanging_mass();
     let system = System::new(&model).unwrap();
     let sol = solve(&system, None, &StaticOptions::default()).unwrap();
     let mut ws = system.workspace();
@@ -139,14 +137,7 @@ fn point_force_balances_the_hanging_mass_in_statics() {
 /// hanging mass (started 10 m to the side of its anchor) needs the fallback.
 #[test]
 fn the_trace_logs_the_iterations_only_when_asked() {
-    let model = single_line(
-        line_type(0.02, 0.5, 1e6),
-        10.0,
-        5,
-        fixed("a", Vec3::new(0.0, 0.0, -10.0)),
-        free("b", Vec3::new(10.0, 0.0, -10.0), 5.0, 0.0),
-        MassMatrix::Lumped,
-    );
+    let model = hanging_mass();
     let system = System::new(&model).unwrap();
     let quiet = solve(&system, None, &StaticOptions::default()).unwrap();
     assert!(quiet.log.is_empty(), "{:?}", quiet.log);

@@ -6,21 +6,7 @@
 
 use super::cases as bench_cases;
 use super::*;
-use hawser::model::{Motion, PointKind};
-
-/// The model with its prescribed points coupled, and the motions a host feeds them.
-fn coupled(model: &Model) -> (Model, Vec<(usize, Motion)>) {
-    let mut m = model.clone();
-    let mut motions = Vec::new();
-    for (i, p) in m.points.iter_mut().enumerate() {
-        if let PointKind::Prescribed(motion) = &p.kind {
-            p.position = motion.initial_position();
-            motions.push((i, motion.clone()));
-            p.kind = PointKind::Coupled;
-        }
-    }
-    (m, motions)
-}
+use hawser::model::{Motion, couple_prescribed_points};
 
 /// CPU seconds of one run of `session` to `end` [s]; with `motions`, coupled at `interval`.
 fn timed(
@@ -78,7 +64,7 @@ pub fn run(args: &BenchArgs, interval: Real) -> Result<ExitCode> {
     if let Some(d) = args.duration {
         model.settings.duration = d;
     }
-    let (coupled_model, motions) = coupled(&model);
+    let (coupled_model, motions) = couple_prescribed_points(&model);
     if motions.is_empty() {
         eprintln!(
             "error: {}: --coupling needs prescribed points to couple; this scenario has none",

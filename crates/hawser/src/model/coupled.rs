@@ -10,7 +10,7 @@
 //! Past t₁ the motion goes on at the last velocity.
 
 use crate::math::{Quat, Real, Vec3};
-use crate::model::RigidKinematics;
+use crate::model::{Motion, PointKind, RigidKinematics};
 
 /// Cubic Hermite interpolation on s ∈ [0, 1] of span h: value, first and second time
 /// derivatives from (x₀, ẋ₀) and (x₁, ẋ₁). Basis h₀₀ = 2s³ − 3s² + 1, h₁₀ = s³ − 2s² + s,
@@ -306,4 +306,20 @@ mod tests {
             assert!(k.angular_acceleration.norm() < 1e-13);
         }
     }
+}
+
+/// `model` with every prescribed point made coupled, placed at its motion's position at t = 0,
+/// and those motions by point index: what a host needs to drive the coupled model along the
+/// prescribed one (the coupling tests, `hawser bench --coupling`).
+pub fn couple_prescribed_points(model: &crate::Model) -> (crate::Model, Vec<(usize, Motion)>) {
+    let mut m = model.clone();
+    let mut motions = Vec::new();
+    for (i, p) in m.points.iter_mut().enumerate() {
+        if let PointKind::Prescribed(motion) = &p.kind {
+            p.position = motion.initial_position();
+            motions.push((i, motion.clone()));
+            p.kind = PointKind::Coupled;
+        }
+    }
+    (m, motions)
 }

@@ -12,7 +12,7 @@ mod steady_tow;
 mod winch;
 
 pub use body::{Body, BodyKind, Displacement, Thrust, Wind};
-pub use coupled::{BodyTrack, PointTrack};
+pub use coupled::{BodyTrack, PointTrack, couple_prescribed_points};
 pub use line::{Formulation, Line, LineEnd, LineType, MassMatrix, Section, StrainMeasure};
 pub use motion::{Motion, ramp};
 pub use point::{Point, PointKind};
