@@ -11,38 +11,11 @@ use hawser_capi::host::{Convention, Host};
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
+#[path = "../../../tests/c/cc.rs"]
+mod cc;
+
 fn root() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
-}
-
-/// target/<profile>, where cargo put the library next to the test's deps folder.
-fn profile_dir() -> PathBuf {
-    let exe = std::env::current_exe().expect("test path");
-    exe.parent()
-        .and_then(Path::parent)
-        .expect("profile dir")
-        .to_path_buf()
-}
-
-fn compile(source: &Path, include: &Path, lib: &Path, out: &Path) {
-    let status = Command::new(std::env::var("CC").unwrap_or_else(|_| "cc".into()))
-        .args([
-            "-std=c99",
-            "-D_DEFAULT_SOURCE",
-            "-Wall",
-            "-Werror",
-            "-O1",
-            "-o",
-        ])
-        .arg(out)
-        .arg(source)
-        .arg("-I")
-        .arg(include)
-        .arg(lib)
-        .args(["-lpthread", "-ldl", "-lm"])
-        .status()
-        .expect("run cc");
-    assert!(status.success(), "cc failed on {}", source.display());
 }
 
 fn parse(csv: &str) -> Vec<Vec<f64>> {
@@ -57,10 +30,10 @@ fn c_host_forces_equal_the_rust_sessions() {
     let deck = root().join("tests/data/moordyn/oc3_lines.txt");
     let (duration, dtc) = (20.0, 0.1);
     let exe = Path::new(env!("CARGO_TARGET_TMPDIR")).join("hawser_host");
-    compile(
+    cc::compile(
         &root().join("tests/c/hawser_host.c"),
         &Path::new(env!("CARGO_MANIFEST_DIR")).join("include"),
-        &profile_dir().join("libhawser_capi.a"),
+        &cc::static_library("hawser_capi"),
         &exe,
     );
     let out = Command::new(&exe)

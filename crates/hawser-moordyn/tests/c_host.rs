@@ -18,16 +18,11 @@ use hawser_io::moordyn::ConvertOptions;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
+#[path = "../../../tests/c/cc.rs"]
+mod cc;
+
 fn root() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
-}
-
-fn profile_dir() -> PathBuf {
-    let exe = std::env::current_exe().expect("test path");
-    exe.parent()
-        .and_then(Path::parent)
-        .expect("profile dir")
-        .to_path_buf()
 }
 
 #[test]
@@ -35,24 +30,12 @@ fn moordyn_host_through_the_layer_equals_hawsers_own_run() {
     let deck = root().join("tests/data/moordyn/oc3_lines.txt");
     let tmp = Path::new(env!("CARGO_TARGET_TMPDIR"));
     let exe = tmp.join("moordyn_host");
-    let status = Command::new(std::env::var("CC").unwrap_or_else(|_| "cc".into()))
-        .args([
-            "-std=c99",
-            "-D_DEFAULT_SOURCE",
-            "-Wall",
-            "-Werror",
-            "-O1",
-            "-o",
-        ])
-        .arg(&exe)
-        .arg(root().join("tests/c/moordyn_host.c"))
-        .arg("-I")
-        .arg(Path::new(env!("CARGO_MANIFEST_DIR")).join("include"))
-        .arg(profile_dir().join("libmoordyn.a"))
-        .args(["-lpthread", "-ldl", "-lm"])
-        .status()
-        .expect("run cc");
-    assert!(status.success(), "cc failed");
+    cc::compile(
+        &root().join("tests/c/moordyn_host.c"),
+        &Path::new(env!("CARGO_MANIFEST_DIR")).join("include"),
+        &cc::static_library("moordyn"),
+        &exe,
+    );
     let (duration, dtc, every) = (20.0, 0.01, 10);
     let state = tmp.join("moordyn_host.state");
     let out = Command::new(&exe)
