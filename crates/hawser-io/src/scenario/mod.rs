@@ -5,7 +5,7 @@ pub mod diagnostics;
 pub mod schema;
 pub mod tables;
 
-pub use build::{InputFormat, LoadedScenario};
+pub use build::{InputFormat, LoadedScenario, OutputFormats};
 pub use diagnostics::{Diagnostic, ScenarioError};
 
 use std::path::Path;

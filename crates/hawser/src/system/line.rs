@@ -48,6 +48,17 @@ impl SystemLine {
         if self.dg.is_some() { 2 } else { self.vectors() }
     }
 
+    /// Whether the line's evaluation gives curvature and bending moment
+    /// ([`crate::formulation::ElementState`]): `hermite` lines always, `dg` lines with
+    /// bending stiffness or damping in some section; `fe` lines never (they leave zeros).
+    pub fn has_bending_outputs(&self) -> bool {
+        match self.kind {
+            LineKind::Fe { .. } => false,
+            LineKind::Hermite(_) => true,
+            LineKind::Dg => self.dg.as_ref().is_some_and(|d| d.bending),
+        }
+    }
+
     /// Index of node i's position among the line's vectors (`LineWork::position`).
     #[inline]
     pub fn node_vector(&self, node: usize) -> usize {
