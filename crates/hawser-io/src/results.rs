@@ -13,7 +13,7 @@ mod csv;
 mod parquet;
 mod vtk;
 
-pub use csv::{RowWriter, SampleTimes, Table, TableReader, push_number, read_table};
+pub use csv::{RowSink, RowWriter, SampleTimes, Table, TableReader, push_number, read_table};
 #[cfg(feature = "parquet")]
 pub use parquet::write_parquet;
 pub use vtk::{PVD_FILE, VTK_DIR, VtkWriter};
@@ -67,6 +67,8 @@ pub struct RunWriter {
     next_snapshot: Real,
     last_time: Real,
     samples: u64,
+    /// The channel values of the sample being written.
+    row: Vec<Real>,
 }
 
 /// Writes `value` to `path` atomically: into a temporary file beside it, then renamed over
@@ -280,6 +282,7 @@ impl RunWriter {
             next_snapshot: 0.0,
             last_time: 0.0,
             samples: 0,
+            row: vec![0.0; outputs.len()],
         })
     }
 
@@ -400,13 +403,18 @@ impl RunWriter {
         let (system, ws) = (view.system, view.workspace);
         let ts = &mut self.timeseries;
         ts.number(time);
-        for (c, s) in self.channels.iter().zip(self.stats.iter_mut()) {
-            let v = view.value(c);
-            s.push(v);
-            ts.number(v);
+        for (c, v) in self.channels.iter().zip(self.row.iter_mut()) {
+            *v = view.value(c);
+            ts.number(*v);
         }
         ts.end_row();
         ts.commit()?;
+        // The summary covers the rows written.
+        for (v, s) in self.row.iter().zip(self.stats.iter_mut()) {
+            s.push(*v);
+        }
+        self.last_time = time;
+        self.samples += 1;
         for li in 0..system.lines.len() {
             let lw = &ws.lines[li];
             // The current mesh: a line on a winch changes its unstretched length.
@@ -568,8 +576,6 @@ impl RunWriter {
 impl Observer for RunWriter {
     fn sample(&mut self, view: &View<'_>) -> Result<(), ObserverError> {
         let time = self.times.time(view.sample, view.time);
-        self.last_time = time;
-        self.samples += 1;
         // The error names the file.
         Ok(self.write_sample(view, time)?)
     }

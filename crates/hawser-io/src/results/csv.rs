@@ -91,11 +91,25 @@ fn decimal_of(x: Real) -> Option<(u64, i32)> {
     Some((digits, exponent - fraction.len() as i32))
 }
 
+/// Where a [`RowWriter`] writes: a file, which can be cut back to a length.
+pub trait RowSink: Write {
+    /// Cuts the output back to its first `len` bytes and goes on writing there.
+    fn cut_back(&mut self, len: u64) -> std::io::Result<()>;
+}
+
+impl RowSink for File {
+    fn cut_back(&mut self, len: u64) -> std::io::Result<()> {
+        self.set_len(len)?;
+        self.seek(SeekFrom::Start(len)).map(|_| ())
+    }
+}
+
 /// A CSV file written by rows: each row is formatted whole in memory and handed to the file in
 /// one write call, newline last, on [`RowWriter::commit`]. A process killed between two rows
 /// (even by SIGKILL) leaves whole rows only; killed inside the write call, it leaves a last
-/// line without its newline, which [`TableReader`] drops. Every error names the file.
-pub struct RowWriter<W: Write = File> {
+/// line without its newline, which [`TableReader`] drops. A write that fails part way (a full
+/// disk, a file-size limit) is cut back to the last whole row. Every error names the file.
+pub struct RowWriter<W: RowSink = File> {
     path: PathBuf,
     out: W,
     buf: String,
@@ -145,7 +159,7 @@ impl RowWriter<File> {
     }
 }
 
-impl<W: Write> RowWriter<W> {
+impl<W: RowSink> RowWriter<W> {
     /// A writer on `out`, which already holds `len` bytes of `path`.
     pub fn new(path: &Path, out: W, len: u64) -> Self {
         Self {
@@ -186,13 +200,19 @@ impl<W: Write> RowWriter<W> {
         self.buf.push('\n');
     }
 
-    /// Hands the rows ended since the last commit to the file in one write call.
+    /// Hands the rows ended since the last commit to the file in one write call. When that
+    /// fails, the part of them that was written is cut off again (cutting back takes no
+    /// space), so the file ends with its last whole row.
     pub fn commit(&mut self) -> std::io::Result<()> {
         debug_assert!(self.buf.is_empty() || self.buf.ends_with('\n'));
-        self.out
+        if let Err(e) = self
+            .out
             .write_all(self.buf.as_bytes())
             .and_then(|()| self.out.flush())
-            .map_err(|e| cannot("write", &self.path, e))?;
+        {
+            let _ = self.out.cut_back(self.len);
+            return Err(cannot("write", &self.path, e));
+        }
         self.len += self.buf.len() as u64;
         self.buf.clear();
         Ok(())
@@ -451,6 +471,68 @@ mod tests {
         fn flush(&mut self) -> std::io::Result<()> {
             Ok(())
         }
+    }
+
+    impl RowSink for Calls {
+        fn cut_back(&mut self, _: u64) -> std::io::Result<()> {
+            unreachable!("no write fails")
+        }
+    }
+
+    /// A sink that takes `room` bytes and then fails, as a full disk does, after taking part
+    /// of the write that overflows it.
+    struct Full {
+        bytes: Vec<u8>,
+        room: usize,
+    }
+
+    impl Write for Full {
+        fn write(&mut self, b: &[u8]) -> std::io::Result<usize> {
+            let n = b.len().min(self.room - self.bytes.len());
+            if n == 0 {
+                return Err(std::io::Error::from_raw_os_error(28));
+            }
+            self.bytes.extend_from_slice(&b[..n]);
+            Ok(n)
+        }
+        fn flush(&mut self) -> std::io::Result<()> {
+            Ok(())
+        }
+    }
+
+    impl RowSink for Full {
+        fn cut_back(&mut self, len: u64) -> std::io::Result<()> {
+            self.bytes.truncate(len as usize);
+            Ok(())
+        }
+    }
+
+    #[test]
+    fn a_write_that_fails_part_way_leaves_whole_rows() {
+        let mut w = RowWriter::new(
+            Path::new("out/t.csv"),
+            Full {
+                bytes: Vec::new(),
+                room: 30,
+            },
+            0,
+        );
+        let mut failed = None;
+        for row in 0..10 {
+            w.number(row as f64);
+            w.number(1.0 / 3.0);
+            w.end_row();
+            if let Err(e) = w.commit() {
+                failed = Some((row, e.to_string()));
+                break;
+            }
+        }
+        // "0.0,0.3333333333333333\n" is 23 bytes: the second row does not fit.
+        let (row, e) = failed.expect("the sink is full");
+        assert_eq!(row, 1);
+        assert!(e.starts_with("cannot write out/t.csv: "), "{e}");
+        assert_eq!(w.out.bytes, b"0.0,0.3333333333333333\n");
+        assert_eq!(w.len(), 23);
     }
 
     #[test]

@@ -32,6 +32,19 @@ pub fn write_parquet(
     units: &[&str],
     metadata: &[(String, String)],
 ) -> std::io::Result<()> {
+    let columns = TableReader::open(csv)?.names().len();
+    let rows_per_group = (ROW_GROUP_VALUES / columns.max(1)).max(1024);
+    write_in_groups(csv, parquet, units, metadata, rows_per_group)
+}
+
+/// [`write_parquet`] with `rows_per_group` rows in each row group.
+fn write_in_groups(
+    csv: &Path,
+    parquet: &Path,
+    units: &[&str],
+    metadata: &[(String, String)],
+    rows_per_group: usize,
+) -> std::io::Result<()> {
     let mut table = TableReader::open(csv)?;
     let names = table.names().to_vec();
     if names.len() != units.len() {
@@ -59,7 +72,6 @@ pub fn write_parquet(
         fields,
         metadata.iter().cloned().collect(),
     ));
-    let rows_per_group = (ROW_GROUP_VALUES / names.len().max(1)).max(1024);
     let properties = WriterProperties::builder()
         .set_compression(Compression::SNAPPY)
         .set_dictionary_enabled(false)
@@ -111,4 +123,72 @@ pub fn write_parquet(
     }
     writer.close().map_err(failed)?;
     std::fs::rename(&tmp, parquet).map_err(|e| cannot("write", parquet, e))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use arrow_array::Array;
+    use parquet::arrow::arrow_reader::ParquetRecordBatchReaderBuilder;
+
+    #[test]
+    fn the_parquet_file_holds_the_csv_values_bit_for_bit_with_units() {
+        let dir = std::env::temp_dir().join(format!("hawser_parquet_{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let csv = dir.join("t.csv");
+        // 5000 rows in row groups of 1000, a torn last line dropped.
+        let values = |i: usize| {
+            [
+                i as f64 * 0.1,
+                (i as f64).sin() * 1e-17,
+                1e5 / (1.0 + i as f64),
+            ]
+        };
+        let mut text = String::from("time,a.x,b.tension\n");
+        for i in 0..5000 {
+            let v = values(i);
+            text += &format!("{:?},{:?},{:?}\n", v[0], v[1], v[2]);
+        }
+        text += "500.1,0.";
+        std::fs::write(&csv, text).unwrap();
+        let pq = dir.join("t.parquet");
+        let meta = [("hawser.model_hash".to_string(), "00ff".to_string())];
+        write_in_groups(&csv, &pq, &["s", "m", "N"], &meta, 1000).unwrap();
+        assert!(!dir.join("t.parquet.tmp").exists());
+        let reader =
+            ParquetRecordBatchReaderBuilder::try_new(std::fs::File::open(&pq).unwrap()).unwrap();
+        let schema = reader.schema().clone();
+        assert_eq!(schema.metadata()["hawser.model_hash"], "00ff");
+        assert_eq!(schema.field(2).name(), "b.tension");
+        assert_eq!(schema.field(2).metadata()["unit"], "N");
+        assert_eq!(reader.metadata().num_row_groups(), 5);
+        let kv = reader
+            .metadata()
+            .file_metadata()
+            .key_value_metadata()
+            .unwrap();
+        assert!(kv.iter().any(|k| k.key == "hawser.model_hash"));
+        let mut row = 0;
+        for batch in reader.build().unwrap() {
+            let batch = batch.unwrap();
+            for r in 0..batch.num_rows() {
+                for (c, want) in values(row).iter().enumerate() {
+                    let col = batch
+                        .column(c)
+                        .as_any()
+                        .downcast_ref::<Float64Array>()
+                        .unwrap();
+                    assert!(!col.is_null(r));
+                    assert_eq!(
+                        col.value(r).to_bits(),
+                        want.to_bits(),
+                        "row {row} column {c}"
+                    );
+                }
+                row += 1;
+            }
+        }
+        assert_eq!(row, 5000);
+        let _ = std::fs::remove_dir_all(&dir);
+    }
 }

@@ -475,10 +475,16 @@ impl VtkWriter {
         let mut tail = std::mem::take(&mut self.entries);
         let added = tail.len() as u64;
         tail.push_str(PVD_TAIL);
-        self.pvd
+        let written = self
+            .pvd
             .seek(SeekFrom::Start(self.pvd_len))
-            .and_then(|_| self.pvd.write_all(tail.as_bytes()))
-            .map_err(|e| cannot("write", &path, e))?;
+            .and_then(|_| self.pvd.write_all(tail.as_bytes()));
+        if let Err(e) = written {
+            // Back to the entries before this snapshot, closed again (best effort).
+            let _ = self.pvd.set_len(self.pvd_len);
+            let _ = self.pvd.write_all(PVD_TAIL.as_bytes());
+            return Err(cannot("write", &path, e));
+        }
         self.pvd_len += added;
         self.snapshots += 1;
         tail.clear();
@@ -524,4 +530,72 @@ fn xml_escaped(s: &str) -> String {
         }
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Volume enclosed by a shape's polygons (fan-triangulated), by the divergence theorem:
+    /// positive when every polygon's normal points outward.
+    fn signed_volume(s: &Shape) -> Real {
+        s.polys
+            .iter()
+            .flat_map(|p| (1..p.len() - 1).map(move |k| [p[0], p[k], p[k + 1]]))
+            .map(|[a, b, c]| {
+                let (a, b, c) = (s.vertices[a], s.vertices[b], s.vertices[c]);
+                a.dot(&b.cross(&c)) / 6.0
+            })
+            .sum()
+    }
+
+    #[test]
+    fn body_shapes_are_closed_with_outward_normals_and_their_volume() {
+        let centre = Vec3::new(0.3, -0.2, 0.5);
+        let boxed = Shape::of_body(
+            &Displacement::Box {
+                length: 4.0,
+                breadth: 2.0,
+                height: 1.5,
+            },
+            centre,
+            1.0,
+        );
+        // Exact for a box; the centroid of its vertices is its centre.
+        assert!((signed_volume(&boxed) - 12.0).abs() < 1e-12);
+        let mean = boxed.vertices.iter().sum::<Vec3>() / 8.0;
+        assert!((mean - centre).norm() < 1e-15);
+        // A cylinder is drawn as a 24-sided prism: its volume is the prism's,
+        // 24/2 sin(2π/24) r² h, 1.1 % below π r² h.
+        let cylinder = Shape::of_body(
+            &Displacement::Cylinder {
+                radius: 0.5,
+                height: 2.0,
+            },
+            centre,
+            1.0,
+        );
+        let prism = 12.0 * (2.0 * std::f64::consts::PI / 24.0).sin() * 0.25 * 2.0;
+        assert!((signed_volume(&cylinder) - prism).abs() < 1e-12);
+        // A body with only a volume is a sphere of that volume: the inscribed polyhedron
+        // (12 × 24 faces) encloses a little less, within 3 %.
+        let v = 2.0;
+        let sphere = Shape::of_body(&Displacement::Submerged { volume: v }, centre, 1.0);
+        let enclosed = signed_volume(&sphere);
+        assert!(enclosed < v && enclosed > 0.97 * v, "{enclosed}");
+        let r = (3.0 * v / (4.0 * std::f64::consts::PI)).cbrt();
+        for p in &sphere.vertices {
+            assert!(((p - centre).norm() - r).abs() < 1e-12);
+        }
+        // Without a shape: the axes, `glyph` long, from the origin (not the centre).
+        let axes = Shape::of_body(&Displacement::None, centre, 2.5);
+        assert!(axes.polys.is_empty() && axes.lines.len() == 3);
+        assert_eq!(axes.vertices[0], Vec3::zeros());
+        assert_eq!(axes.vertices[3], Vec3::new(0.0, 0.0, 2.5));
+    }
+
+    #[test]
+    fn names_are_escaped_in_the_collection() {
+        assert_eq!(xml_escaped("a<b>&\"c'"), "a&lt;b&gt;&amp;&quot;c&apos;");
+    }
 }
