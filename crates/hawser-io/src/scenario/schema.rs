@@ -81,7 +81,8 @@ pub enum SchemeSpec {
 #[derive(Clone, Copy, Debug, Deserialize, Serialize, JsonSchema, PartialEq, Eq)]
 #[serde(rename_all = "kebab-case")]
 pub enum FormatSpec {
-    /// `timeseries.parquet`: the time series for pandas, polars and pyarrow.
+    /// `timeseries.parquet` beside `timeseries.csv` (always written): the time series for
+    /// pandas, polars and pyarrow.
     Parquet,
     /// `vtk/run.pvd` and its `.vtp` files: lines, bodies and points at every snapshot, for
     /// ParaView (with `snapshot_interval`).
