@@ -406,6 +406,10 @@ fn drive(
         // A finished or diverged run cannot be resumed.
         let _ = std::fs::remove_file(out.join("checkpoint.bin"));
     }
+    // Time of the last row written (a sample whose row could not be written is not counted).
+    let written = session
+        .observer::<RunWriter>(writer)
+        .map_or(session.last_sample_time(), RunWriter::last_time);
     if let Err(failed) = finished {
         // The files could not all be written: say so after what stopped the run, if
         // something did (a write failure stops the run, and the end files then fail too).
@@ -416,7 +420,7 @@ fn drive(
             "error: {failed}\n  = the results in {} are incomplete (results up to t = {:.6} s; \
              status.json may not say so if it could not be written either)",
             out.display(),
-            session.last_sample_time(),
+            written,
         );
         return Ok(ExitCode::from(1));
     }
@@ -437,7 +441,7 @@ fn drive(
             eprintln!(
                 "{e}: results up to t = {:.6} s are in {} (marked interrupted), with a \
                  checkpoint; continue with `hawser resume {}`",
-                session.last_sample_time(),
+                written,
                 out.display(),
                 out.display()
             );
@@ -446,7 +450,7 @@ fn drive(
         Err(e) => {
             eprintln!(
                 "error: {e}\n  = results up to t = {:.6} s are in {} (marked incomplete)",
-                session.last_sample_time(),
+                written,
                 out.display()
             );
             Ok(ExitCode::from(1))

@@ -187,6 +187,17 @@ fn write_status(
     write_json(&dir.join("status.json"), &v)
 }
 
+/// Refuses formats this build cannot write (Parquet without the `parquet` feature).
+fn check_formats(formats: &OutputFormats) -> std::io::Result<()> {
+    if formats.parquet && !cfg!(feature = "parquet") {
+        return Err(std::io::Error::new(
+            std::io::ErrorKind::Unsupported,
+            "this hawser was built without Parquet (cargo feature `parquet`)",
+        ));
+    }
+    Ok(())
+}
+
 /// The path of line `line`'s snapshot file in `dir`.
 fn snapshot_path(dir: &Path, system: &System, line: usize) -> PathBuf {
     dir.join("snapshots")
@@ -206,6 +217,7 @@ impl RunWriter {
         scenario: &Path,
         formats: &OutputFormats,
     ) -> std::io::Result<Self> {
+        check_formats(formats)?;
         std::fs::create_dir_all(dir).map_err(|e| cannot("create", dir, e))?;
         let system = session.system();
         let hash = hawser::session::model_hash(session.model());
@@ -258,13 +270,6 @@ impl RunWriter {
         let system = session.system();
         let outputs = session.channels();
         let settings = &session.model().settings;
-        #[cfg(not(feature = "parquet"))]
-        if formats.parquet {
-            return Err(std::io::Error::new(
-                std::io::ErrorKind::Unsupported,
-                "this hawser was built without Parquet (cargo feature `parquet`)",
-            ));
-        }
         Ok(Self {
             dir: dir.to_path_buf(),
             stats: vec![RunningStats::default(); outputs.len()],
@@ -332,6 +337,7 @@ impl RunWriter {
                 format!("{}: the saved writer state {what}", dir.display()),
             )
         };
+        check_formats(formats)?;
         let truncated = |_| bad("is truncated");
         let mut d = hawser::session::Decoder::new(progress);
         let version = d.u64().map_err(truncated)?;
@@ -455,12 +461,13 @@ impl RunWriter {
         if !self.parquet {
             return Ok(());
         }
-        let units: Vec<&str> = std::iter::once("s")
-            .chain(self.channels.iter().map(|c| c.unit()))
-            .collect();
-        let unit_map: serde_json::Map<String, Value> = std::iter::once("time")
-            .chain(self.names.iter().map(String::as_str))
-            .zip(&units)
+        let unit_map: serde_json::Map<String, Value> = std::iter::once(("time", "s"))
+            .chain(
+                self.names
+                    .iter()
+                    .map(String::as_str)
+                    .zip(self.channels.iter().map(|c| c.unit())),
+            )
             .map(|(n, u)| (n.to_string(), json!(u)))
             .collect();
         let metadata = [
@@ -473,7 +480,6 @@ impl RunWriter {
         write_parquet(
             &self.dir.join("timeseries.csv"),
             &self.dir.join("timeseries.parquet"),
-            &units,
             &metadata,
         )
     }

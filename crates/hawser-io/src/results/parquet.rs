@@ -2,21 +2,23 @@
 //! pyarrow. Made from `timeseries.csv` when the run ends (finished, stopped or interrupted), so
 //! that the two hold the same values bit for bit (the CSV's numbers round-trip exactly) and a
 //! resumed run writes the same file as an uninterrupted one; the CSV is the journal a run
-//! appends to and a checkpoint cuts back. Columns are `time` and the channel names, all f64;
-//! each field's Arrow metadata and the file's key-value metadata give the units.
+//! appends to and a checkpoint cuts back. Columns are `time` and the channel names, all
+//! required doubles; the file's key-value metadata gives the units (pyarrow shows it as the
+//! schema's metadata).
 //!
-//! Built with `parquet` (features `arrow`, `snap`), `arrow-array` and `arrow-schema` behind
-//! this crate's `parquet` feature; never the `arrow` umbrella crate, whose build takes minutes.
+//! Built with the `parquet` crate alone (features `snap`; its column writer, without Arrow)
+//! behind this crate's `parquet` feature: the Arrow crates would add minutes to a clean build
+//! for nothing a table of f64 needs (docs/outputs.md has the numbers).
 
 use super::csv::{TableReader, cannot};
-use arrow_array::{ArrayRef, Float64Array, RecordBatch};
-use arrow_schema::{DataType, Field, Schema};
-use parquet::arrow::ArrowWriter;
-use parquet::basic::Compression;
+use parquet::basic::{Compression, Repetition, Type as PhysicalType};
+use parquet::data_type::DoubleType;
+use parquet::errors::ParquetError;
 use parquet::file::metadata::KeyValue;
 use parquet::file::properties::WriterProperties;
-use std::collections::HashMap;
-use std::path::Path;
+use parquet::file::writer::SerializedFileWriter;
+use parquet::schema::types::Type;
+use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 /// Values per row group (rows × columns), which bounds the memory the conversion takes
@@ -24,72 +26,32 @@ use std::sync::Arc;
 const ROW_GROUP_VALUES: usize = 1 << 22;
 
 /// Writes `parquet` (atomically: a temporary file renamed) from the hawser CSV table `csv`:
-/// one f64 column per CSV column, with `units[i]` as column i's `unit` field metadata, and
-/// `metadata` as the file's key-value metadata and the Arrow schema's metadata.
+/// one required double column per CSV column, and `metadata` as the file's key-value
+/// metadata.
 pub fn write_parquet(
     csv: &Path,
     parquet: &Path,
-    units: &[&str],
     metadata: &[(String, String)],
 ) -> std::io::Result<()> {
     let columns = TableReader::open(csv)?.names().len();
     let rows_per_group = (ROW_GROUP_VALUES / columns.max(1)).max(1024);
-    write_in_groups(csv, parquet, units, metadata, rows_per_group)
+    write_in_groups(csv, parquet, metadata, rows_per_group)
 }
 
 /// [`write_parquet`] with `rows_per_group` rows in each row group.
 fn write_in_groups(
     csv: &Path,
     parquet: &Path,
-    units: &[&str],
     metadata: &[(String, String)],
     rows_per_group: usize,
 ) -> std::io::Result<()> {
     let mut table = TableReader::open(csv)?;
-    let names = table.names().to_vec();
-    if names.len() != units.len() {
-        return Err(std::io::Error::new(
-            std::io::ErrorKind::InvalidData,
-            format!(
-                "{} has {} columns, expected {}",
-                csv.display(),
-                names.len(),
-                units.len()
-            ),
-        ));
-    }
-    let fields: Vec<Field> = names
-        .iter()
-        .zip(units)
-        .map(|(n, u)| {
-            Field::new(n, DataType::Float64, false)
-                .with_metadata(HashMap::from([("unit".to_string(), u.to_string())]))
-        })
-        .collect();
-    // In the Arrow schema (what pyarrow's `schema.metadata` shows) and in the file's
-    // key-value metadata (what every Parquet reader sees).
-    let schema = Arc::new(Schema::new_with_metadata(
-        fields,
-        metadata.iter().cloned().collect(),
-    ));
-    let properties = WriterProperties::builder()
-        .set_compression(Compression::SNAPPY)
-        .set_dictionary_enabled(false)
-        .set_max_row_group_row_count(Some(rows_per_group))
-        .set_key_value_metadata(Some(
-            metadata
-                .iter()
-                .map(|(k, v)| KeyValue::new(k.clone(), v.clone()))
-                .collect(),
-        ))
-        .build();
     let mut tmp = parquet.as_os_str().to_owned();
     tmp.push(".tmp");
-    let tmp = std::path::PathBuf::from(tmp);
-    let file = std::fs::File::create(&tmp).map_err(|e| cannot("create", &tmp, e))?;
-    let failed = |e: parquet::errors::ParquetError| {
+    let tmp = PathBuf::from(tmp);
+    let failed = |e: ParquetError| {
         let e = match e {
-            parquet::errors::ParquetError::External(e) => match e.downcast::<std::io::Error>() {
+            ParquetError::External(e) => match e.downcast::<std::io::Error>() {
                 Ok(io) => *io,
                 Err(e) => std::io::Error::other(e),
             },
@@ -97,9 +59,35 @@ fn write_in_groups(
         };
         cannot("write", &tmp, e)
     };
+    let fields = table
+        .names()
+        .iter()
+        .map(|n| {
+            Type::primitive_type_builder(n, PhysicalType::DOUBLE)
+                .with_repetition(Repetition::REQUIRED)
+                .build()
+                .map(Arc::new)
+        })
+        .collect::<Result<Vec<_>, _>>()
+        .map_err(failed)?;
+    let schema = Type::group_type_builder("schema")
+        .with_fields(fields)
+        .build()
+        .map_err(failed)?;
+    let properties = WriterProperties::builder()
+        .set_compression(Compression::SNAPPY)
+        .set_dictionary_enabled(false)
+        .set_key_value_metadata(Some(
+            metadata
+                .iter()
+                .map(|(k, v)| KeyValue::new(k.clone(), v.clone()))
+                .collect(),
+        ))
+        .build();
+    let file = std::fs::File::create(&tmp).map_err(|e| cannot("create", &tmp, e))?;
     let mut writer =
-        ArrowWriter::try_new(file, schema.clone(), Some(properties)).map_err(failed)?;
-    let mut columns: Vec<Vec<f64>> = vec![Vec::with_capacity(rows_per_group); names.len()];
+        SerializedFileWriter::new(file, Arc::new(schema), Arc::new(properties)).map_err(failed)?;
+    let mut columns: Vec<Vec<f64>> = vec![Vec::with_capacity(rows_per_group); table.names().len()];
     loop {
         let row = table.next_row()?;
         let end = row.is_none();
@@ -109,13 +97,18 @@ fn write_in_groups(
             }
         }
         if columns[0].len() == rows_per_group || (end && !columns[0].is_empty()) {
-            let arrays: Vec<ArrayRef> = columns
-                .iter_mut()
-                .map(|c| Arc::new(Float64Array::from(std::mem::take(c))) as ArrayRef)
-                .collect();
-            let batch = RecordBatch::try_new(schema.clone(), arrays)
-                .map_err(|e| cannot("write", &tmp, std::io::Error::other(e)))?;
-            writer.write(&batch).map_err(failed)?;
+            let mut group = writer.next_row_group().map_err(failed)?;
+            let mut values = columns.iter_mut();
+            while let Some(mut column) = group.next_column().map_err(failed)? {
+                let v = values.next().expect("one column per field");
+                column
+                    .typed::<DoubleType>()
+                    .write_batch(v, None, None)
+                    .map_err(failed)?;
+                column.close().map_err(failed)?;
+                v.clear();
+            }
+            group.close().map_err(failed)?;
         }
         if end {
             break;
@@ -128,11 +121,10 @@ fn write_in_groups(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use arrow_array::Array;
-    use parquet::arrow::arrow_reader::ParquetRecordBatchReaderBuilder;
+    use parquet::file::reader::{FileReader, SerializedFileReader};
 
     #[test]
-    fn the_parquet_file_holds_the_csv_values_bit_for_bit_with_units() {
+    fn the_parquet_file_holds_the_csv_values_bit_for_bit_with_its_metadata() {
         let dir = std::env::temp_dir().join(format!("hawser_parquet_{}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();
         let csv = dir.join("t.csv");
@@ -153,40 +145,26 @@ mod tests {
         std::fs::write(&csv, text).unwrap();
         let pq = dir.join("t.parquet");
         let meta = [("hawser.model_hash".to_string(), "00ff".to_string())];
-        write_in_groups(&csv, &pq, &["s", "m", "N"], &meta, 1000).unwrap();
+        write_in_groups(&csv, &pq, &meta, 1000).unwrap();
         assert!(!dir.join("t.parquet.tmp").exists());
-        let reader =
-            ParquetRecordBatchReaderBuilder::try_new(std::fs::File::open(&pq).unwrap()).unwrap();
-        let schema = reader.schema().clone();
-        assert_eq!(schema.metadata()["hawser.model_hash"], "00ff");
-        assert_eq!(schema.field(2).name(), "b.tension");
-        assert_eq!(schema.field(2).metadata()["unit"], "N");
+        let reader = SerializedFileReader::new(std::fs::File::open(&pq).unwrap()).unwrap();
+        let file = reader.metadata().file_metadata();
+        let kv = file.key_value_metadata().unwrap();
+        assert!(
+            kv.iter()
+                .any(|k| k.key == "hawser.model_hash" && k.value.as_deref() == Some("00ff"))
+        );
+        let fields = file.schema().get_fields();
+        assert_eq!(fields[1].name(), "a.x");
         assert_eq!(reader.metadata().num_row_groups(), 5);
-        let kv = reader
-            .metadata()
-            .file_metadata()
-            .key_value_metadata()
-            .unwrap();
-        assert!(kv.iter().any(|k| k.key == "hawser.model_hash"));
         let mut row = 0;
-        for batch in reader.build().unwrap() {
-            let batch = batch.unwrap();
-            for r in 0..batch.num_rows() {
-                for (c, want) in values(row).iter().enumerate() {
-                    let col = batch
-                        .column(c)
-                        .as_any()
-                        .downcast_ref::<Float64Array>()
-                        .unwrap();
-                    assert!(!col.is_null(r));
-                    assert_eq!(
-                        col.value(r).to_bits(),
-                        want.to_bits(),
-                        "row {row} column {c}"
-                    );
-                }
-                row += 1;
+        for r in reader.get_row_iter(None).unwrap() {
+            let r = r.unwrap();
+            for (c, want) in values(row).iter().enumerate() {
+                let got = parquet::record::RowAccessor::get_double(&r, c).unwrap();
+                assert_eq!(got.to_bits(), want.to_bits(), "row {row} column {c}");
             }
+            row += 1;
         }
         assert_eq!(row, 5000);
         let _ = std::fs::remove_dir_all(&dir);
