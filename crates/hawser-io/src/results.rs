@@ -430,7 +430,10 @@ fn line_json(view: &View<'_>, li: usize, velocities: bool) -> Value {
         "end_a": end(false),
         "end_b": end(true),
     });
-    if matches!(line.kind, hawser::formulation::LineKind::Hermite(_)) {
+    if matches!(
+        line.discretisation,
+        hawser::formulation::Discretisation::Hermite(_)
+    ) {
         let n = line.mesh.elements();
         v["tangents"] = json!(
             (0..=n)
