@@ -184,14 +184,16 @@ impl Session {
     }
 
     /// Places the coupled objects at `x` (default: their input positions), solves the static
-    /// equilibrium there and sets their velocities `xd` (default: at rest). Like MoorDyn's
-    /// `MoorDyn_Init`.
-    #[pyo3(signature = (x = None, xd = None))]
+    /// equilibrium there and sets their velocities `xd` (default: at rest) and, for hosts
+    /// that give accelerations at every step (the quintic interpolant), the accelerations
+    /// `xdd` at t = 0. Like MoorDyn's `MoorDyn_Init`.
+    #[pyo3(signature = (x = None, xd = None, xdd = None))]
     fn init(
         &mut self,
         py: Python<'_>,
         x: Option<PyReadonlyArray1<'_, f64>>,
         xd: Option<PyReadonlyArray1<'_, f64>>,
+        xdd: Option<PyReadonlyArray1<'_, f64>>,
     ) -> PyResult<()> {
         let x = match &x {
             Some(a) => slice(a, "x")?.to_vec(),
@@ -201,9 +203,26 @@ impl Session {
             Some(a) => slice(a, "xd")?.to_vec(),
             None => vec![0.0; self.dof_names.len()],
         };
+        let xdd = match &xdd {
+            Some(a) => Some(slice(a, "xdd")?),
+            None => None,
+        };
         let host = self.host();
-        py.detach(|| host.init(&x, &xd))
-            .map_err(|e| host_error(py, e))?;
+        py.detach(|| {
+            host.init(&x, &xd)?;
+            if let Some(a) = xdd {
+                // The initial kinematics again, with the accelerations.
+                let s = host.session()?;
+                s.set_coupled(0.0, &x, &xd, Some(a)).map_err(|e| {
+                    hawser_capi::host::HostError::new(
+                        hawser_capi::host::ErrorKind::Simulation,
+                        e.to_string(),
+                    )
+                })?;
+            }
+            Ok(())
+        })
+        .map_err(|e| host_error(py, e))?;
         let stop = self.stop.clone();
         self.session(py)?.set_interrupt(stop);
         self.x0 = Some(x);
