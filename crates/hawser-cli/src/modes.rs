@@ -215,9 +215,10 @@ fn write_files(
             "mode,node,arc_length [m],x [m],y [m],z [m],ux [-],uy [-],uz [-]"
         )?;
         for (k, u) in shapes.line_displacements.iter().enumerate() {
-            for node in 0..l.nodes() {
+            let nodes = shapes.line_positions[li].iter().zip(&u[li]);
+            for (node, (r, d)) in nodes.enumerate() {
                 let at = format!("{},{node},{}", k + 1, l.mesh.arc_length(node));
-                shape_row(&mut w, &at, &shapes.line_positions[li][node], &u[li][node])?;
+                shape_row(&mut w, &at, r, d)?;
             }
         }
         w.flush()?;

@@ -65,7 +65,7 @@ impl ModalAnalysis {
     /// modes, the connection stiffness and the resonance report with `margin` (a fraction).
     /// The error is the message `hawser modes` prints.
     pub fn compute(system: &System, count: usize, margin: Real) -> Result<Self, String> {
-        if !(margin >= 0.0 && margin < 1.0) || count == 0 {
+        if !(0.0..1.0).contains(&margin) || count == 0 {
             return Err(format!(
                 "the resonance margin must be in [0, 100) % and the mode count at least 1 (got \
                  {} %, {count})",

@@ -173,6 +173,9 @@ pub struct Outcome {
     pub out: Option<PathBuf>,
 }
 
+/// What a job comes to.
+pub type RunResult = Result<Outcome, Failure>;
+
 /// Runs `job` to its end, or until `stop` is set.
 pub fn execute(
     job: &Job,
@@ -237,16 +240,16 @@ pub fn drive(
     jobs: &[Job],
     workers: usize,
     bar: Option<&Bound<'_, PyAny>>,
-) -> PyResult<(Vec<Option<Result<Outcome, Failure>>>, Option<PyErr>)> {
+) -> PyResult<(Vec<Option<RunResult>>, Option<PyErr>)> {
     let n = jobs.len();
     let next = AtomicUsize::new(0);
     let stop = Arc::new(AtomicBool::new(false));
     let progress: Vec<Arc<AtomicU64>> = (0..n).map(|_| Arc::new(AtomicU64::new(0))).collect();
-    let mut results: Vec<Option<Result<Outcome, Failure>>> = (0..n).map(|_| None).collect();
+    let mut results: Vec<Option<RunResult>> = (0..n).map(|_| None).collect();
     let mut signal: Option<PyErr> = None;
     let mut first_error: Option<PyErr> = None;
     std::thread::scope(|scope| {
-        let (tx, mut rx) = mpsc::channel::<(usize, Result<Outcome, Failure>)>();
+        let (tx, mut rx) = mpsc::channel::<(usize, RunResult)>();
         for _ in 0..workers.clamp(1, n.max(1)) {
             let (tx, next, stop, progress) = (tx.clone(), &next, &stop, &progress);
             scope.spawn(move || {

@@ -48,7 +48,8 @@ def fairlead_tensions(forces: np.ndarray) -> np.ndarray:
     return np.linalg.norm(forces.reshape(3, 3), axis=1)
 
 
-def test_coupled_stepping_equals_the_prescribed_run(scenarios):
+@pytest.mark.parametrize("accelerations", [True, False])
+def test_coupled_stepping_equals_the_prescribed_run(scenarios, accelerations):
     prescribed, coupled = scenarios
     ref = prescribed.run(duration=END, progress=False)
     s = hawser.Session(coupled)
@@ -56,20 +57,21 @@ def test_coupled_stepping_equals_the_prescribed_run(scenarios):
     assert s.dof_names[:3] == ["fairlead1.x", "fairlead1.y", "fairlead1.z"]
     # The surge starts at full velocity (no ramp): so do the coupled points.
     _, v0, a0 = surge(X0, 0.0)
-    s.init(X0, v0, a0)
+    s.init(X0, v0, a0 if accelerations else None)
     x0 = X0
     got = []
     for k in range(1, round(END / DT_C) + 1):
         x, v, a = surge(x0, k * DT_C)
-        f = s.step(s.time, DT_C, x, v, a)
+        f = s.step(s.time, DT_C, x, v, a if accelerations else None)
         got.append(fairlead_tensions(f))
     assert s.time == pytest.approx(END, abs=1e-12)
     got = np.array(got)
     want = np.column_stack([ref[f"L{k}.end_b.tension"][1:] for k in (1, 2, 3)])
     # With the accelerations the interpolant is quintic, exact for this motion but for
-    # round-off: the Rust test's tolerance, 1e-9 of the tension.
+    # round-off: the Rust test's tolerance, 1e-9 of the tension (measured 1.2e-12). Without
+    # them it is cubic, off by O(dt³) in velocity: the Rust test's 0.1 % (measured 2.3e-7).
     rel = np.max(np.abs(got - want)) / np.max(np.abs(want))
-    assert rel < 1e-9, rel
+    assert rel < (1e-9 if accelerations else 1e-3), rel
     # The forces are the lines' reactions at the fairleads, as read point by point.
     assert np.allclose(s.point_force("fairlead1"), s.forces()[:3], rtol=0, atol=0)
     assert s.line_positions("L1").shape == (21, 3)
