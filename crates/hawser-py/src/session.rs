@@ -43,6 +43,20 @@ pub struct Session {
     model: hawser::Model,
 }
 
+/// The index of `name` among `names` (of objects of `kind`), or a KeyError listing them.
+fn named<'a>(
+    kind: &str,
+    names: impl Iterator<Item = &'a str> + Clone,
+    name: &str,
+) -> PyResult<usize> {
+    names.clone().position(|n| n == name).ok_or_else(|| {
+        PyKeyError::new_err(format!(
+            "no {kind} named `{name}` ({kind}s: {})",
+            names.collect::<Vec<_>>().join(", ")
+        ))
+    })
+}
+
 fn slice<'a>(a: &'a PyReadonlyArray1<'_, f64>, what: &str) -> PyResult<&'a [f64]> {
     a.as_slice().map_err(|_| {
         pyo3::exceptions::PyValueError::new_err(format!("{what} must be a contiguous array"))
@@ -95,31 +109,19 @@ impl Session {
                 ))),
             };
         }
-        let name: String = line.extract()?;
-        lines.iter().position(|l| l.name == name).ok_or_else(|| {
-            PyKeyError::new_err(format!(
-                "no line named `{name}` (lines: {})",
-                lines
-                    .iter()
-                    .map(|l| l.name.as_str())
-                    .collect::<Vec<_>>()
-                    .join(", ")
-            ))
-        })
+        named(
+            "line",
+            lines.iter().map(|l| l.name.as_str()),
+            &line.extract::<String>()?,
+        )
     }
 
     fn point_index(&self, name: &str) -> PyResult<usize> {
-        let points = &self.model.points;
-        points.iter().position(|p| p.name == name).ok_or_else(|| {
-            PyKeyError::new_err(format!(
-                "no point named `{name}` (points: {})",
-                points
-                    .iter()
-                    .map(|p| p.name.as_str())
-                    .collect::<Vec<_>>()
-                    .join(", ")
-            ))
-        })
+        named(
+            "point",
+            self.model.points.iter().map(|p| p.name.as_str()),
+            name,
+        )
     }
 
     /// The positions of the coupled objects in the model: bodies' poses (angles in rad,

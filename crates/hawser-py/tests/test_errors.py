@@ -10,46 +10,23 @@ import pytest
 import hawser
 from conftest import EXAMPLES, run_cli
 
-BAD = """\
-[simulation]
-duration = 10.0
-
-[[line_types]]
-name = "chain"
-diameter = -0.1
-mass_per_length = 77.7
-axial_stiffness = 3.8e8
-normal_drag = 1.6
-tangential_drag = 0.3
-
-[[points]]
-name = "anchor"
-type = "fixed"
-position = [-400.0, 0.0, -100.0]
-
-[[points]]
-name = "fairlead"
-type = "fixed"
-position = [0.0, 0.0, -10.0]
-
-[[lines]]
-name = "L1"
-end_a = "anchor"
-end_b = "fairlead"
-type = "chain"
-length = 420.0
-elements = 20
-"""
+def bad_copy(tmp_path):
+    """The catenary example with a negative line diameter; the file and the line number."""
+    lines = (EXAMPLES / "catenary_mooring.toml").read_text().splitlines()
+    i = next(k for k, l in enumerate(lines) if l.startswith("diameter = "))
+    lines[i] = "diameter = -0.1"
+    f = tmp_path / "bad.toml"
+    f.write_text("\n".join(lines) + "\n")
+    return f, i + 1
 
 
 def test_a_bad_file_gives_the_cli_diagnostic(hawser_bin, tmp_path):
-    f = tmp_path / "bad.toml"
-    f.write_text(BAD)
+    f, line = bad_copy(tmp_path)
     with pytest.raises(hawser.ScenarioError) as info:
         hawser.load(f)
     e = info.value
     assert isinstance(e, ValueError)
-    assert (e.file, e.line, e.column) == (str(f), 6, 12)
+    assert (e.file, e.line, e.column) == (str(f), line, 12)
     assert e.key == "line_types[0].diameter"
     assert e.value == "-0.1"
     assert e.expected.startswith("m")

@@ -52,3 +52,25 @@ def test_ctrl_c_stops_a_run_and_keeps_its_results(tmp_path):
     assert len(rows) - 1 == len(res.time)
     summary = json.loads((tmp_path / "run" / "summary.json").read_text())
     assert summary["complete"] is False and summary["end_time"] == res.end_time
+
+
+def test_runs_release_the_gil():
+    """Another Python thread keeps running while a run computes (it would not get a single
+    bytecode in if the run held the GIL)."""
+    sc = hawser.load(EXAMPLES / "catenary_mooring.toml")
+    ticks, done = [0], threading.Event()
+
+    def count():
+        while not done.is_set():
+            ticks[0] += 1
+
+    t = threading.Thread(target=count)
+    t.start()
+    try:
+        before = ticks[0]
+        sc.run(duration=0.5, progress=False)
+        during = ticks[0] - before
+    finally:
+        done.set()
+        t.join()
+    assert during > 1000, during
