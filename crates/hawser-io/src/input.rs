@@ -52,7 +52,8 @@ pub fn scenario_text(
 /// An input with dotted-key overrides applied ([`crate::scenario::overrides`]): the scenario
 /// text (a deck's conversion for a deck), each override set in it, and the result validated
 /// under [`overridden_path`]`(path)`, whose diagnostics' lines and columns are those of the
-/// returned text. Returns that name, the text and the loaded scenario.
+/// returned text. Returns that name, the text and the loaded scenario, whose format stays a
+/// deck's for a deck (its `dtM` was chosen for MoorDyn, its coupled points are a host's).
 pub fn with_overrides(
     path: &Path,
     source: &str,
@@ -86,7 +87,10 @@ pub fn with_overrides(
             format!("the scenario with its overrides cannot be written as TOML: {e}"),
         ))
     })?;
-    let loaded = scenario::parse(&name, &text)?;
+    let mut loaded = scenario::parse(&name, &text)?;
+    if moordyn::looks_like_deck(source) {
+        loaded.format = scenario::InputFormat::MoorDyn;
+    }
     Ok((name, text, loaded))
 }
 

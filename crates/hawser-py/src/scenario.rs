@@ -7,6 +7,7 @@ use crate::runner::{self, Failure, Job, Outcome};
 use hawser::math::Real;
 use hawser::session::View;
 use hawser_io::moordyn::ConvertOptions;
+use hawser_io::scenario::overrides::Override;
 use hawser_io::scenario::{InputFormat, LoadedScenario};
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::exceptions::{PyFileExistsError, PyOSError, PyValueError};
@@ -22,28 +23,42 @@ use std::path::{Path, PathBuf};
 /// `hawser.ScenarioError`).
 #[pyclass(module = "hawser", frozen)]
 pub struct Scenario {
-    /// The path the input was read from, or the name it was validated under.
-    pub path: PathBuf,
+    /// The path the input was read from (or the name given to a text or a dict).
+    pub origin: PathBuf,
     /// The input's text (TOML or a MoorDyn deck).
     pub source: String,
     /// A deck's host choices (vessel motion, duration).
     pub deck: ConvertOptions,
+    /// The dotted-key overrides applied to the input, in order.
+    pub overrides: Vec<Override>,
+    /// The name the scenario was validated under (`origin`, or `origin (with overrides)`).
+    pub path: PathBuf,
+    /// The scenario text validated, when overrides made one (the input's text otherwise).
+    text: Option<String>,
     /// The validated scenario.
     pub loaded: LoadedScenario,
     notes: Vec<String>,
 }
 
 impl Scenario {
-    /// Reads and validates `source` as if read from `path`.
+    /// Reads and validates `source` as if read from `origin`, with `overrides` applied.
     pub fn parse(
         py: Python<'_>,
-        path: PathBuf,
+        origin: PathBuf,
         source: String,
         deck: ConvertOptions,
+        overrides: Vec<Override>,
     ) -> PyResult<Self> {
-        let (loaded, notes) = py
-            .detach(|| hawser_io::input::parse_input(&path, &source, &deck))
-            .map_err(|e| scenario_error(py, &e))?;
+        let parsed = py.detach(|| {
+            if overrides.is_empty() {
+                hawser_io::input::parse_input(&origin, &source, &deck)
+                    .map(|(loaded, notes)| (origin.clone(), None, loaded, notes))
+            } else {
+                hawser_io::input::with_overrides(&origin, &source, &deck, &overrides)
+                    .map(|(name, text, loaded)| (name, Some(text), loaded, Vec::new()))
+            }
+        });
+        let (path, text, loaded, notes) = parsed.map_err(|e| scenario_error(py, &e))?;
         let notes = notes
             .iter()
             .map(|n| match n.line {
@@ -52,12 +67,20 @@ impl Scenario {
             })
             .collect();
         Ok(Self {
-            path,
+            origin,
             source,
             deck,
+            overrides,
+            path,
+            text,
             loaded,
             notes,
         })
+    }
+
+    /// The validated text: the input's, or the scenario with its overrides.
+    fn validated_text(&self) -> &str {
+        self.text.as_deref().unwrap_or(&self.source)
     }
 
     /// The job of a run of this scenario.
@@ -79,14 +102,10 @@ impl Scenario {
         }
         Ok(Job {
             loaded,
-            source: self.source.clone(),
+            source: self.validated_text().to_string(),
             path: self.path.clone(),
             out,
         })
-    }
-
-    fn derived(&self, py: Python<'_>, path: PathBuf, source: String) -> PyResult<Self> {
-        Self::parse(py, path, source, self.deck.clone())
     }
 }
 
@@ -121,25 +140,57 @@ pub fn load(
     let source = py
         .detach(|| hawser_io::scenario::tables::read_text_file(&path))
         .map_err(|e| PyOSError::new_err(format!("cannot read {}: {e}", path.display())))?;
-    Scenario::parse(py, path, source, deck_options(vessel_motion, duration))
+    Scenario::parse(
+        py,
+        path,
+        source,
+        deck_options(vessel_motion, duration),
+        Vec::new(),
+    )
+}
+
+/// Overrides from a dict of dotted keys and values (`None`: remove the key).
+fn override_list(overrides: &Bound<'_, PyDict>) -> PyResult<Vec<Override>> {
+    let mut list = Vec::new();
+    for (k, v) in overrides.iter() {
+        let key: String = k.extract()?;
+        let value = match v.is_none() {
+            true => None,
+            false => Some(py_to_toml(&v, &key)?),
+        };
+        list.push((key, value));
+    }
+    Ok(list)
 }
 
 #[pymethods]
 impl Scenario {
     /// The scenario of the text `source` (TOML or a MoorDyn deck), validated as if read from
     /// `path` (default `"<text>"` in the working directory): files it names are found beside
-    /// `path`, and its diagnostics name it.
+    /// `path`, and its diagnostics name it. `vessel_motion` and `duration` are a deck's, as
+    /// for `load`; `overrides` are set as by `with_overrides`.
     #[new]
-    #[pyo3(signature = (source, path = None, *, vessel_motion = None, duration = None))]
+    #[pyo3(signature = (source, path = None, *, vessel_motion = None, duration = None, overrides = None))]
     fn py_new(
         py: Python<'_>,
         source: String,
         path: Option<PathBuf>,
         vessel_motion: Option<PathBuf>,
         duration: Option<Real>,
+        overrides: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<Self> {
         let path = path.unwrap_or_else(|| PathBuf::from("<text>"));
-        Self::parse(py, path, source, deck_options(vessel_motion, duration))
+        let overrides = match overrides {
+            Some(d) => override_list(d)?,
+            None => Vec::new(),
+        };
+        Self::parse(
+            py,
+            path,
+            source,
+            deck_options(vessel_motion, duration),
+            overrides,
+        )
     }
 
     /// The scenario of TOML `text`; files it names are looked for in `base_dir` (default: the
@@ -152,6 +203,7 @@ impl Scenario {
             virtual_path(base_dir, "<toml>"),
             text,
             ConvertOptions::default(),
+            Vec::new(),
         )
     }
 
@@ -175,6 +227,7 @@ impl Scenario {
             virtual_path(base_dir, "<dict>"),
             text,
             ConvertOptions::default(),
+            Vec::new(),
         )
     }
 
@@ -186,21 +239,29 @@ impl Scenario {
     /// is, under the name `"<path> (with overrides)"` (its lines and columns are those of
     /// `to_toml()`). A MoorDyn deck is overridden in its hawser conversion (`hawser convert`).
     fn with_overrides(&self, py: Python<'_>, overrides: &Bound<'_, PyDict>) -> PyResult<Self> {
-        let mut list = Vec::new();
-        for (k, v) in overrides.iter() {
-            let key: String = k.extract()?;
-            let value = match v.is_none() {
-                true => None,
-                false => Some(py_to_toml(&v, &key)?),
-            };
-            list.push((key, value));
+        let mut list = self.overrides.clone();
+        list.extend(override_list(overrides)?);
+        Self::parse(
+            py,
+            self.origin.clone(),
+            self.source.clone(),
+            self.deck.clone(),
+            list,
+        )
+    }
+
+    /// The dotted keys set on the input (`with_overrides`, in order; later ones win) and
+    /// their values, `None` for a key removed.
+    #[getter]
+    fn overrides<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let d = PyDict::new(py);
+        for (k, v) in &self.overrides {
+            match v {
+                Some(v) => d.set_item(k, crate::convert::toml_to_py(py, v)?)?,
+                None => d.set_item(k, py.None())?,
+            }
         }
-        let (name, text, _) = py
-            .detach(|| {
-                hawser_io::input::with_overrides(&self.path, &self.source, &self.deck, &list)
-            })
-            .map_err(|e| scenario_error(py, &e))?;
-        self.derived(py, name, text)
+        Ok(d)
     }
 
     /// The scenario's TOML structure as a dict (a deck's hawser conversion).
@@ -213,8 +274,11 @@ impl Scenario {
 
     /// The scenario as TOML text (a deck's hawser conversion, as `hawser convert` writes it).
     fn to_toml(&self, py: Python<'_>) -> PyResult<String> {
-        hawser_io::input::scenario_text(&self.path, &self.source, &self.deck)
-            .map_err(|e| scenario_error(py, &e))
+        match &self.text {
+            Some(t) => Ok(t.clone()),
+            None => hawser_io::input::scenario_text(&self.path, &self.source, &self.deck)
+                .map_err(|e| scenario_error(py, &e)),
+        }
     }
 
     /// The path the scenario was read from, or the name it was validated under.
@@ -223,7 +287,8 @@ impl Scenario {
         self.path.display().to_string()
     }
 
-    /// The input's text (TOML, or the MoorDyn deck).
+    /// The input's text (TOML, or the MoorDyn deck), before any overrides (`to_toml()` gives
+    /// the scenario with them).
     #[getter]
     fn source(&self) -> &str {
         &self.source
@@ -295,15 +360,16 @@ impl Scenario {
         )
     }
 
-    /// Pickling: a scenario is rebuilt from its text, path and deck choices.
+    /// Pickling: a scenario is rebuilt from its text, path, deck choices and overrides.
     fn __getnewargs_ex__<'py>(
         &self,
         py: Python<'py>,
     ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyDict>)> {
-        let args = (self.source.clone(), self.path.clone()).into_pyobject(py)?;
+        let args = (self.source.clone(), self.origin.clone()).into_pyobject(py)?;
         let kw = PyDict::new(py);
         kw.set_item("vessel_motion", self.deck.vessel_motion.clone())?;
         kw.set_item("duration", self.deck.duration)?;
+        kw.set_item("overrides", self.overrides(py)?)?;
         Ok((args.into_any(), kw))
     }
 

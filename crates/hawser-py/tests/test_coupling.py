@@ -133,12 +133,16 @@ def test_a_moordyn_deck_couples_its_coupled_points():
         s.step(5.0, DT_C, np.zeros(9), np.zeros(9))
     with pytest.raises(RuntimeError, match="not initialised"):
         hawser.load(OC3_DECK).session().forces()
+    # A deck with overrides (set in its hawser conversion) is still a deck to a host.
+    varied = hawser.load(OC3_DECK).with_overrides({"environment.water_density": 1030.0})
+    assert varied.format == "moordyn" and varied.session().coupled_dofs == 9
 
 
 def test_scenarios_pickle():
     sc = hawser.load(EXAMPLES / "catenary_mooring.toml").with_overrides({"lines.chain.length": 690.0})
     back = pickle.loads(pickle.dumps(sc))
     assert back.path == sc.path and back.source == sc.source
+    assert back.overrides == sc.overrides == {"lines.chain.length": 690.0}
     assert back.to_dict() == sc.to_dict()
     deck = pickle.loads(pickle.dumps(hawser.load(OC3_DECK, duration=3.0)))
     assert deck.format == "moordyn" and deck.duration == 3.0

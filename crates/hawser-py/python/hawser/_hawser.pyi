@@ -45,9 +45,11 @@ class Scenario:
         *,
         vessel_motion: Optional[_Path] = None,
         duration: Optional[float] = None,
+        overrides: Optional[Mapping[str, Any]] = None,
     ) -> None:
         """The scenario of the text ``source`` (TOML or a deck), validated as if read from
-        ``path`` (files it names are found beside it)."""
+        ``path`` (files it names are found beside it), with ``overrides`` set as by
+        ``with_overrides``."""
     @staticmethod
     def from_toml(text: str, base_dir: Optional[_Path] = None) -> Scenario:
         """The scenario of TOML ``text``; files it names are looked for in ``base_dir``."""
@@ -59,6 +61,9 @@ class Scenario:
         "points.fairlead.motion.amplitude": [2.0, 0.0, 0.0], "environment.waves.seed": 7}``:
         arrays of tables by element ``name`` (or index), arrays of numbers by index, ``None``
         removes a key. Raises :class:`hawser.ScenarioError` naming the key."""
+    @property
+    def overrides(self) -> Dict[str, Any]:
+        """The dotted keys set on the input, in order, with their values (None: removed)."""
     def to_dict(self) -> Dict[str, Any]:
         """The TOML structure as a dict (a deck's hawser conversion)."""
     def to_toml(self) -> str:
@@ -68,7 +73,7 @@ class Scenario:
         """The file read, or the name the scenario was validated under."""
     @property
     def source(self) -> str:
-        """The input's text."""
+        """The input's text, before overrides (``to_toml()`` gives the scenario with them)."""
     @property
     def format(self) -> str:
         """``"toml"`` or ``"moordyn"``."""
@@ -135,9 +140,12 @@ class Session:
     @property
     def units(self) -> List[str]:
         """Output channel units."""
-    def init(self, x: Optional[_Array] = None, xd: Optional[_Array] = None) -> None:
+    def init(
+        self, x: Optional[_Array] = None, xd: Optional[_Array] = None, xdd: Optional[_Array] = None
+    ) -> None:
         """Places the coupled objects at ``x`` (default: input positions), solves the statics
-        there, sets the velocities ``xd`` (default: rest)."""
+        there, sets the velocities ``xd`` (default: rest) and the accelerations ``xdd`` (for
+        hosts that give them at every step)."""
     def step(
         self, t: float, dt: float, x: _Array, xd: _Array, xdd: Optional[_Array] = None
     ) -> np.ndarray:
