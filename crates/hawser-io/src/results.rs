@@ -49,26 +49,212 @@ pub const SNAPSHOT_COLUMNS: [(&str, &str); 7] = [
     ("tension", "N"),
 ];
 
-/// Writes a dynamic run's results into a directory while it runs.
-pub struct RunWriter {
-    dir: PathBuf,
+/// What a run's results are computed from its samples, whatever keeps them: the row of
+/// channel values, the running statistics of every channel, the slack and snap detectors of
+/// every line, and the snapshot schedule. [`RunWriter`] writes it into files
+/// (`summary.json`); the Python package keeps it in memory.
+#[derive(Clone, Debug)]
+pub struct RunSummary {
     channels: Vec<Channel>,
     names: Vec<String>,
     stats: Vec<RunningStats>,
     detectors: Vec<SlackSnapDetector>,
+    snapshot_interval: Option<Real>,
+    next_snapshot: Real,
+    last_time: Real,
+    samples: u64,
+    /// The channel values of the sample being taken.
+    row: Vec<Real>,
+}
+
+impl RunSummary {
+    /// A summary of the run of `system` with output channels `outputs`, shape snapshots every
+    /// `snapshot_interval` [s] (none without it).
+    pub fn new(
+        system: &System,
+        outputs: &[OutputChannel],
+        snapshot_interval: Option<Real>,
+    ) -> Self {
+        Self {
+            names: outputs.iter().map(|c| c.name(system)).collect(),
+            channels: outputs.iter().map(|c| c.channel).collect(),
+            stats: vec![RunningStats::default(); outputs.len()],
+            detectors: vec![SlackSnapDetector::default(); system.lines.len()],
+            row: vec![0.0; outputs.len()],
+            snapshot_interval,
+            next_snapshot: 0.0,
+            last_time: 0.0,
+            samples: 0,
+        }
+    }
+
+    /// Reads the channel values of `view` into [`RunSummary::row`] without recording them.
+    pub fn read(&mut self, view: &View<'_>) -> &[Real] {
+        for (v, c) in self.row.iter_mut().zip(&self.channels) {
+            *v = view.value(c);
+        }
+        &self.row
+    }
+
+    /// Records the row read last ([`RunSummary::read`]) as the sample at `time` [s]: into the
+    /// statistics, and the element tensions and strains of `view` into the slack and snap
+    /// detectors. Returns whether a shape snapshot is due at this sample.
+    pub fn record(&mut self, view: &View<'_>, time: Real) -> bool {
+        let (system, ws) = (view.system, view.workspace);
+        for (v, s) in self.row.iter().zip(self.stats.iter_mut()) {
+            s.push(*v);
+        }
+        self.last_time = time;
+        self.samples += 1;
+        for li in 0..system.lines.len() {
+            let lw = &ws.lines[li];
+            // The current mesh: a line on a winch changes its unstretched length.
+            let mesh = system.line_mesh(ws, li);
+            self.detectors[li].push(time, &lw.elements.tension, &lw.elements.strain, |e| {
+                0.5 * (mesh.arc_length(e) + mesh.arc_length(e + 1))
+            });
+        }
+        match self.snapshot_interval {
+            Some(interval) if time >= self.next_snapshot - 1e-9 * interval => {
+                while self.next_snapshot <= time + 1e-9 * interval {
+                    self.next_snapshot += interval;
+                }
+                true
+            }
+            _ => false,
+        }
+    }
+
+    /// Takes one sample at `time` [s]: [`RunSummary::read`] then [`RunSummary::record`].
+    pub fn sample(&mut self, view: &View<'_>, time: Real) -> bool {
+        self.read(view);
+        self.record(view, time)
+    }
+
+    /// The channel values of the last sample, in column order.
+    pub fn row(&self) -> &[Real] {
+        &self.row
+    }
+
+    /// Column names of the output channels.
+    pub fn names(&self) -> &[String] {
+        &self.names
+    }
+
+    /// The output channels, in column order.
+    pub fn channels(&self) -> &[Channel] {
+        &self.channels
+    }
+
+    /// Time of the last sample [s].
+    pub fn last_time(&self) -> Real {
+        self.last_time
+    }
+
+    /// Samples taken.
+    pub fn samples(&self) -> u64 {
+        self.samples
+    }
+
+    /// Closes the slack intervals and snap events still open at the last sample.
+    pub fn finish(&mut self) {
+        for d in &mut self.detectors {
+            d.finish(self.last_time);
+        }
+    }
+
+    /// The summary as `summary.json` holds it: the result format, per channel its unit, min,
+    /// max, mean and standard deviation; per line its slack intervals and snap events;
+    /// `error` (the reason the run stopped early) marks it incomplete.
+    pub fn to_json(&self, system: &System, error: Option<&str>) -> Value {
+        let channels: serde_json::Map<String, Value> = self
+            .names
+            .iter()
+            .zip(&self.stats)
+            .zip(&self.channels)
+            .map(|((n, s), c)| {
+                (n.clone(), json!({"unit": c.unit(), "min": s.min, "max": s.max, "mean": s.mean(), "std": s.std()}))
+            })
+            .collect();
+        let lines: serde_json::Map<String, Value> = system
+            .lines
+            .iter()
+            .zip(&self.detectors)
+            .map(|(l, d)| {
+                (
+                    l.name.clone(),
+                    json!({
+                        "slack_intervals": d.intervals.iter().map(|s| json!({"start": s.start, "end": s.end, "min_strain": s.min_strain})).collect::<Vec<_>>(),
+                        "snap_events": d.snaps.iter().map(|s| json!({
+                            "time": s.time, "peak_time": s.peak_time, "peak_tension": s.peak_tension,
+                            "location": s.location, "rise_rate": s.rise_rate})).collect::<Vec<_>>(),
+                    }),
+                )
+            })
+            .collect();
+        json!({
+            "format_version": FORMAT_VERSION,
+            "complete": error.is_none(),
+            "error": error,
+            "end_time": self.last_time,
+            "samples": self.samples,
+            "channels": channels,
+            "lines": lines,
+            "definitions": {
+                "slack": "some element of the line has strain ≤ 0",
+                "snap": "a slack → taut transition; peak is the largest element tension until the tension falls again",
+                "location": "unstretched arc length from end A [m] of the element carrying the peak",
+            },
+        })
+    }
+
+    /// Saves the summary exactly (statistics, detectors, snapshot schedule), for a checkpoint.
+    pub fn encode(&self, e: &mut hawser::session::Encoder) {
+        e.u64(self.stats.len() as u64);
+        self.stats.iter().for_each(|s| s.encode(e));
+        e.u64(self.detectors.len() as u64);
+        self.detectors.iter().for_each(|d| d.encode(e));
+        e.f64(self.next_snapshot);
+        e.f64(self.last_time);
+        e.u64(self.samples);
+    }
+
+    /// Restores a summary saved by [`RunSummary::encode`] into this new one (of the same
+    /// system and channels); the error says what does not fit.
+    pub fn decode(&mut self, d: &mut hawser::session::Decoder) -> Result<(), &'static str> {
+        const TRUNCATED: &str = "is truncated";
+        let n = d.u64().map_err(|_| TRUNCATED)? as usize;
+        if n != self.channels.len() {
+            return Err("has another number of channels");
+        }
+        self.stats = (0..n)
+            .map(|_| RunningStats::decode(d).map_err(|_| TRUNCATED))
+            .collect::<Result<Vec<_>, _>>()?;
+        let n = d.u64().map_err(|_| TRUNCATED)? as usize;
+        if n != self.detectors.len() {
+            return Err("has another number of lines");
+        }
+        self.detectors = (0..n)
+            .map(|_| SlackSnapDetector::decode(d).map_err(|_| TRUNCATED))
+            .collect::<Result<Vec<_>, _>>()?;
+        self.next_snapshot = d.f64().map_err(|_| TRUNCATED)?;
+        self.last_time = d.f64().map_err(|_| TRUNCATED)?;
+        self.samples = d.u64().map_err(|_| TRUNCATED)?;
+        Ok(())
+    }
+}
+
+/// Writes a dynamic run's results into a directory while it runs.
+pub struct RunWriter {
+    dir: PathBuf,
+    summary: RunSummary,
     timeseries: RowWriter,
     snapshots: Vec<RowWriter>,
     vtk: Option<VtkWriter>,
     parquet: bool,
-    snapshot_interval: Option<Real>,
     scenario: String,
     model_hash: u64,
     times: SampleTimes,
-    next_snapshot: Real,
-    last_time: Real,
-    samples: u64,
-    /// The channel values of the sample being written.
-    row: Vec<Real>,
 }
 
 /// Writes `value` to `path` atomically: into a temporary file beside it, then renamed over
@@ -243,7 +429,7 @@ impl RunWriter {
         let header = std::iter::once("time").chain(names.iter().map(String::as_str));
         let timeseries = RowWriter::create(&dir.join("timeseries.csv"), header)?;
         let mut w = Self::new(dir, session, scenario, formats, timeseries)?;
-        if w.snapshot_interval.is_some() {
+        if w.summary.snapshot_interval.is_some() {
             let sd = dir.join("snapshots");
             std::fs::create_dir_all(&sd).map_err(|e| cannot("create", &sd, e))?;
             for li in 0..system.lines.len() {
@@ -272,28 +458,25 @@ impl RunWriter {
         let settings = &session.model().settings;
         Ok(Self {
             dir: dir.to_path_buf(),
-            stats: vec![RunningStats::default(); outputs.len()],
-            names: outputs.iter().map(|c| c.name(system)).collect(),
-            channels: outputs.iter().map(|c| c.channel).collect(),
-            detectors: vec![SlackSnapDetector::default(); system.lines.len()],
+            summary: RunSummary::new(system, outputs, settings.snapshot_interval),
             timeseries,
             snapshots: Vec::new(),
             vtk: None,
             parquet: formats.parquet,
-            snapshot_interval: settings.snapshot_interval,
             scenario: scenario.display().to_string(),
             model_hash: hawser::session::model_hash(session.model()),
             times: SampleTimes::new(settings, session.step_size(), session.sample_interval()),
-            next_snapshot: 0.0,
-            last_time: 0.0,
-            samples: 0,
-            row: vec![0.0; outputs.len()],
         })
     }
 
     /// Time of the last sample written [s].
     pub fn last_time(&self) -> Real {
-        self.last_time
+        self.summary.last_time
+    }
+
+    /// The statistics, slack intervals and snap events so far.
+    pub fn summary(&self) -> &RunSummary {
+        &self.summary
     }
 
     /// What [`RunWriter::resume`] needs to go on from here: the result format, the length of
@@ -311,13 +494,7 @@ impl RunWriter {
         e.bool(self.vtk.is_some());
         e.u64(pvd);
         e.u64(count);
-        e.u64(self.stats.len() as u64);
-        self.stats.iter().for_each(|s| s.encode(&mut e));
-        e.u64(self.detectors.len() as u64);
-        self.detectors.iter().for_each(|d| d.encode(&mut e));
-        e.f64(self.next_snapshot);
-        e.f64(self.last_time);
-        e.u64(self.samples);
+        self.summary.encode(&mut e);
         Ok(e.bytes)
     }
 
@@ -353,7 +530,7 @@ impl RunWriter {
         let mut w = Self::new(dir, session, scenario, formats, timeseries)?;
         let system = session.system();
         let count = d.u64().map_err(truncated)? as usize;
-        let expected = if w.snapshot_interval.is_some() {
+        let expected = if w.summary.snapshot_interval.is_some() {
             system.lines.len()
         } else {
             0
@@ -368,30 +545,16 @@ impl RunWriter {
         }
         let has_vtk = d.bool().map_err(truncated)?;
         let vtk_progress = (d.u64().map_err(truncated)?, d.u64().map_err(truncated)?);
-        if has_vtk != (formats.vtk && w.snapshot_interval.is_some()) {
+        if has_vtk != (formats.vtk && w.summary.snapshot_interval.is_some()) {
             return Err(bad("has another choice of ParaView files"));
         }
         if has_vtk {
             w.vtk = Some(VtkWriter::resume(dir, system, vtk_progress)?);
         }
-        let n = d.u64().map_err(truncated)? as usize;
-        if n != w.channels.len() {
-            return Err(bad("has another number of channels"));
-        }
-        w.stats = (0..n)
-            .map(|_| RunningStats::decode(&mut d).map_err(truncated))
-            .collect::<Result<Vec<_>, _>>()?;
-        let n = d.u64().map_err(truncated)? as usize;
-        if n != system.lines.len() {
-            return Err(bad("has another number of lines"));
-        }
-        w.detectors = (0..n)
-            .map(|_| SlackSnapDetector::decode(&mut d).map_err(truncated))
-            .collect::<Result<Vec<_>, _>>()?;
-        w.next_snapshot = d.f64().map_err(truncated)?;
-        w.last_time = d.f64().map_err(truncated)?;
-        w.samples = d.u64().map_err(truncated)?;
-        w.write_status(json!({"complete": false, "state": "running", "resumed_at": w.last_time}))?;
+        w.summary.decode(&mut d).map_err(bad)?;
+        w.write_status(
+            json!({"complete": false, "state": "running", "resumed_at": w.summary.last_time}),
+        )?;
         Ok(w)
     }
 
@@ -406,33 +569,16 @@ impl RunWriter {
     }
 
     fn write_sample(&mut self, view: &View<'_>, time: Real) -> std::io::Result<()> {
-        let (system, ws) = (view.system, view.workspace);
         let ts = &mut self.timeseries;
         ts.number(time);
-        for (c, v) in self.channels.iter().zip(self.row.iter_mut()) {
-            *v = view.value(c);
+        for v in self.summary.read(view) {
             ts.number(*v);
         }
         ts.end_row();
         ts.commit()?;
         // The summary covers the rows written.
-        for (v, s) in self.row.iter().zip(self.stats.iter_mut()) {
-            s.push(*v);
-        }
-        self.last_time = time;
-        self.samples += 1;
-        for li in 0..system.lines.len() {
-            let lw = &ws.lines[li];
-            // The current mesh: a line on a winch changes its unstretched length.
-            let mesh = system.line_mesh(ws, li);
-            self.detectors[li].push(time, &lw.elements.tension, &lw.elements.strain, |e| {
-                0.5 * (mesh.arc_length(e) + mesh.arc_length(e + 1))
-            });
-        }
-        if let Some(interval) = self.snapshot_interval
-            && time >= self.next_snapshot - 1e-9 * interval
-        {
-            for li in 0..system.lines.len() {
+        if self.summary.record(view, time) {
+            for li in 0..view.system.lines.len() {
                 let w = &mut self.snapshots[li];
                 for n in view.line_samples(li) {
                     let p = n.position;
@@ -448,9 +594,6 @@ impl RunWriter {
             if let Some(vtk) = &mut self.vtk {
                 vtk.snapshot(view, time)?;
             }
-            while self.next_snapshot <= time + 1e-9 * interval {
-                self.next_snapshot += interval;
-            }
         }
         Ok(())
     }
@@ -463,10 +606,11 @@ impl RunWriter {
         }
         let unit_map: serde_json::Map<String, Value> = std::iter::once(("time", "s"))
             .chain(
-                self.names
+                self.summary
+                    .names
                     .iter()
                     .map(String::as_str)
-                    .zip(self.channels.iter().map(|c| c.unit())),
+                    .zip(self.summary.channels.iter().map(|c| c.unit())),
             )
             .map(|(n, u)| (n.to_string(), json!(u)))
             .collect();
@@ -502,63 +646,21 @@ impl RunWriter {
         error: Option<&str>,
         interrupted: bool,
     ) -> std::io::Result<()> {
-        let system = view.system;
-        for d in &mut self.detectors {
-            d.finish(self.last_time);
-        }
+        self.summary.finish();
         let mut failure = None;
         let mut error = error.map(str::to_string);
         if let Err(e) = self.write_parquet(error.is_none()) {
             error.get_or_insert_with(|| e.to_string());
             failure = Some(e);
         }
-        let complete = error.is_none();
-        let channels: serde_json::Map<String, Value> = self
-            .names
-            .iter()
-            .zip(&self.stats)
-            .zip(&self.channels)
-            .map(|((n, s), c)| {
-                (n.clone(), json!({"unit": c.unit(), "min": s.min, "max": s.max, "mean": s.mean(), "std": s.std()}))
-            })
-            .collect();
-        let lines: serde_json::Map<String, Value> = system
-            .lines
-            .iter()
-            .zip(&self.detectors)
-            .map(|(l, d)| {
-                (
-                    l.name.clone(),
-                    json!({
-                        "slack_intervals": d.intervals.iter().map(|s| json!({"start": s.start, "end": s.end, "min_strain": s.min_strain})).collect::<Vec<_>>(),
-                        "snap_events": d.snaps.iter().map(|s| json!({
-                            "time": s.time, "peak_time": s.peak_time, "peak_tension": s.peak_tension,
-                            "location": s.location, "rise_rate": s.rise_rate})).collect::<Vec<_>>(),
-                    }),
-                )
-            })
-            .collect();
         let written = write_json(
             &self.dir.join("summary.json"),
-            &json!({
-                "format_version": FORMAT_VERSION,
-                "complete": complete,
-                "error": error,
-                "end_time": self.last_time,
-                "samples": self.samples,
-                "channels": channels,
-                "lines": lines,
-                "definitions": {
-                    "slack": "some element of the line has strain ≤ 0",
-                    "snap": "a slack → taut transition; peak is the largest element tension until the tension falls again",
-                    "location": "unstretched arc length from end A [m] of the element carrying the peak",
-                },
-            }),
+            &self.summary.to_json(view.system, error.as_deref()),
         )
         .and_then(|()| {
             write_json(
                 &self.dir.join("final_state.json"),
-                &state_json(view, self.last_time),
+                &state_json(view, self.summary.last_time),
             )
         });
         if let Err(e) = written {
@@ -570,7 +672,7 @@ impl RunWriter {
             "complete": complete,
             "state": if complete { "finished" } else if interrupted { "interrupted" } else { "stopped" },
             "error": error,
-            "end_time": self.last_time,
+            "end_time": self.summary.last_time,
         }));
         match failure {
             Some(e) => Err(e),
@@ -608,7 +710,10 @@ fn line_json(view: &View<'_>, li: usize, velocities: bool) -> Value {
         "end_a": end(false),
         "end_b": end(true),
     });
-    if matches!(line.kind, hawser::formulation::LineKind::Hermite(_)) {
+    if matches!(
+        line.discretisation,
+        hawser::formulation::Discretisation::Hermite(_)
+    ) {
         let n = line.mesh.elements();
         v["tangents"] = json!(
             (0..=n)
