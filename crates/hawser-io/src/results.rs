@@ -1,17 +1,53 @@
-//! Result writers: `timeseries.csv`, per-line shape snapshots, `summary.json` (statistics,
-//! slack intervals, snap events), `final_state.json` and `status.json`. Rows are flushed as the
-//! run goes, so a run that stops early keeps what it wrote, marked incomplete in
-//! `status.json` and `summary.json`.
+//! Result writers: `timeseries.csv` (and from it `timeseries.parquet`), per-line shape
+//! snapshots as CSV and as ParaView files, `channels.json` (units), `summary.json` (statistics,
+//! slack intervals, snap events), `final_state.json` and `status.json`. Rows are written whole
+//! as the run goes, so a run that stops early keeps what it wrote, marked incomplete in
+//! `status.json` and `summary.json`; the JSON files are replaced atomically. docs/outputs.md
+//! describes every file; [`FORMAT_VERSION`] names their layout.
+//!
+//! Readers: [`read_table`] (a CSV file of a finished or running run, a torn last line
+//! dropped), [`read_units`] (`channels.json`).
 
+mod csv;
+#[cfg(feature = "parquet")]
+mod parquet;
+mod vtk;
+
+pub use csv::{RowSink, RowWriter, SampleTimes, Table, TableReader, push_number, read_table};
+#[cfg(feature = "parquet")]
+pub use parquet::write_parquet;
+pub use vtk::{PVD_FILE, VTK_DIR, VtkWriter};
+
+use crate::scenario::OutputFormats;
+use csv::cannot;
 pub use hawser::analysis::OutputChannel;
 use hawser::analysis::{Channel, RunningStats, SlackSnapDetector};
 use hawser::math::Real;
-use hawser::session::{Observer, ObserverError, RunEnd, View};
+use hawser::session::{Observer, ObserverError, RunEnd, Session, View};
 use hawser::system::{System, Workspace};
 use serde_json::{Value, json};
-use std::fs::File;
-use std::io::{BufWriter, Write};
 use std::path::{Path, PathBuf};
+
+/// The version of the layout of a run's files (column names, units, keys). It changes when a
+/// reader written for the old layout would read the new one wrongly (a column renamed, a unit
+/// or a meaning changed); new keys in the JSON files and new files leave it. `status.json`,
+/// `summary.json`, `channels.json` and the Parquet metadata carry it; `hawser resume` refuses
+/// a run written in another. Version 1 (unnumbered): units in the CSV headers
+/// (`time [s],L1.end_a.tension [N]`). Version 2: plain column names, units in
+/// `channels.json`, times from the sample counter, exponents for tiny and huge numbers.
+pub const FORMAT_VERSION: u64 = 2;
+
+/// The header of every line's snapshot file (`snapshots/LINE.csv`) and the units of its
+/// columns.
+pub const SNAPSHOT_COLUMNS: [(&str, &str); 7] = [
+    ("time", "s"),
+    ("node", "-"),
+    ("arc_length", "m"),
+    ("x", "m"),
+    ("y", "m"),
+    ("z", "m"),
+    ("tension", "N"),
+];
 
 /// What a run's results are computed from its samples, whatever keeps them: the row of
 /// channel values, the running statistics of every channel, the slack and snap detectors of
@@ -27,6 +63,7 @@ pub struct RunSummary {
     next_snapshot: Real,
     last_time: Real,
     samples: u64,
+    /// The channel values of the sample being taken.
     row: Vec<Real>,
 }
 
@@ -51,19 +88,24 @@ impl RunSummary {
         }
     }
 
-    /// Takes one sample: the channel values ([`RunSummary::row`]) into the statistics, the
-    /// element tensions and strains into the slack and snap detectors. Returns whether a shape
-    /// snapshot is due at this sample.
-    pub fn sample(&mut self, view: &View<'_>) -> bool {
-        let (system, time, ws) = (view.system, view.time, view.workspace);
-        self.last_time = time;
-        self.samples += 1;
-        for (i, c) in self.channels.iter().enumerate() {
-            self.row[i] = view.value(c);
+    /// Reads the channel values of `view` into [`RunSummary::row`] without recording them.
+    pub fn read(&mut self, view: &View<'_>) -> &[Real] {
+        for (v, c) in self.row.iter_mut().zip(&self.channels) {
+            *v = view.value(c);
         }
+        &self.row
+    }
+
+    /// Records the row read last ([`RunSummary::read`]) as the sample at `time` [s]: into the
+    /// statistics, and the element tensions and strains of `view` into the slack and snap
+    /// detectors. Returns whether a shape snapshot is due at this sample.
+    pub fn record(&mut self, view: &View<'_>, time: Real) -> bool {
+        let (system, ws) = (view.system, view.workspace);
         for (v, s) in self.row.iter().zip(self.stats.iter_mut()) {
             s.push(*v);
         }
+        self.last_time = time;
+        self.samples += 1;
         for li in 0..system.lines.len() {
             let lw = &ws.lines[li];
             // The current mesh: a line on a winch changes its unstretched length.
@@ -81,6 +123,12 @@ impl RunSummary {
             }
             _ => false,
         }
+    }
+
+    /// Takes one sample at `time` [s]: [`RunSummary::read`] then [`RunSummary::record`].
+    pub fn sample(&mut self, view: &View<'_>, time: Real) -> bool {
+        self.read(view);
+        self.record(view, time)
     }
 
     /// The channel values of the last sample, in column order.
@@ -115,9 +163,9 @@ impl RunSummary {
         }
     }
 
-    /// The summary as `summary.json` holds it: per channel its unit, min, max, mean and
-    /// standard deviation; per line its slack intervals and snap events; `error` (the reason
-    /// the run stopped early) marks it incomplete.
+    /// The summary as `summary.json` holds it: the result format, per channel its unit, min,
+    /// max, mean and standard deviation; per line its slack intervals and snap events;
+    /// `error` (the reason the run stopped early) marks it incomplete.
     pub fn to_json(&self, system: &System, error: Option<&str>) -> Value {
         let channels: serde_json::Map<String, Value> = self
             .names
@@ -145,6 +193,7 @@ impl RunSummary {
             })
             .collect();
         json!({
+            "format_version": FORMAT_VERSION,
             "complete": error.is_none(),
             "error": error,
             "end_time": self.last_time,
@@ -199,13 +248,13 @@ impl RunSummary {
 pub struct RunWriter {
     dir: PathBuf,
     summary: RunSummary,
-    timeseries: BufWriter<File>,
-    snapshots: Vec<BufWriter<File>>,
+    timeseries: RowWriter,
+    snapshots: Vec<RowWriter>,
+    vtk: Option<VtkWriter>,
+    parquet: bool,
     scenario: String,
-}
-
-fn io_context(path: &Path, e: std::io::Error) -> std::io::Error {
-    std::io::Error::new(e.kind(), format!("{}: {e}", path.display()))
+    model_hash: u64,
+    times: SampleTimes,
 }
 
 /// Writes `value` to `path` atomically: into a temporary file beside it, then renamed over
@@ -215,25 +264,32 @@ fn write_json(path: &Path, value: &Value) -> std::io::Result<()> {
     write_atomically(path, (text + "\n").as_bytes())
 }
 
-/// Writes `bytes` to `path` through a temporary file renamed over it.
+/// Writes `bytes` to `path` through a temporary file renamed over it: `path` holds either its
+/// old or its new content, whenever the process stops. Errors name the file.
 pub fn write_atomically(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
     let mut tmp = path.as_os_str().to_owned();
     tmp.push(".tmp");
     let tmp = PathBuf::from(tmp);
-    std::fs::write(&tmp, bytes).map_err(|e| io_context(&tmp, e))?;
-    std::fs::rename(&tmp, path).map_err(|e| io_context(path, e))
+    std::fs::write(&tmp, bytes).map_err(|e| {
+        let _ = std::fs::remove_file(&tmp);
+        cannot("write", &tmp, e)
+    })?;
+    std::fs::rename(&tmp, path).map_err(|e| cannot("write", path, e))
 }
 
 /// The files and folders a run writes into its output folder: what `--overwrite` removes and
 /// what marks a folder as holding a run.
-pub const RUN_FILES: [&str; 7] = [
+pub const RUN_FILES: [&str; 10] = [
     "status.json",
     "summary.json",
     "timeseries.csv",
+    "timeseries.parquet",
+    "channels.json",
     "final_state.json",
     "checkpoint.bin",
     "run.json",
     "snapshots",
+    VTK_DIR,
 ];
 
 /// The run files present in `dir` ([`RUN_FILES`]).
@@ -245,9 +301,24 @@ pub fn run_files_in(dir: &Path) -> Vec<&'static str> {
         .collect()
 }
 
+/// Removes the run files ([`RUN_FILES`]) from `dir` (the whole `snapshots/` and `vtk/`
+/// folders included, so that nothing stale is left beside new results; other files are left
+/// alone). Nothing to do for a folder that does not exist.
+pub fn remove_run_files(dir: &Path) -> std::io::Result<()> {
+    for f in run_files_in(dir) {
+        let p = dir.join(f);
+        let removed = if p.is_dir() && !p.is_symlink() {
+            std::fs::remove_dir_all(&p)
+        } else {
+            std::fs::remove_file(&p)
+        };
+        removed.map_err(|e| cannot("remove", &p, e))?;
+    }
+    Ok(())
+}
+
 /// Prepares `dir` for a new run: creates it, and refuses it when it holds another run's files
-/// unless `overwrite`, which removes them first (the whole `snapshots/` folder included, so
-/// nothing stale is left beside the new results; other files are left alone).
+/// unless `overwrite`, which removes them first ([`remove_run_files`]).
 pub fn prepare_output_dir(dir: &Path, overwrite: bool) -> std::io::Result<()> {
     let present = run_files_in(dir);
     if !present.is_empty() {
@@ -264,62 +335,137 @@ pub fn prepare_output_dir(dir: &Path, overwrite: bool) -> std::io::Result<()> {
                 ),
             ));
         }
-        for f in present {
-            let p = dir.join(f);
-            let removed = if p.is_dir() {
-                std::fs::remove_dir_all(&p)
-            } else {
-                std::fs::remove_file(&p)
-            };
-            removed.map_err(|e| io_context(&p, e))?;
-        }
+        remove_run_files(dir)?;
     }
-    std::fs::create_dir_all(dir).map_err(|e| io_context(dir, e))
+    std::fs::create_dir_all(dir).map_err(|e| cannot("create", dir, e))
+}
+
+/// The units of a run's columns from its `channels.json`: `timeseries` (column name → unit,
+/// `time` included) and `snapshots` (snapshot column → unit).
+pub fn read_units(dir: &Path) -> std::io::Result<Value> {
+    let path = dir.join("channels.json");
+    let text = std::fs::read_to_string(&path).map_err(|e| cannot("read", &path, e))?;
+    serde_json::from_str(&text).map_err(|e| {
+        std::io::Error::new(
+            std::io::ErrorKind::InvalidData,
+            format!("{}: {e}", path.display()),
+        )
+    })
+}
+
+/// Writes `dir/status.json`: `fields` with the format version, the scenario file, the hash of
+/// its model ([`hawser::session::model_hash`], as in checkpoints) and the hawser version.
+fn write_status(
+    dir: &Path,
+    scenario: &Path,
+    model_hash: u64,
+    fields: Value,
+) -> std::io::Result<()> {
+    let mut v = json!({
+        "format_version": FORMAT_VERSION,
+        "scenario": scenario.display().to_string(),
+        "model_hash": format!("{model_hash:016x}"),
+        "hawser": env!("CARGO_PKG_VERSION"),
+    });
+    if let (Some(v), Value::Object(f)) = (v.as_object_mut(), fields) {
+        v.extend(f);
+    }
+    write_json(&dir.join("status.json"), &v)
+}
+
+/// Refuses formats this build cannot write (Parquet without the `parquet` feature).
+fn check_formats(formats: &OutputFormats) -> std::io::Result<()> {
+    if formats.parquet && !cfg!(feature = "parquet") {
+        return Err(std::io::Error::new(
+            std::io::ErrorKind::Unsupported,
+            "this hawser was built without Parquet (cargo feature `parquet`)",
+        ));
+    }
+    Ok(())
+}
+
+/// The path of line `line`'s snapshot file in `dir`.
+fn snapshot_path(dir: &Path, system: &System, line: usize) -> PathBuf {
+    dir.join("snapshots")
+        .join(format!("{}.csv", safe_file_name(&system.lines[line].name)))
 }
 
 impl RunWriter {
-    /// Creates the files in `dir` (prepared by [`prepare_output_dir`], or created here when
-    /// missing), writes headers and marks the run as running.
+    /// Creates the files of `session`'s run in `dir` (prepared by [`prepare_output_dir`], or
+    /// created here when missing): marks the run as running in `status.json`, writes
+    /// `channels.json` and the headers of the CSV files at once (so that a folder that cannot
+    /// take them is found before the run starts, with the file's name) and the empty ParaView
+    /// collection. `scenario` is the file the run came from; `formats` the formats written
+    /// besides CSV and JSON.
     pub fn create(
         dir: &Path,
-        system: &System,
-        outputs: &[OutputChannel],
-        snapshot_interval: Option<Real>,
+        session: &Session,
         scenario: &Path,
+        formats: &OutputFormats,
     ) -> std::io::Result<Self> {
-        std::fs::create_dir_all(dir).map_err(|e| io_context(dir, e))?;
-        write_json(
-            &dir.join("status.json"),
-            &json!({"complete": false, "state": "running", "scenario": scenario.display().to_string()}),
+        check_formats(formats)?;
+        std::fs::create_dir_all(dir).map_err(|e| cannot("create", dir, e))?;
+        let system = session.system();
+        let hash = hawser::session::model_hash(session.model());
+        write_status(
+            dir,
+            scenario,
+            hash,
+            json!({"complete": false, "state": "running"}),
         )?;
-        let summary = RunSummary::new(system, outputs, snapshot_interval);
-        let path = dir.join("timeseries.csv");
-        let mut ts = BufWriter::new(File::create(&path).map_err(|e| io_context(&path, e))?);
-        write!(ts, "time [s]")?;
-        for (c, n) in summary.channels.iter().zip(&summary.names) {
-            write!(ts, ",{n} [{}]", c.unit())?;
-        }
-        writeln!(ts)?;
-        let mut snapshots = Vec::new();
-        if snapshot_interval.is_some() {
+        let outputs = session.channels();
+        let names: Vec<String> = outputs.iter().map(|c| c.name(system)).collect();
+        let units = json!({
+            "format_version": FORMAT_VERSION,
+            "timeseries": std::iter::once(("time".to_string(), json!("s")))
+                .chain(names.iter().zip(outputs).map(|(n, c)| (n.clone(), json!(c.channel.unit()))))
+                .collect::<serde_json::Map<_, _>>(),
+            "snapshots": SNAPSHOT_COLUMNS
+                .iter()
+                .map(|(n, u)| (n.to_string(), json!(u)))
+                .collect::<serde_json::Map<_, _>>(),
+        });
+        write_json(&dir.join("channels.json"), &units)?;
+        let header = std::iter::once("time").chain(names.iter().map(String::as_str));
+        let timeseries = RowWriter::create(&dir.join("timeseries.csv"), header)?;
+        let mut w = Self::new(dir, session, scenario, formats, timeseries)?;
+        if w.summary.snapshot_interval.is_some() {
             let sd = dir.join("snapshots");
-            std::fs::create_dir_all(&sd).map_err(|e| io_context(&sd, e))?;
-            for l in &system.lines {
-                let p = sd.join(format!("{}.csv", safe_file_name(&l.name)));
-                let mut w = BufWriter::new(File::create(&p).map_err(|e| io_context(&p, e))?);
-                writeln!(
-                    w,
-                    "time [s],node,arc_length [m],x [m],y [m],z [m],tension [N]"
-                )?;
-                snapshots.push(w);
+            std::fs::create_dir_all(&sd).map_err(|e| cannot("create", &sd, e))?;
+            for li in 0..system.lines.len() {
+                w.snapshots.push(RowWriter::create(
+                    &snapshot_path(dir, system, li),
+                    SNAPSHOT_COLUMNS.iter().map(|(n, _)| *n),
+                )?);
+            }
+            if formats.vtk {
+                w.vtk = Some(VtkWriter::create(dir, system)?);
             }
         }
+        Ok(w)
+    }
+
+    /// The writer's fixed parts, with its files not yet opened.
+    fn new(
+        dir: &Path,
+        session: &Session,
+        scenario: &Path,
+        formats: &OutputFormats,
+        timeseries: RowWriter,
+    ) -> std::io::Result<Self> {
+        let system = session.system();
+        let outputs = session.channels();
+        let settings = &session.model().settings;
         Ok(Self {
             dir: dir.to_path_buf(),
-            summary,
-            timeseries: ts,
-            snapshots,
+            summary: RunSummary::new(system, outputs, settings.snapshot_interval),
+            timeseries,
+            snapshots: Vec::new(),
+            vtk: None,
+            parquet: formats.parquet,
             scenario: scenario.display().to_string(),
+            model_hash: hawser::session::model_hash(session.model()),
+            times: SampleTimes::new(settings, session.step_size(), session.sample_interval()),
         })
     }
 
@@ -333,17 +479,21 @@ impl RunWriter {
         &self.summary
     }
 
-    /// What [`RunWriter::resume`] needs to go on from here: the length of every file written,
-    /// the statistics, the slack and snap detectors and the snapshot schedule. Flushes first.
+    /// What [`RunWriter::resume`] needs to go on from here: the result format, the length of
+    /// every file written, the statistics, the slack and snap detectors and the snapshot
+    /// schedule.
     pub fn progress(&mut self) -> std::io::Result<Vec<u8>> {
         let mut e = hawser::session::Encoder::default();
-        self.timeseries.flush()?;
-        e.u64(self.timeseries.get_ref().metadata()?.len());
+        e.u64(FORMAT_VERSION);
+        e.u64(self.timeseries.len());
         e.u64(self.snapshots.len() as u64);
-        for w in &mut self.snapshots {
-            w.flush()?;
-            e.u64(w.get_ref().metadata()?.len());
+        for w in &self.snapshots {
+            e.u64(w.len());
         }
+        let (pvd, count) = self.vtk.as_ref().map_or((0, 0), VtkWriter::progress);
+        e.bool(self.vtk.is_some());
+        e.u64(pvd);
+        e.u64(count);
         self.summary.encode(&mut e);
         Ok(e.bytes)
     }
@@ -353,10 +503,9 @@ impl RunWriter {
     /// the checkpoint are written again by the resumed run) and opened for appending.
     pub fn resume(
         dir: &Path,
-        system: &System,
-        outputs: &[OutputChannel],
-        snapshot_interval: Option<Real>,
+        session: &Session,
         scenario: &Path,
+        formats: &OutputFormats,
         progress: &[u8],
     ) -> std::io::Result<Self> {
         let bad = |what: &str| {
@@ -365,129 +514,178 @@ impl RunWriter {
                 format!("{}: the saved writer state {what}", dir.display()),
             )
         };
+        check_formats(formats)?;
+        let truncated = |_| bad("is truncated");
         let mut d = hawser::session::Decoder::new(progress);
-        let get = |d: &mut hawser::session::Decoder| d.u64().map_err(|_| bad("is truncated"));
-        let open = |path: PathBuf, len: u64| -> std::io::Result<BufWriter<File>> {
-            let f = std::fs::OpenOptions::new()
-                .write(true)
-                .open(&path)
-                .map_err(|e| io_context(&path, e))?;
-            if f.metadata()?.len() < len {
-                return Err(bad(&format!(
-                    "says {} has {len} bytes, but it is shorter: it was changed since",
-                    path.display()
-                )));
-            }
-            f.set_len(len).map_err(|e| io_context(&path, e))?;
-            let mut f = f;
-            std::io::Seek::seek(&mut f, std::io::SeekFrom::End(0))?;
-            Ok(BufWriter::new(f))
+        let version = d.u64().map_err(truncated)?;
+        if version != FORMAT_VERSION {
+            return Err(bad(&format!(
+                "is of another result format (this hawser writes format {FORMAT_VERSION}); \
+                 hint: finish the run with the hawser that started it, or run it again with \
+                 --overwrite"
+            )));
+        }
+        let timeseries =
+            RowWriter::reopen(&dir.join("timeseries.csv"), d.u64().map_err(truncated)?)?;
+        let mut w = Self::new(dir, session, scenario, formats, timeseries)?;
+        let system = session.system();
+        let count = d.u64().map_err(truncated)? as usize;
+        let expected = if w.summary.snapshot_interval.is_some() {
+            system.lines.len()
+        } else {
+            0
         };
-        let timeseries = open(dir.join("timeseries.csv"), get(&mut d)?)?;
-        let count = get(&mut d)? as usize;
-        if count
-            != if snapshot_interval.is_some() {
-                system.lines.len()
-            } else {
-                0
-            }
-        {
+        if count != expected {
             return Err(bad("has another number of snapshot files"));
         }
-        let mut snapshots = Vec::new();
-        for l in &system.lines[..count] {
-            let len = get(&mut d)?;
-            snapshots.push(open(
-                dir.join("snapshots")
-                    .join(format!("{}.csv", safe_file_name(&l.name))),
-                len,
-            )?);
+        for li in 0..count {
+            let len = d.u64().map_err(truncated)?;
+            w.snapshots
+                .push(RowWriter::reopen(&snapshot_path(dir, system, li), len)?);
         }
-        let mut summary = RunSummary::new(system, outputs, snapshot_interval);
-        summary.decode(&mut d).map_err(bad)?;
-        write_json(
-            &dir.join("status.json"),
-            &json!({"complete": false, "state": "running", "scenario": scenario.display().to_string(), "resumed_at": summary.last_time}),
+        let has_vtk = d.bool().map_err(truncated)?;
+        let vtk_progress = (d.u64().map_err(truncated)?, d.u64().map_err(truncated)?);
+        if has_vtk != (formats.vtk && w.summary.snapshot_interval.is_some()) {
+            return Err(bad("has another choice of ParaView files"));
+        }
+        if has_vtk {
+            w.vtk = Some(VtkWriter::resume(dir, system, vtk_progress)?);
+        }
+        w.summary.decode(&mut d).map_err(bad)?;
+        w.write_status(
+            json!({"complete": false, "state": "running", "resumed_at": w.summary.last_time}),
         )?;
-        Ok(Self {
-            dir: dir.to_path_buf(),
-            summary,
-            timeseries,
-            snapshots,
-            scenario: scenario.display().to_string(),
-        })
+        Ok(w)
     }
 
-    fn write_sample(&mut self, view: &View<'_>) -> std::io::Result<()> {
-        let snapshot = self.summary.sample(view);
-        write!(self.timeseries, "{}", view.time)?;
-        for v in self.summary.row() {
-            write!(self.timeseries, ",{v}")?;
+    /// Writes `status.json` ([`write_status`]).
+    fn write_status(&self, fields: Value) -> std::io::Result<()> {
+        write_status(
+            &self.dir,
+            Path::new(&self.scenario),
+            self.model_hash,
+            fields,
+        )
+    }
+
+    fn write_sample(&mut self, view: &View<'_>, time: Real) -> std::io::Result<()> {
+        let ts = &mut self.timeseries;
+        ts.number(time);
+        for v in self.summary.read(view) {
+            ts.number(*v);
         }
-        writeln!(self.timeseries)?;
-        self.timeseries.flush()?;
-        if snapshot {
+        ts.end_row();
+        ts.commit()?;
+        // The summary covers the rows written.
+        if self.summary.record(view, time) {
             for li in 0..view.system.lines.len() {
                 let w = &mut self.snapshots[li];
                 for n in view.line_samples(li) {
                     let p = n.position;
-                    writeln!(
-                        w,
-                        "{},{},{},{},{},{},{}",
-                        view.time, n.node, n.arc_length, p.x, p.y, p.z, n.tension
-                    )?;
+                    w.number(time);
+                    w.integer(n.node as u64);
+                    for x in [n.arc_length, p.x, p.y, p.z, n.tension] {
+                        w.number(x);
+                    }
+                    w.end_row();
                 }
-                w.flush()?;
+                w.commit()?;
+            }
+            if let Some(vtk) = &mut self.vtk {
+                vtk.snapshot(view, time)?;
             }
         }
         Ok(())
     }
 
-    /// Writes `summary.json`, `final_state.json` and `status.json` from the last state
-    /// `view`. `error` marks the run incomplete with its message; `interrupted` says it was
-    /// stopped from outside (it can be resumed).
+    /// Writes `timeseries.parquet` (when chosen) from the CSV.
+    #[cfg(feature = "parquet")]
+    fn write_parquet(&self, complete: bool) -> std::io::Result<()> {
+        if !self.parquet {
+            return Ok(());
+        }
+        let unit_map: serde_json::Map<String, Value> = std::iter::once(("time", "s"))
+            .chain(
+                self.summary
+                    .names
+                    .iter()
+                    .map(String::as_str)
+                    .zip(self.summary.channels.iter().map(|c| c.unit())),
+            )
+            .map(|(n, u)| (n.to_string(), json!(u)))
+            .collect();
+        let metadata = [
+            ("hawser.format_version", FORMAT_VERSION.to_string()),
+            ("hawser.model_hash", format!("{:016x}", self.model_hash)),
+            ("hawser.units", Value::Object(unit_map).to_string()),
+            ("hawser.complete", complete.to_string()),
+        ]
+        .map(|(k, v)| (k.to_string(), v));
+        write_parquet(
+            &self.dir.join("timeseries.csv"),
+            &self.dir.join("timeseries.parquet"),
+            &metadata,
+        )
+    }
+
+    /// Without the `parquet` feature a writer that chose Parquet is refused at creation.
+    #[cfg(not(feature = "parquet"))]
+    fn write_parquet(&self, _: bool) -> std::io::Result<()> {
+        debug_assert!(!self.parquet);
+        Ok(())
+    }
+
+    /// Writes `timeseries.parquet` (when chosen), `summary.json`, `final_state.json` and
+    /// `status.json` from the last state `view`. `error` marks the run incomplete with its
+    /// message; `interrupted` says it was stopped from outside (it can be resumed). A file
+    /// that cannot be written marks the run incomplete with its error in the files after it,
+    /// and is the error returned.
     pub fn write_end(
         &mut self,
         view: &View<'_>,
         error: Option<&str>,
         interrupted: bool,
     ) -> std::io::Result<()> {
-        self.timeseries.flush()?;
-        for s in &mut self.snapshots {
-            s.flush()?;
-        }
         self.summary.finish();
-        let complete = error.is_none();
-        let last_time = self.summary.last_time;
-        write_json(
+        let mut failure = None;
+        let mut error = error.map(str::to_string);
+        if let Err(e) = self.write_parquet(error.is_none()) {
+            error.get_or_insert_with(|| e.to_string());
+            failure = Some(e);
+        }
+        let written = write_json(
             &self.dir.join("summary.json"),
-            &self.summary.to_json(view.system, error),
-        )?;
-        write_json(
-            &self.dir.join("final_state.json"),
-            &state_json(view, last_time),
-        )?;
-        write_json(
-            &self.dir.join("status.json"),
-            &json!({
-                "complete": complete,
-                "state": if complete { "finished" } else if interrupted { "interrupted" } else { "stopped" },
-                "error": error,
-                "end_time": last_time,
-                "scenario": self.scenario,
-            }),
+            &self.summary.to_json(view.system, error.as_deref()),
         )
+        .and_then(|()| {
+            write_json(
+                &self.dir.join("final_state.json"),
+                &state_json(view, self.summary.last_time),
+            )
+        });
+        if let Err(e) = written {
+            error.get_or_insert_with(|| e.to_string());
+            failure.get_or_insert(e);
+        }
+        let complete = error.is_none();
+        let status = self.write_status(json!({
+            "complete": complete,
+            "state": if complete { "finished" } else if interrupted { "interrupted" } else { "stopped" },
+            "error": error,
+            "end_time": self.summary.last_time,
+        }));
+        match failure {
+            Some(e) => Err(e),
+            None => status,
+        }
     }
 }
 
 impl Observer for RunWriter {
     fn sample(&mut self, view: &View<'_>) -> Result<(), ObserverError> {
-        self.write_sample(view).map_err(|e| {
-            ObserverError(format!(
-                "cannot write the results in {}: {e}",
-                self.dir.display()
-            ))
-        })
+        let time = self.times.time(view.sample, view.time);
+        // The error names the file.
+        Ok(self.write_sample(view, time)?)
     }
 
     fn finish(&mut self, view: &View<'_>, end: &RunEnd) -> Result<(), ObserverError> {

@@ -13,7 +13,7 @@ use hawser::analysis::OutputChannel;
 use hawser::math::Real;
 use hawser::session::{Observer, ObserverError, RunEnd, Session, SessionOptions, View};
 use hawser::system::System;
-use hawser_io::results::{RunSummary, RunWriter, state_json};
+use hawser_io::results::{RunSummary, RunWriter, SampleTimes, state_json};
 use hawser_io::scenario::{LoadedScenario, ScenarioError};
 use pyo3::prelude::*;
 use std::path::PathBuf;
@@ -89,6 +89,8 @@ pub struct Recorder {
     pub summary_json: Option<serde_json::Value>,
     /// How the run ended.
     pub end: Option<RunEnd>,
+    /// Sample times from the sample counter, as `timeseries.csv` writes them.
+    sample_times: SampleTimes,
     progress: Arc<AtomicU64>,
 }
 
@@ -97,10 +99,12 @@ impl Recorder {
         system: &System,
         outputs: &[OutputChannel],
         snapshot_interval: Option<Real>,
+        sample_times: SampleTimes,
         samples: usize,
         progress: Arc<AtomicU64>,
     ) -> Self {
         Self {
+            sample_times,
             summary: RunSummary::new(system, outputs, snapshot_interval),
             names: outputs.iter().map(|c| c.name(system)).collect(),
             units: outputs.iter().map(|c| c.channel.unit()).collect(),
@@ -119,13 +123,14 @@ impl Recorder {
 
 impl Observer for Recorder {
     fn sample(&mut self, view: &View<'_>) -> Result<(), ObserverError> {
-        let snapshot = self.summary.sample(view);
-        self.times.push(view.time);
+        let time = self.sample_times.time(view.sample, view.time);
+        let snapshot = self.summary.sample(view, time);
+        self.times.push(time);
         self.values.extend_from_slice(self.summary.row());
         if snapshot {
             for (li, s) in self.snapshots.iter_mut().enumerate() {
                 for n in view.line_samples(li) {
-                    s.time.push(view.time);
+                    s.time.push(time);
                     s.node.push(n.node as u64);
                     s.arc_length.push(n.arc_length);
                     for k in 0..3 {
@@ -193,14 +198,8 @@ pub fn execute(
     let snapshot_interval = model.settings.snapshot_interval;
     if let Some(out) = &job.out {
         hawser_io::results::prepare_output_dir(out, true).map_err(Failure::Io)?;
-        let writer = RunWriter::create(
-            out,
-            session.system(),
-            session.channels(),
-            snapshot_interval,
-            &job.path,
-        )
-        .map_err(Failure::Io)?;
+        let writer = RunWriter::create(out, &session, &job.path, &job.loaded.formats)
+            .map_err(Failure::Io)?;
         session.attach(writer);
     }
     let samples = (session.end_time() / session.sample_interval()).round() as usize + 1;
@@ -208,6 +207,11 @@ pub fn execute(
         session.system(),
         session.channels(),
         snapshot_interval,
+        SampleTimes::new(
+            &model.settings,
+            session.step_size(),
+            session.sample_interval(),
+        ),
         samples,
         progress.clone(),
     );

@@ -38,7 +38,7 @@ def close(a, b, tol=TOL):
 def read_csv(path: Path):
     with open(path) as f:
         rows = list(csv.reader(f))
-    header = [h.rsplit(" [", 1)[0] for h in rows[0]]
+    header = rows[0]
     data = np.array([[float(x) for x in r] for r in rows[1:]])
     return header, data
 
@@ -81,9 +81,10 @@ def test_runs_equal_the_cli(hawser_bin, tmp_path, name, duration):
     assert close(res.time, data[:, 0])
     for i, n in enumerate(res.names):
         assert close(res[n], data[:, i + 1]), n
-    # Units: the CSV header's, and the DataFrame's attrs.
-    units = [h.rsplit(" [", 1)[1].rstrip("]") for h in next(csv.reader(open(cli_out / "timeseries.csv")))[1:]]
-    assert units == [res.units[n] for n in res.names]
+    # Units: channels.json's, and the DataFrame's attrs.
+    units = json.loads((cli_out / "channels.json").read_text())["timeseries"]
+    assert units["time"] == "s"
+    assert [units[n] for n in res.names] == [res.units[n] for n in res.names]
     # Summary (statistics, slack, snaps) and final state: the same documents.
     summary = json.loads((cli_out / "summary.json").read_text())
     assert_json_close(res.summary, summary)

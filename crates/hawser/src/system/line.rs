@@ -118,6 +118,17 @@ impl SystemLine {
         self.dg().map(DgWorkspace::new)
     }
 
+    /// Whether the line's evaluation gives curvature and bending moment
+    /// ([`crate::formulation::ElementState`]): `hermite` lines always, `dg` lines with
+    /// bending stiffness or damping in some section; `fe` lines never (they leave zeros).
+    pub fn has_bending_outputs(&self) -> bool {
+        match &self.discretisation {
+            Discretisation::Fe { .. } => false,
+            Discretisation::Hermite(_) => true,
+            Discretisation::Dg(d) => d.bending,
+        }
+    }
+
     /// Index of node i's position among the line's vectors (`LineWork::position`).
     #[inline]
     pub fn node_vector(&self, node: usize) -> usize {

@@ -33,7 +33,8 @@ use motions::{build_motion, build_rigid_motion};
 use obstacles::build_obstacles;
 use points::build_points;
 pub use sea::{read_elevation_file, record_components};
-use settings::{build_release, build_settings, check_steady_tow};
+pub use settings::OutputFormats;
+use settings::{build_formats, build_release, build_settings, check_steady_tow};
 use toml_errors::schema_errors;
 
 /// A scenario read from a file: the model (with its output channels) and where things are.
@@ -47,6 +48,8 @@ pub struct LoadedScenario {
     pub time_step_span: Option<Range<usize>>,
     /// What the file was.
     pub format: InputFormat,
+    /// The result formats a run writes besides CSV and JSON.
+    pub formats: OutputFormats,
 }
 
 /// The format of an input file.
@@ -301,6 +304,7 @@ pub fn build_scenario(
     let mut environment = environment;
     environment.obstacles = build_obstacles(&mut b, scenario, &environment);
     let (settings, time_step_span) = build_settings(&mut b, scenario.simulation.as_ref());
+    let formats = build_formats(&mut b, scenario.simulation.as_ref());
     let mut model = Model {
         environment,
         line_types,
@@ -333,6 +337,7 @@ pub fn build_scenario(
         has_simulation: scenario.simulation.is_some(),
         time_step_span,
         format: InputFormat::Toml,
+        formats,
     })
 }
 
