@@ -268,7 +268,7 @@ impl<'a> SectionConstants<'a> {
     ) -> [Vec3; 2] {
         let (na, nb) = ([1.0 - GAUSS[0], 1.0 - GAUSS[1]], GAUSS);
         let Some((normal, tangential)) = self.morison else {
-            return [0, 1].map(|g| {
+            let point = |g: usize| {
                 let z = ra.z * na[g] + rb.z * nb[g];
                 let factor = if z < 0.0 {
                     self.drag_factor[0]
@@ -277,7 +277,8 @@ impl<'a> SectionConstants<'a> {
                 };
                 let relative = -(va * na[g] + vb * nb[g]);
                 drag_force_with_factor(self.drag, factor, root_stretch, t, &relative)
-            });
+            };
+            return [point(0), point(1)];
         };
         let z = lanes(|g| ra.z * na[g] + rb.z * nb[g]);
         // The relative velocity −(va na + vb nb), component by component.
@@ -299,13 +300,15 @@ impl<'a> SectionConstants<'a> {
         });
         let cn = lanes(|g| normal * vn[g]);
         let ct = lanes(|g| tangential * vt[g].abs());
-        [0, 1].map(|g| {
+        // Written out rather than `[0, 1].map(..)`, which the compiler left as a call.
+        let point = |g: usize| {
             Vec3::new(
                 q[g] * (cn[g] * nx[g] + ct[g] * (t.x * vt[g])),
                 q[g] * (cn[g] * ny[g] + ct[g] * (t.y * vt[g])),
                 q[g] * (cn[g] * nz[g] + ct[g] * (t.z * vt[g])),
             )
-        })
+        };
+        [point(0), point(1)]
     }
 
     /// The element's mass per unit length γ0 I + added mass at density index `fluid` (0
