@@ -14,13 +14,13 @@
 //! including the part of an element below the water surface; seabed and obstacle contact at
 //! the nodes ([`obstacle_contacts`]).
 
-use super::{ElementState, LoadOptions, Mesh};
+use super::{ElementState, LoadOptions, Mesh, SectionProperties};
 use crate::formulation::fluid_load;
 use crate::linalg::LineBlocks;
 use crate::math::{Mat3, Real, Vec3};
 use crate::model::MassMatrix;
 use crate::physics::environment::Environment;
-use crate::physics::hydrodynamics::added_mass_matrix;
+use crate::physics::hydrodynamics::{DragModel, added_mass_of, drag_force_with_factor};
 use crate::physics::obstacles::{LineBall, Obstacle};
 
 /// Gauss points on [0, 1] for two-point quadrature (weight ½ each).
@@ -32,6 +32,13 @@ const GAUSS: [Real; 2] = [0.5 - 0.288_675_134_594_812_9, 0.5 + 0.288_675_134_594
 /// `forces[i]` is the total force the line's physics puts on node i: tension, weight,
 /// buoyancy, drag, fluid inertia, seabed and obstacle contact. End forces on attachments
 /// follow from it.
+///
+/// The element loop walks the line once, section by section, with everything that does not
+/// change along a section computed once (`SectionConstants`); each node's force is summed
+/// in a register while its two elements are evaluated (the contributions of element e − 1,
+/// then those of element e, in the order of the equations above: tension, weight and
+/// buoyancy, the two Gauss points, seabed contact), so that every node receives the same
+/// sums in the same order whatever the section boundaries.
 #[allow(clippy::too_many_arguments)]
 pub fn line_forces(
     line: &Mesh,
@@ -46,9 +53,8 @@ pub fn line_forces(
     options: LoadOptions,
 ) {
     let n = line.elements();
-    forces[..=n].iter_mut().for_each(|f| *f = Vec3::zeros());
-    let g = env.gravity;
-    let rho_w = env.water_density;
+    let (r, v, forces) = (&r[..=n], &v[..=n], &mut forces[..=n]);
+    let (tension_out, strain_out) = (&mut elements.tension[..n], &mut elements.strain[..n]);
     let bed_z = env.seabed_z();
     let consistent = mass_matrix == MassMatrix::Consistent;
     // No current and no waves: the fluid is at rest everywhere.
@@ -57,134 +63,317 @@ pub fn line_forces(
     if let Some(b) = blocks.as_deref_mut() {
         b.clear();
     }
-    for e in 0..n {
-        let sec = &line.sections[line.element_section[e]];
+    // The force on node e summed so far (the contributions of element e − 1), and half the
+    // unstretched length of element e − 1 (node e's share of it, 0 at node 0).
+    let mut node_force = Vec3::zeros();
+    let mut previous_half = 0.0;
+    let (mut ra, mut va) = (r[0], v[0]);
+    let mut first = 0;
+    while first < n {
+        let section = line.element_section[first];
+        let end = first
+            + line.element_section[first..]
+                .iter()
+                .position(|&s| s != section)
+                .unwrap_or(n - first);
+        let sec = &line.sections[section];
+        let k = SectionConstants::new(sec, env);
         let lt = &sec.line_type;
-        let l0 = sec.element_length;
-        let (ra, rb) = (r[e], r[e + 1]);
-        let (va, vb) = (v[e], v[e + 1]);
-        let delta = rb - ra;
-        let length = delta.norm();
-        let t = delta * (1.0 / length);
-        let strain = length * sec.inverse_length - 1.0;
-        // ε̇ = t·(v_b − v_a)/L0 (eq. 14), less σ(1 + ε) on a winch (Mesh::length_rate).
-        let strain_rate =
-            t.dot(&(vb - va)) * sec.inverse_length - line.length_rate * (1.0 + strain);
-        let tension = sec.law.tension(strain, strain_rate);
-        elements.tension[e] = tension;
-        elements.strain[e] = strain;
-        let stretch = 1.0 + strain;
-        let ft = t * tension;
-        forces[e] += ft;
-        forces[e + 1] -= ft;
+        let per_element = r[first + 1..=end]
+            .iter()
+            .zip(&v[first + 1..=end])
+            .zip(tension_out[first..end].iter_mut())
+            .zip(strain_out[first..end].iter_mut())
+            .zip(forces[first..end].iter_mut());
+        for (e, ((((&rb, &vb), tension_out), strain_out), force_out)) in
+            (first..end).zip(per_element)
+        {
+            let delta = rb - ra;
+            let length = delta.norm();
+            let t = delta * (1.0 / length);
+            let strain = length * sec.inverse_length - 1.0;
+            // ε̇ = t·(v_b − v_a)/L0 (eq. 14), less σ(1 + ε) on a winch (Mesh::length_rate).
+            let strain_rate =
+                t.dot(&(vb - va)) * sec.inverse_length - line.length_rate * (1.0 + strain);
+            let tension = sec.law.tension(strain, strain_rate);
+            *tension_out = tension;
+            *strain_out = strain;
+            let stretch = 1.0 + strain;
+            let ft = t * tension;
+            let mut fa = node_force;
+            let mut fb = Vec3::zeros();
+            fa += ft;
+            fb -= ft;
 
-        // Weight and buoyancy (eqs. 24–25), buoyancy on the submerged part only.
-        let weight = lt.mass_per_length * g * l0 * 0.5;
-        let (sub_a, sub_b) = submerged_shape_integrals(ra.z, rb.z);
-        let buoy = rho_w * sec.area * g * l0;
-        forces[e].z += buoy * sub_a - weight;
-        forces[e + 1].z += buoy * sub_b - weight;
+            // Weight and buoyancy (eqs. 24–25), buoyancy on the submerged part only.
+            let (sub_a, sub_b) = submerged_shape_integrals(ra.z, rb.z);
+            fa.z += k.buoyancy * sub_a - k.weight;
+            fb.z += k.buoyancy * sub_b - k.weight;
 
-        // Drag and fluid inertia at two Gauss points (eqs. 16, 19–23).
-        let root_stretch = stretch.max(0.0).sqrt();
-        let w = 0.5 * l0;
-        for (g, &xi) in GAUSS.iter().enumerate() {
-            let (na, nb) = (1.0 - xi, xi);
-            let f = fluid_load(
-                env,
-                &options.fluid,
-                2 * e + g,
-                lt,
-                sec.area,
-                time,
-                &(ra * na + rb * nb),
-                &(va * na + vb * nb),
-                &t,
-                root_stretch,
-                options.current_factor,
-                still_water,
-            );
-            forces[e] += f * (w * na);
-            forces[e + 1] += f * (w * nb);
-        }
-
-        // Structural and added mass (eqs. 12, 17–18): per unit length
-        // γ0 I + ρ A (C_an (I − t tᵀ) + C_at t tᵀ) = (γ0 + ρ A C_an) I + ρ A (C_at − C_an) t tᵀ,
-        // integrated with the linear shape functions; exact with one evaluation unless the
-        // element crosses the surface, where each Gauss point takes its own density.
-        if let Some(b) = blocks.as_deref_mut() {
-            // Element mass over `length` at density `rho`: (γ0 I + added mass) · length.
-            let element_mass = |rho: Real, length: Real| -> Mat3 {
-                let mut m = added_mass_matrix(
-                    rho,
-                    sec.area,
-                    lt.normal_added_mass,
-                    lt.tangential_added_mass,
-                    &t,
-                );
-                for k in 0..3 {
-                    m[(k, k)] += lt.mass_per_length;
-                }
-                m * length
-            };
-            if (ra.z < 0.0) == (rb.z < 0.0) {
-                // Uniform density: exact shape-function integrals, ∫NaNa = ∫NbNb = 1/3 and
-                // ∫NaNb = 1/6 (consistent), ∫Na = ∫Nb = 1/2 (lumped).
-                let rho = env.fluid_density(ra.z);
-                if consistent {
-                    let third = element_mass(rho, l0 / 3.0);
-                    b.diag[e] += third;
-                    b.diag[e + 1] += third;
-                    let sixth = third * 0.5;
-                    b.lower[e] += sixth;
-                    b.upper[e] += sixth;
-                } else {
-                    let half = element_mass(rho, 0.5 * l0);
-                    b.diag[e] += half;
-                    b.diag[e + 1] += half;
+            // Drag and fluid inertia at two Gauss points (eqs. 16, 19–23).
+            let root_stretch = stretch.max(0.0).sqrt();
+            if still_water {
+                // Both Gauss points at once (lane g holds point g): the same operations as
+                // `fluid_load` in fluid at rest, which the compiler packs two by two.
+                let f = k.still_water_drag_pair(&ra, &rb, &va, &vb, root_stretch, &t);
+                for (f, xi) in f.iter().zip(GAUSS) {
+                    fa += f * (k.half_length * (1.0 - xi));
+                    fb += f * (k.half_length * xi);
                 }
             } else {
-                // Crossing the surface: each Gauss point takes its own density.
-                for &xi in &GAUSS {
+                for (g, &xi) in GAUSS.iter().enumerate() {
                     let (na, nb) = (1.0 - xi, xi);
-                    let m = element_mass(env.fluid_density(ra.z * na + rb.z * nb), w);
-                    if consistent {
-                        b.diag[e] += m * (na * na);
-                        b.diag[e + 1] += m * (nb * nb);
-                        b.lower[e] += m * (na * nb);
-                        b.upper[e] += m * (na * nb);
-                    } else {
-                        b.diag[e] += m * na;
-                        b.diag[e + 1] += m * nb;
-                    }
+                    let f = fluid_load(
+                        env,
+                        &options.fluid,
+                        2 * e + g,
+                        lt,
+                        sec.area,
+                        time,
+                        &(ra * na + rb * nb),
+                        &(va * na + vb * nb),
+                        &t,
+                        root_stretch,
+                        options.current_factor,
+                        still_water,
+                    );
+                    fa += f * (k.half_length * na);
+                    fb += f * (k.half_length * nb);
                 }
             }
-        }
 
-        // Seabed contact (DG paper eqs. 15–16) by nodal quadrature over the element.
-        if ra.z < bed_z || rb.z < bed_z {
-            let net_weight = (rho_w * sec.area - lt.mass_per_length) * g;
-            for (node, rn, vn) in [(e, ra, va), (e + 1, rb, vb)] {
-                let f = env.seabed.contact_force(
-                    bed_z,
-                    rn.z,
-                    &vn,
-                    lt.diameter,
-                    lt.mass_per_length,
-                    stretch,
-                    net_weight,
-                    line.node_length(node),
-                );
-                forces[node] += f * (0.5 * l0);
+            // Structural and added mass (eqs. 12, 17–18): per unit length
+            // γ0 I + ρ A (C_an (I − t tᵀ) + C_at t tᵀ) = (γ0 + ρ A C_an) I + ρ A (C_at − C_an) t tᵀ,
+            // integrated with the linear shape functions; exact with one evaluation unless
+            // the element crosses the surface, where each Gauss point takes its own density.
+            if let Some(b) = blocks.as_deref_mut() {
+                add_element_mass(b, e, &k, consistent, &t, ra.z, rb.z);
             }
+
+            // Seabed contact (DG paper eqs. 15–16) by nodal quadrature over the element.
+            if ra.z < bed_z || rb.z < bed_z {
+                let contact = |z: Real, velocity: &Vec3, node_length: Real| {
+                    env.seabed.contact_force_with(
+                        bed_z,
+                        z,
+                        velocity,
+                        lt.diameter,
+                        root_stretch,
+                        k.seabed_damping,
+                        k.net_weight,
+                        node_length,
+                    ) * k.half_length
+                };
+                // Each node carries half of each adjacent element.
+                fa += contact(ra.z, &va, previous_half + k.half_length);
+                let next_half = if e + 1 < n {
+                    0.5 * line.section(e + 1).element_length
+                } else {
+                    0.0
+                };
+                fb += contact(rb.z, &vb, k.half_length + next_half);
+            }
+            *force_out = fa;
+            node_force = fb;
+            previous_half = k.half_length;
+            (ra, va) = (rb, vb);
         }
+        first = end;
     }
+    forces[n] = node_force;
 
     // Obstacle contact by the same nodal quadrature.
     if !env.obstacles.is_empty() {
         obstacle_contacts(line, &env.obstacles, time, r, v, |_, node, f, w| {
             forces[node] += f * w
         });
+    }
+}
+
+/// What [`line_forces`] needs of a section that does not change along it, each computed by
+/// the expression the per-element code would use (so the results are the same bits).
+struct SectionConstants<'a> {
+    /// Half the weight of an element, γ0 g L0 / 2 [N].
+    weight: Real,
+    /// Buoyancy of a submerged element, ρ_w A g L0 [N].
+    buoyancy: Real,
+    /// L0 / 2 [m]: the Gauss weight, and each node's share of the element.
+    half_length: Real,
+    /// ½ ρ d in water and in air [kg/m²]: the drag's dynamic-pressure factor before √(1+ε).
+    drag_factor: [Real; 2],
+    /// Morison's C_dn and C_dt, `None` for drag loading functions.
+    morison: Option<(Real, Real)>,
+    /// The drag model (for loading functions).
+    drag: &'a DragModel,
+    /// Added mass per unit length in water and in air: ρ A C_an and ρ A (C_at − C_an) [kg/m].
+    added_mass: [(Real, Real); 2],
+    /// Mass per unit length γ0 [kg/m].
+    mass_per_length: Real,
+    /// Unstretched element length L0 [m].
+    element_length: Real,
+    /// Vertical seabed damping per unit length [N·s/m²].
+    seabed_damping: Real,
+    /// Net weight per unit length (ρ_w A − γ0) g [N/m] (negative when the cable sinks).
+    net_weight: Real,
+}
+
+impl<'a> SectionConstants<'a> {
+    #[inline]
+    fn new(sec: &'a SectionProperties, env: &Environment) -> Self {
+        let lt = &sec.line_type;
+        let (g, rho_w, l0) = (env.gravity, env.water_density, sec.element_length);
+        let added = |rho: Real| {
+            (
+                rho * sec.area * lt.normal_added_mass,
+                rho * sec.area * (lt.tangential_added_mass - lt.normal_added_mass),
+            )
+        };
+        Self {
+            weight: lt.mass_per_length * g * l0 * 0.5,
+            buoyancy: rho_w * sec.area * g * l0,
+            half_length: 0.5 * l0,
+            drag_factor: [
+                0.5 * rho_w * lt.diameter,
+                0.5 * env.air_density * lt.diameter,
+            ],
+            morison: match lt.drag {
+                DragModel::Morison { normal, tangential } => Some((normal, tangential)),
+                DragModel::LoadingFunctions { .. } => None,
+            },
+            drag: &lt.drag,
+            added_mass: [added(rho_w), added(env.air_density)],
+            mass_per_length: lt.mass_per_length,
+            element_length: l0,
+            seabed_damping: env
+                .seabed
+                .damping_per_length(lt.diameter, lt.mass_per_length),
+            net_weight: (rho_w * sec.area - lt.mass_per_length) * g,
+        }
+    }
+
+    /// Drag per unit unstretched length [N/m] in fluid at rest at the two Gauss points of the
+    /// element from `ra` to `rb` [m] moving at `va`, `vb` [m/s], with unit tangent `t` and
+    /// √(1+ε) `root_stretch`: `drag_force` of the relative velocity −v at each point, in
+    /// water or in air by the point's height, Morison's drag written lane by lane (lane g is
+    /// Gauss point g) so that the two points are computed together.
+    #[inline(always)]
+    fn still_water_drag_pair(
+        &self,
+        ra: &Vec3,
+        rb: &Vec3,
+        va: &Vec3,
+        vb: &Vec3,
+        root_stretch: Real,
+        t: &Vec3,
+    ) -> [Vec3; 2] {
+        let (na, nb) = ([1.0 - GAUSS[0], 1.0 - GAUSS[1]], GAUSS);
+        let Some((normal, tangential)) = self.morison else {
+            let point = |g: usize| {
+                let z = ra.z * na[g] + rb.z * nb[g];
+                let factor = if z < 0.0 {
+                    self.drag_factor[0]
+                } else {
+                    self.drag_factor[1]
+                };
+                let relative = -(va * na[g] + vb * nb[g]);
+                drag_force_with_factor(self.drag, factor, root_stretch, t, &relative)
+            };
+            return [point(0), point(1)];
+        };
+        let z = lanes(|g| ra.z * na[g] + rb.z * nb[g]);
+        // The relative velocity −(va na + vb nb), component by component.
+        let rx = lanes(|g| -(va.x * na[g] + vb.x * nb[g]));
+        let ry = lanes(|g| -(va.y * na[g] + vb.y * nb[g]));
+        let rz = lanes(|g| -(va.z * na[g] + vb.z * nb[g]));
+        let vt = lanes(|g| rx[g] * t.x + ry[g] * t.y + rz[g] * t.z);
+        let nx = lanes(|g| rx[g] - t.x * vt[g]);
+        let ny = lanes(|g| ry[g] - t.y * vt[g]);
+        let nz = lanes(|g| rz[g] - t.z * vt[g]);
+        let vn = lanes(|g| (nx[g] * nx[g] + ny[g] * ny[g] + nz[g] * nz[g]).sqrt());
+        let q = lanes(|g| {
+            let factor = if z[g] < 0.0 {
+                self.drag_factor[0]
+            } else {
+                self.drag_factor[1]
+            };
+            factor * root_stretch
+        });
+        let cn = lanes(|g| normal * vn[g]);
+        let ct = lanes(|g| tangential * vt[g].abs());
+        // Written out rather than `[0, 1].map(..)`, which the compiler left as a call.
+        let point = |g: usize| {
+            Vec3::new(
+                q[g] * (cn[g] * nx[g] + ct[g] * (t.x * vt[g])),
+                q[g] * (cn[g] * ny[g] + ct[g] * (t.y * vt[g])),
+                q[g] * (cn[g] * nz[g] + ct[g] * (t.z * vt[g])),
+            )
+        };
+        [point(0), point(1)]
+    }
+
+    /// The element's mass per unit length γ0 I + added mass at density index `fluid` (0
+    /// water, 1 air), times `length` [m] ([`added_mass_of`]).
+    #[inline(always)]
+    fn element_mass(&self, fluid: usize, tangent: &Vec3, length: Real) -> Mat3 {
+        let (alpha, beta) = self.added_mass[fluid];
+        let mut m = added_mass_of(alpha, beta, tangent);
+        for k in 0..3 {
+            m[(k, k)] += self.mass_per_length;
+        }
+        m * length
+    }
+}
+
+/// [f(0), f(1)]: a quantity at both Gauss points.
+#[inline(always)]
+fn lanes(f: impl Fn(usize) -> Real) -> [Real; 2] {
+    [f(0), f(1)]
+}
+
+/// Adds element e's mass blocks [kg] into `b` (see [`line_forces`]).
+#[inline(always)]
+fn add_element_mass(
+    b: &mut LineBlocks,
+    e: usize,
+    k: &SectionConstants,
+    consistent: bool,
+    t: &Vec3,
+    za: Real,
+    zb: Real,
+) {
+    let fluid = |z: Real| usize::from(!(z < 0.0));
+    let l0 = k.element_length;
+    if (za < 0.0) == (zb < 0.0) {
+        // Uniform density: exact shape-function integrals, ∫NaNa = ∫NbNb = 1/3 and
+        // ∫NaNb = 1/6 (consistent), ∫Na = ∫Nb = 1/2 (lumped).
+        let f = fluid(za);
+        if consistent {
+            let third = k.element_mass(f, t, l0 / 3.0);
+            b.diag[e] += third;
+            b.diag[e + 1] += third;
+            let sixth = third * 0.5;
+            b.lower[e] += sixth;
+            b.upper[e] += sixth;
+        } else {
+            let half = k.element_mass(f, t, 0.5 * l0);
+            b.diag[e] += half;
+            b.diag[e + 1] += half;
+        }
+    } else {
+        // Crossing the surface: each Gauss point takes its own density.
+        for &xi in &GAUSS {
+            let (na, nb) = (1.0 - xi, xi);
+            let m = k.element_mass(fluid(za * na + zb * nb), t, k.half_length);
+            if consistent {
+                b.diag[e] += m * (na * na);
+                b.diag[e + 1] += m * (nb * nb);
+                b.lower[e] += m * (na * nb);
+                b.upper[e] += m * (na * nb);
+            } else {
+                b.diag[e] += m * na;
+                b.diag[e + 1] += m * nb;
+            }
+        }
     }
 }
 

@@ -65,10 +65,29 @@ pub fn drag_force(
     tangent: &Vec3,
     relative_velocity: &Vec3,
 ) -> Vec3 {
+    drag_force_with_factor(
+        model,
+        0.5 * density * diameter,
+        root_stretch,
+        tangent,
+        relative_velocity,
+    )
+}
+
+/// [`drag_force`] with its dynamic-pressure factor ½ ρ d [kg/m²] given (computed once per
+/// line type by a caller that evaluates many points).
+#[inline(always)]
+pub fn drag_force_with_factor(
+    model: &DragModel,
+    factor: Real,
+    root_stretch: Real,
+    tangent: &Vec3,
+    relative_velocity: &Vec3,
+) -> Vec3 {
     let vt_scalar = relative_velocity.dot(tangent);
     let vt = tangent * vt_scalar;
     let vn = relative_velocity - vt;
-    let q = 0.5 * density * diameter * root_stretch;
+    let q = factor * root_stretch;
     match model {
         DragModel::Morison { normal, tangential } => {
             q * (normal * vn.norm() * vn + tangential * vt_scalar.abs() * vt)
@@ -103,8 +122,17 @@ pub fn added_mass_matrix(
     tangential: Real,
     tangent: &Vec3,
 ) -> Mat3 {
-    let alpha = density * area * normal;
-    let beta = density * area * (tangential - normal);
+    added_mass_of(
+        density * area * normal,
+        density * area * (tangential - normal),
+        tangent,
+    )
+}
+
+/// α I + β t tᵀ [kg/m] for the unit tangent t: [`added_mass_matrix`] with its two
+/// coefficients α = ρ A C_an and β = ρ A (C_at − C_an) given.
+#[inline(always)]
+pub fn added_mass_of(alpha: Real, beta: Real, tangent: &Vec3) -> Mat3 {
     let (t, bx, by) = (tangent, beta * tangent.x, beta * tangent.y);
     let (xy, xz, yz) = (bx * t.y, bx * t.z, by * t.z);
     Mat3::new(

@@ -137,14 +137,43 @@ impl Seabed {
         net_weight_z: Real,
         node_length: Real,
     ) -> Vec3 {
+        if bed_z - z <= 0.0 {
+            return Vec3::zeros();
+        }
+        self.contact_force_with(
+            bed_z,
+            z,
+            velocity,
+            diameter,
+            stretch.max(0.0).sqrt(),
+            self.damping_per_length(diameter, mass_per_length),
+            net_weight_z,
+            node_length,
+        )
+    }
+
+    /// [`Seabed::contact_force`] with √(1+ε) `root` and the damping per unit length
+    /// `damping` [N·s/m²] ([`Seabed::damping_per_length`]) given: a line's element loop
+    /// has the first already and computes the second once per line type.
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
+    pub fn contact_force_with(
+        &self,
+        bed_z: Real,
+        z: Real,
+        velocity: &Vec3,
+        diameter: Real,
+        root: Real,
+        damping: Real,
+        net_weight_z: Real,
+        node_length: Real,
+    ) -> Vec3 {
         let penetration = bed_z - z;
         if penetration <= 0.0 {
             return Vec3::zeros();
         }
-        let root = stretch.max(0.0).sqrt();
         let kd = self.stiffness * diameter;
-        let fz = root
-            * (kd * penetration - self.damping_per_length(diameter, mass_per_length) * velocity.z);
+        let fz = root * (kd * penetration - damping * velocity.z);
         let mut f = Vec3::new(0.0, 0.0, fz);
         let normal = match self.friction_law {
             FrictionLaw::Tanh => -net_weight_z,

@@ -1,0 +1,169 @@
+#!/usr/bin/env python3
+"""hawser against MoorDyn 2.7.2 in one run: paired CPU-time ratios and the speed targets.
+
+Run by scripts/bench_all.sh (which builds hawser and makes the MoorDyn venv); run this file
+with the venv's Python. Every hawser number is `hawser bench --json` (the CPU time of the
+running thread); every MoorDyn number is the CPU time (time.process_time) of the stepping loop
+of scripts/moordyn_bench.py's run_once (MoorDyn-C through its Python bindings, a 0.1 s
+coupling interval, no file output). Each case runs REPEATS times alternating the two codes;
+a ratio is the median over the pairs of the same repeat, so that the machine's load, shared
+with other work, affects both sides of each ratio alike.
+
+Targets printed (each with its measured value):
+  1. OC3 at the same step (dt 2 ms): hawser fe, RK4, lumped mass >= 10 M node-steps per CPU
+     second; CPU per step of hawser RK4 <= 1/2 of MoorDyn RK2's.
+  2. OC3 with hawser at 5 ms (--hawser-dt) against MoorDyn at the deck's dtM 2 ms, per
+     simulated second (the accuracy of each at its step is not checked here: BENCHMARKS.md).
+  3. Waves: OC3 in JONSWAP Hs 6 m, Tp 10 s, 200 components, static-position kinematics: CPU
+     per step <= 3x still water (and direct summation for comparison).
+  4. A 1000 m chain at 20 to 1280 segments (hawser only): CPU per node-step and per
+     simulated second at the automatic step.
+Not measured here: the stiff-seabed chain case and the parameter sweep (see BENCHMARKS.md).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+import types
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+sys.path.insert(0, HERE)
+import moordyn_bench as mb  # noqa: E402
+
+# run_once times its stepping loop with time.perf_counter: make that this process's CPU time.
+mb.time = types.SimpleNamespace(perf_counter=time.process_time)
+
+DECK = os.path.join(ROOT, "tests", "data", "moordyn", "oc3_lines.txt")
+OC3 = os.path.join(ROOT, "examples", "oc3_surge.toml")
+
+
+def hawser_bench(hawser, args):
+    """`hawser bench ARGS --json`, parsed: the list of runs."""
+    out = subprocess.run([hawser, "bench", *args, "--json"], check=True,
+                         capture_output=True, text=True).stdout
+    data = json.loads(out)
+    return data["runs"] if isinstance(data, dict) else data
+
+
+def moordyn_loop_cpu(path, x0, dt, duration):
+    """CPU seconds of MoorDyn's stepping loop over `duration` at dtM `dt` (surge 2 m, 10 s)."""
+    import moordyn
+    import cmoordyn
+
+    console = os.path.join(os.path.dirname(path), "console.txt")
+    res = mb.run_once(moordyn, cmoordyn, path, x0, dt, 0.1, duration, 2.0, 10.0, console, False)
+    return res["wall_s"]
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    p.add_argument("--hawser", default=os.path.join(ROOT, "target", "release", "hawser"))
+    p.add_argument("--repeats", type=int, default=3)
+    p.add_argument("--duration", type=float, default=20.0, help="OC3 simulated time [s]")
+    p.add_argument("--hawser-dt", type=float, default=0.005,
+                   help="hawser's step for the second OC3 comparison [s] (5 ms: its FairTen1 "
+                   "minimum, maximum and mean within 0.02 %% of its 2 ms run, BENCHMARKS.md)")
+    p.add_argument("--segments", default="20,40,80,160,320,640,1280")
+    p.add_argument("--chain-duration", type=float, default=1.0,
+                   help="1000 m chain simulated time [s]")
+    a = p.parse_args()
+    from importlib.metadata import version
+
+    tmp = tempfile.mkdtemp(prefix="bench-all-")
+    surge = os.path.join(tmp, "surge.txt")
+    with open(surge, "w") as f:
+        for i in range(int(round((a.duration + 10.0) / 0.1)) + 1):
+            t = 0.1 * i
+            f.write(f"{t:.1f} {2.0 * math.sin(2 * math.pi * t / 10.0):.12f} 0 0 0 0 0\n")
+    with open(DECK, encoding="utf-8") as fh:
+        src = fh.read().splitlines()
+    md_deck, _, _ = mb.prepare_deck(src, os.path.join(tmp, "moordyn"), 0.002, None, False)
+    x0 = [c for _, xyz in mb.coupled_points_from_deck(src) for c in xyz]
+    md_steps = int(round(a.duration / 0.002))
+    nodes = 63
+
+    print(f"hawser bench vs MoorDyn {version('moordyn')} (RK2), paired CPU time, median of "
+          f"{a.repeats} pairs; load average at start {os.getloadavg()[0]:.1f} on "
+          f"{os.cpu_count()} cores")
+
+    # 1-2. OC3 at the same step and at hawser's automatic step.
+    same, auto, md = [], [], []
+    for _ in range(a.repeats):
+        md.append(moordyn_loop_cpu(md_deck, x0, 0.002, a.duration))
+        base = [DECK, "--vessel-motion", surge, "--duration", str(a.duration), "--mass", "lumped"]
+        same.append(hawser_bench(a.hawser, base + ["--dt", "0.002"])[0])
+        auto.append(hawser_bench(a.hawser, base + ["--dt", str(a.hawser_dt)])[0])
+    md_step = [c / md_steps for c in md]
+    h_step = [r["cpu_s"] / r["steps"] for r in same]
+    ratio_same = statistics.median(m / h for m, h in zip(md_step, h_step))
+    ns = statistics.median(nodes * r["steps"] / r["cpu_s"] for r in same)
+    print("\nOC3 deck (3 x 20 segments, 63 nodes, surge 2 m / 10 s), "
+          f"{a.duration:g} s simulated")
+    print(f"  MoorDyn RK2 dt 2 ms: {statistics.median(md_step) * 1e6:.1f} us CPU per step, "
+          f"{nodes / statistics.median(md_step):.3e} node-steps per CPU s")
+    print(f"  hawser RK4 lumped dt 2 ms: {statistics.median(h_step) * 1e6:.1f} us CPU per step, "
+          f"{ns:.3e} node-steps per CPU s")
+    print(f"  target: hawser >= 1.0e7 node-steps per CPU s (RK4, lumped): {ns:.3e} "
+          f"[{'met' if ns >= 1e7 else 'NOT met'}]")
+    print(f"  target: MoorDyn CPU per step / hawser's >= 2 at the same step: {ratio_same:.2f} "
+          f"[{'met' if ratio_same >= 2 else 'NOT met'}]")
+    ratio_auto = statistics.median(m / r["cpu_s"] for m, r in zip(md, auto))
+    print(f"  hawser RK4 at {auto[0]['time_step']:.3e} s (its stable limit "
+          f"{auto[0]['stable_step']:.3e} s) against MoorDyn RK2 at dtM 2 ms, CPU per simulated "
+          f"second MoorDyn / hawser: {ratio_auto:.2f} (each code's step for 0.5 % accuracy is "
+          "not searched here)")
+
+    # 3. Waves.
+    runs = [hawser_bench(a.hawser, [OC3, "--waves", "still,jonswap:200:6:10", "--kinematics",
+                                    "both", "--mass", "lumped", "--scheme", "rk4", "--dt",
+                                    "0.002", "--duration", "4", "--repeat", str(a.repeats)])]
+    print("\nOC3 in JONSWAP Hs 6 m, Tp 10 s, 200 components (hawser bench --waves, 4 s, "
+          "paired CPU ratio to still water, median over repeats)")
+    for r in runs[0]:
+        if r["waves"] == "still":
+            continue
+        extra = ""
+        if r.get("wave_table_bytes"):
+            extra = f", cache {r['wave_table_bytes'] / 1e3:.0f} kB"
+        line = f"  {r['kinematics']}: {r['cpu_ratio_to_still']:.2f}x still water{extra}"
+        if r["kinematics"] == "static-position":
+            ok = r["cpu_ratio_to_still"] <= 3.0
+            line += f"  target <= 3x: [{'met' if ok else 'NOT met'}]"
+        print(line)
+
+    # 4. The 1000 m chain.
+    print("\n1000 m chain (the OC3 chain, one line, anchor to a fairlead in the 2 m / 10 s "
+          f"surge), automatic step, {a.chain_duration:g} s simulated, best of {a.repeats}")
+    print(f"  {'segments':>8} {'dt [s]':>10} {'ns/node-step':>13} {'CPU s per simulated s':>22}")
+    with open(OC3, encoding="utf-8") as fh:
+        oc3 = fh.read()
+    head = oc3.split("[[points]]")[0]
+    for n in [int(s) for s in a.segments.split(",")]:
+        path = os.path.join(tmp, f"chain_{n}.toml")
+        with open(path, "w") as f:
+            f.write(head.replace("time_step = 0.002", 'time_step = "auto"'))
+            f.write('[[points]]\nname = "anchor"\ntype = "fixed"\n'
+                    "position = [853.87, 0.0, -320.0]\n\n")
+            f.write('[[points]]\nname = "fairlead"\ntype = "prescribed"\n'
+                    "position = [5.2, 0.0, -70.0]\n"
+                    'motion = { type = "sinusoid", amplitude = [2.0, 0.0, 0.0], period = 10.0 }\n\n')
+            f.write(f'[[lines]]\nname = "L1"\nend_a = "anchor"\nend_b = "fairlead"\n'
+                    f'type = "chain"\nlength = 1000.0\nelements = {n}\n')
+        r = hawser_bench(a.hawser, [path, "--duration", str(a.chain_duration), "--mass",
+                                    "lumped", "--repeat", str(a.repeats)])[0]
+        per_node_step = r["cpu_s"] / (r["nodes"] * r["steps"])
+        print(f"  {n:>8} {r['time_step']:>10.3e} {per_node_step * 1e9:>13.0f} "
+              f"{r['cpu_s'] / r['duration']:>22.3e}")
+
+
+if __name__ == "__main__":
+    main()
