@@ -117,22 +117,30 @@ impl Parameters {
     }
 }
 
-/// Largest position correction of a converged Newton iteration, as a strain [-]: a line
-/// vector's correction relative to its line's shortest element (a tangent's itself), a point's
-/// and a body's relative to the system's shortest element. The tension error it leaves is
-/// about EA·10⁻⁸ (6 N in a 580 MN chain at 200 kN, 10⁻³ N in the snapping cable's wire at
-/// 78 N).
-pub const NEWTON_TOLERANCE: Real = 1e-8;
+/// The Newton iterations stop when the position correction is this fraction of the strain
+/// error the step's tolerance allows in each line, tol · T_ref / EA_max (an error below the
+/// step's own, as Hairer and Wanner's κ ∈ [0.01, 0.1] for stiff integrators, Solving ODEs
+/// II §IV.8): a line vector's correction relative to its line's shortest element (a
+/// tangent's itself), a point's and a body's relative to the system's shortest element, with
+/// the strictest line's allowance.
+pub const NEWTON_FRACTION: Real = 0.1;
+
+/// The smallest strain tolerance of the Newton iterations [-] (round-off of positions a
+/// thousand element lengths from the origin).
+const NEWTON_FLOOR: Real = 1e-12;
 
 /// An iteration whose correction is more than this fraction of the last one's forms the
 /// Jacobian again at the current iterate (once per step).
-pub const REFRESH_RATIO: Real = 0.25;
+pub const REFRESH_RATIO: Real = 0.5;
 
 /// Newton iterations of one attempt.
 pub const MAX_ITERATIONS: usize = 12;
 
 /// Largest growth and shrinking of the adaptive step from one step to the next [-].
 const GROWTH: (Real, Real) = (0.2, 2.0);
+
+/// The adaptive step grows only when the controller asks for this factor or more [-].
+pub const HYSTERESIS: Real = 1.25;
 
 /// What one attempt of a step gave.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -299,6 +307,10 @@ pub struct GeneralizedAlpha {
     solver: CoupledSystem,
     /// The step S was formed for [s] (NaN: not formed).
     matrix_step: Real,
+    /// Whether `solver` holds the factors of S (its next solve can reuse them).
+    factored: bool,
+    /// Whether `weights` are those of `reference` (false after a restore).
+    weights_ready: bool,
     /// Scratch: the finite-difference Jacobians, the iterate q̈_{n+1}, the state at n+1, each
     /// line's node accelerations, the weights of the Newton norm, the first rate.
     fd_lines: Vec<LineBlocks>,
@@ -345,6 +357,8 @@ impl GeneralizedAlpha {
             matrix: fd_lines.clone(),
             solver,
             matrix_step: Real::NAN,
+            factored: false,
+            weights_ready: false,
             fd_lines,
             fd_points: vec![Mat3::zeros(); system.free_points.len()],
             fd_scratch: JacobianScratch::new(system),
@@ -355,7 +369,7 @@ impl GeneralizedAlpha {
                 .iter()
                 .map(|l| vec![Vec3::zeros(); l.block_vectors()])
                 .collect(),
-            weights: newton_weights(system, n),
+            weights: vec![0.0; n],
             rate: vec![0.0; n],
             statistics: Statistics::default(),
         }
@@ -403,6 +417,8 @@ impl GeneralizedAlpha {
         self.formed = flags[1] != 0.0;
         self.refresh = flags[2] != 0.0;
         self.matrix_step = Real::NAN;
+        self.factored = false;
+        self.weights_ready = false;
         let mut rest = history[2 * n + lines + 3..].iter().copied();
         self.jacobian.set_numbers(&mut rest)
     }
@@ -427,6 +443,7 @@ impl GeneralizedAlpha {
         for (li, r) in self.reference.iter_mut().enumerate() {
             *r = reference_tension(system, ws, li);
         }
+        self.weights_ready = false;
         self.form_jacobian(system, ws, t, y);
         self.started = true;
         Ok(())
@@ -486,8 +503,19 @@ impl GeneralizedAlpha {
         self.statistics.jacobians += 1;
     }
 
-    /// S = M − γ' ∂F/∂v − β' ∂F/∂q for the step h, with the clamps of `hermite` lines.
-    fn form_matrix(&mut self, system: &System, h: Real) {
+    /// S = M − γ' ∂F/∂v − β' ∂F/∂q for the step h, with the clamps of `hermite` lines, and
+    /// the body points' offsets of the iterate in `ws` (S's rotation-to-point map).
+    fn form_matrix(&mut self, system: &System, ws: &Workspace, h: Real) {
+        for (s, slot) in self
+            .solver
+            .body_slots
+            .iter_mut()
+            .zip(&ws.coupled.body_slots)
+        {
+            s.body = slot.body;
+            s.offset = slot.offset;
+            s.bias = Vec3::zeros();
+        }
         let (bp, gp) = self.params.derivatives(h);
         let j = &self.jacobian;
         for (li, s) in self.matrix.iter_mut().enumerate() {
@@ -508,6 +536,23 @@ impl GeneralizedAlpha {
             *d = j.body_mass[f] - j.body_velocity[f] * gp - j.body_position[f] * bp;
         }
         self.matrix_step = h;
+        self.factored = false;
+    }
+
+    /// Solves S x = the right-hand sides in `self.matrix` and `self.solver`, factoring S once
+    /// per formation.
+    fn solve(&mut self, system: &System) -> Result<(), StepFailure> {
+        let solved = if self.factored {
+            self.solver.solve_again(&mut self.matrix)
+        } else {
+            self.solver.solve(&mut self.matrix)
+        };
+        solved.map_err(|s| StepFailure {
+            location: system.singular_location(s),
+            reason: "singular Newton iteration matrix".into(),
+        })?;
+        self.factored = true;
+        Ok(())
     }
 
     /// The state at t + h from `y` (at t) and the iterate q̈_{n+1} in `self.trial`, into
@@ -624,27 +669,12 @@ impl GeneralizedAlpha {
             let u = Vec6::from_fn(|r, _| trial[o + 7 + r]);
             self.solver.body_x[f] = ws.coupled.body_x[f] - ws.coupled.body_diag[f] * u;
         }
-        for (s, slot) in self
-            .solver
-            .body_slots
-            .iter_mut()
-            .zip(&ws.coupled.body_slots)
-        {
-            s.body = slot.body;
-            s.offset = slot.offset;
-            s.bias = Vec3::zeros();
-        }
     }
 
     /// Solves S δ = r, adds δ to the iterate, and returns the Newton norm of the position
     /// correction β' δ (≤ 1: converged) and the state index where it is largest.
     fn correct(&mut self, system: &System, bp: Real) -> Result<(Real, usize), StepFailure> {
-        self.solver
-            .solve(&mut self.matrix)
-            .map_err(|s| StepFailure {
-                location: system.singular_location(s),
-                reason: "singular Newton iteration matrix".into(),
-            })?;
+        self.solve(system)?;
         let mut worst = (0.0, 0);
         let mut add = |trial: &mut [Real], v: usize, d: Real| {
             trial[v] += d;
@@ -678,11 +708,18 @@ impl GeneralizedAlpha {
     }
 
     /// The error estimate of the step h over the tolerance (module doc), from q̈_{n+1} in
-    /// `self.trial` and q̈_n; `ws` holds the last iterate's assembly (body-point offsets).
-    fn error(&self, system: &System, ws: &Workspace, h: Real) -> Real {
+    /// `self.trial` and q̈_n; `ws` holds the last iterate's assembly (mass blocks, body-point
+    /// offsets). The raw estimate e = c h² (q̈_{n+1} − q̈_n) is filtered through the iteration
+    /// matrix, e_f = S⁻¹ M e: a stiff degree of freedom (a node held by a stiff element to a
+    /// prescribed end, a resting node pressed into the seabed) follows its quasi-static
+    /// equilibrium, and its error is its inertia's share of the raw one, not the raw one
+    /// (Shampine's filtered estimate for stiff problems, as in Hairer and Wanner, Solving ODEs
+    /// II, §IV.8, eq. 8.20, with (I − hγJ) replaced by the second-order iteration matrix).
+    fn error(&mut self, system: &System, ws: &Workspace, h: Real) -> Result<Real, StepFailure> {
         let c = self.params.error_constant().abs() * h * h;
         let np = system.free_points.len();
-        let at = |v: usize| c * (get3(&self.trial[v..], 0) - get3(&self.acceleration[v..], 0));
+        let (trial, acceleration) = (&self.trial, &self.acceleration);
+        let at = |v: usize| c * (get3(&trial[v..], 0) - get3(&acceleration[v..], 0));
         let slot_error = |s: usize| -> Vec3 {
             if s < np {
                 let o = system.layout.point_offset[system.free_points[s]].expect("free point");
@@ -694,50 +731,84 @@ impl GeneralizedAlpha {
                 at(o + 7) + at(o + 10).cross(&slot.offset)
             }
         };
+        // Right-hand side M e, row by row as the residual.
+        for li in 0..system.lines.len() {
+            let b = &ws.blocks[li];
+            let n = b.nodes() - 1;
+            let o = system.layout.line_offset[li];
+            let m = system.layout.line_interior[li];
+            let nodes = &mut self.nodes[li];
+            for (i, node) in nodes.iter_mut().enumerate() {
+                *node = if i == 0 || i == n {
+                    match if i == 0 { b.end_a } else { b.end_b } {
+                        EndKind::Known => Vec3::zeros(),
+                        EndKind::Free(s) => slot_error(s),
+                    }
+                } else {
+                    at(o + 3 * m + 3 * (i - 1))
+                };
+            }
+            let s = &mut self.matrix[li];
+            for i in 0..=n {
+                let known =
+                    (i == 0 && b.end_a == EndKind::Known) || (i == n && b.end_b == EndKind::Known);
+                s.x[i] = if known {
+                    Vec3::zeros()
+                } else {
+                    b.row_times(i, nodes)
+                };
+            }
+        }
+        for (f, &p) in system.free_points.iter().enumerate() {
+            let o = system.layout.point_offset[p].expect("free point");
+            self.solver.point_x[f] = ws.coupled.point_diag[f] * at(o + 3);
+        }
+        for (f, &b) in system.free_bodies.iter().enumerate() {
+            let o = system.layout.body_offset[b].expect("free body");
+            let u = Vec6::from_fn(|r, _| c * (trial[o + 7 + r] - acceleration[o + 7 + r]));
+            self.solver.body_x[f] = ws.coupled.body_diag[f] * u;
+        }
+        self.solve(system)?;
         let mut worst: Real = 0.0;
         for (li, l) in system.lines.iter().enumerate() {
             if l.dg().is_some() {
                 continue;
             }
-            let b = &ws.blocks[li];
-            let n = l.vectors() - 1;
-            let o = system.layout.line_offset[li];
-            let m = system.layout.line_interior[li];
-            let vector = |j: usize| -> Vec3 {
-                if j == 0 || j == n {
-                    match if j == 0 { b.end_a } else { b.end_b } {
-                        EndKind::Known => Vec3::zeros(),
-                        EndKind::Free(s) => slot_error(s),
-                    }
-                } else {
-                    at(o + 3 * m + 3 * (j - 1))
-                }
-            };
+            let x = &self.matrix[li].x;
             let mesh = system.line_mesh(ws, li);
             let scale = 1.0 / self.reference[li];
             for e in 0..mesh.elements() {
                 let sec = mesh.section(e);
-                let ([a, bb], tangents) = l.element_vectors(e);
-                let mut strain = (vector(bb) - vector(a)).norm() * sec.inverse_length;
+                let ([a, b], tangents) = l.element_vectors(e);
+                let mut strain = (x[b] - x[a]).norm() * sec.inverse_length;
                 if let Some([ta, tb]) = tangents {
-                    strain = strain.max(vector(ta).norm()).max(vector(tb).norm());
+                    strain = strain.max(x[ta].norm()).max(x[tb].norm());
                 }
-                worst = worst.max(sec.law.stiffness.max_tangent() * strain * scale);
+                let v = sec.law.stiffness.max_tangent() * strain * scale;
+                worst = worst.max(v);
             }
         }
-        worst / self.tolerance
+        Ok(worst / self.tolerance)
     }
 
     /// The nominal step [s] after a step of h [s] accepted with normalised error `error` [-]
     /// (the run's nominal step was `nominal`; h is shorter when it landed on an output time):
-    /// 0.9 h E^(−1/3), between 0.2 and 2 times `nominal` (the local error is O(h³)).
+    /// the controller's 0.9 h E^(−1/3) (the local error is O(h³)), taken when it is below
+    /// `nominal` or at least [`HYSTERESIS`] times it, at most twice `nominal`; otherwise
+    /// `nominal` is kept, so that the iteration matrix and its factors serve several steps.
     pub fn next_step(&self, nominal: Real, h: Real, error: Real) -> Real {
         let wanted = if error > 0.0 {
             0.9 * h * error.powf(-1.0 / 3.0)
         } else {
             Real::INFINITY
         };
-        wanted.clamp(GROWTH.0 * nominal, GROWTH.1 * nominal)
+        if wanted < nominal {
+            wanted.max(GROWTH.0 * nominal)
+        } else if wanted >= HYSTERESIS * nominal {
+            wanted.min(GROWTH.1 * nominal)
+        } else {
+            nominal
+        }
     }
 
     /// The step [s] to try again after a step of h [s] refused with normalised error `error`
@@ -768,6 +839,10 @@ impl GeneralizedAlpha {
         if !self.started {
             self.start(system, ws, t, y)?;
         }
+        if !self.weights_ready {
+            newton_weights(system, &self.reference, self.tolerance, &mut self.weights);
+            self.weights_ready = true;
+        }
         let (bp, _) = self.params.derivatives(h);
         // Predictor: q̈_{n+1} = q̈_n.
         self.trial.copy_from_slice(&self.acceleration);
@@ -788,7 +863,7 @@ impl GeneralizedAlpha {
                 // forces and mass blocks the residual reads are intact.
             }
             if self.matrix_step != h {
-                self.form_matrix(system, h);
+                self.form_matrix(system, ws, h);
             }
             self.residual(system, ws);
             let (norm, at) = self.correct(system, bp)?;
@@ -797,12 +872,28 @@ impl GeneralizedAlpha {
                 converged = true;
                 break;
             }
-            let slow = iteration > 0 && norm > REFRESH_RATIO * last;
-            if slow && !fresh {
-                self.refresh = true;
-            } else if norm > last && fresh {
-                // Diverging with a Jacobian of this step: give up this attempt.
-                break;
+            if iteration > 0 {
+                let ratio = norm / last;
+                // Iterations still needed at this contraction (Hairer and Wanner §IV.8).
+                let needed = if ratio < 1.0 {
+                    (-norm.ln() / ratio.ln()).max(0.0)
+                } else {
+                    Real::INFINITY
+                };
+                let hopeless = iteration as Real + 1.0 + needed > MAX_ITERATIONS as Real;
+                if ratio >= 1.0 && !fresh {
+                    // Diverging on an old Jacobian: start again from the predictor with one
+                    // formed there (the iterate itself may be far off).
+                    self.trial.copy_from_slice(&self.acceleration);
+                    self.refresh = true;
+                    last = Real::INFINITY;
+                    continue;
+                } else if ratio >= 1.0 || (hopeless && fresh) {
+                    // Diverging, or too slow, with a Jacobian of this step: give up.
+                    break;
+                } else if (ratio > REFRESH_RATIO || hopeless) && !fresh {
+                    self.refresh = true;
+                }
             }
             last = norm;
         }
@@ -824,7 +915,7 @@ impl GeneralizedAlpha {
             });
         }
         self.update(system, y, h);
-        let error = self.error(system, ws, h);
+        let error = self.error(system, ws, h)?;
         if adaptive && !(error <= 1.0) {
             self.statistics.rejected += 1;
             return Ok(Attempt::Rejected { error });
@@ -873,11 +964,27 @@ pub fn reference_tension(system: &System, ws: &Workspace, li: usize) -> Real {
     tension.max(wet.abs()).max(dry).max(1e-6 * stiffness)
 }
 
-/// Weights of the Newton norm per state entry ([`NEWTON_TOLERANCE`]): at each velocity entry,
-/// 1/(tolerance · length) for the length that makes its correction a strain; zero at the
-/// position entries.
-fn newton_weights(system: &System, n: usize) -> Vec<Real> {
-    let mut w = vec![0.0; n];
+/// Weights of the Newton norm per state entry ([`NEWTON_FRACTION`]): at each velocity
+/// entry, 1/(strain tolerance · length) for the length that makes its correction a strain,
+/// with each line's strain tolerance from its reference tension; zero at the position
+/// entries. Into `w` (the state's length); allocates nothing.
+fn newton_weights(system: &System, reference: &[Real], tolerance: Real, w: &mut [Real]) {
+    w.iter_mut().for_each(|x| *x = 0.0);
+    let allowance = |li: usize| {
+        let l = &system.lines[li];
+        let stiffness = (0..l.mesh.elements())
+            .map(|e| l.mesh.section(e).law.stiffness.max_tangent())
+            .fold(0.0, Real::max);
+        (NEWTON_FRACTION * tolerance * reference[li] / stiffness).max(NEWTON_FLOOR)
+    };
+    let strictest = (0..system.lines.len())
+        .map(allowance)
+        .fold(Real::INFINITY, Real::min);
+    let strictest = if strictest.is_finite() {
+        strictest
+    } else {
+        1e-8
+    };
     let shortest = system
         .lines
         .iter()
@@ -888,17 +995,18 @@ fn newton_weights(system: &System, n: usize) -> Vec<Real> {
         let o = system.layout.line_offset[li];
         let m = system.layout.line_interior[li];
         let element = l.mesh.shortest_element();
+        let strain = allowance(li);
         for i in 1..=m {
             let length = if l.is_tangent(i) { 1.0 } else { element };
             for k in 0..3 {
-                w[o + 3 * m + 3 * (i - 1) + k] = 1.0 / (NEWTON_TOLERANCE * length);
+                w[o + 3 * m + 3 * (i - 1) + k] = 1.0 / (strain * length);
             }
         }
     }
     for &p in &system.free_points {
         let o = system.layout.point_offset[p].expect("free point");
         for k in 0..3 {
-            w[o + 3 + k] = 1.0 / (NEWTON_TOLERANCE * shortest);
+            w[o + 3 + k] = 1.0 / (strictest * shortest);
         }
     }
     for &b in &system.free_bodies {
@@ -914,9 +1022,8 @@ fn newton_weights(system: &System, n: usize) -> Vec<Real> {
             .fold(0.0, Real::max)
             .max(shortest);
         for k in 0..3 {
-            w[o + 7 + k] = 1.0 / (NEWTON_TOLERANCE * shortest);
-            w[o + 10 + k] = reach / (NEWTON_TOLERANCE * shortest);
+            w[o + 7 + k] = 1.0 / (strictest * shortest);
+            w[o + 10 + k] = reach / (strictest * shortest);
         }
     }
-    w
 }

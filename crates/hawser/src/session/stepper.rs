@@ -129,6 +129,8 @@ pub struct Stepper {
     evaluated_at: Option<u64>,
     /// The scheme the run uses and why.
     scheme: SchemeChoice,
+    /// Whether the next adaptive step was planned by [`Stepper::advance`].
+    planned: bool,
 }
 
 /// What a step size rule found wrong.
@@ -258,6 +260,7 @@ impl Stepper {
             safety_factor: settings.safety_factor,
             stiffness_limit,
             scheme: choice,
+            planned: false,
         })
     }
 
@@ -399,7 +402,7 @@ impl Stepper {
     /// values after; a step that diverged leaves the state and time of the last good step
     /// (what a run's final state reports).
     pub fn step(&mut self, system: &System) -> Result<(), SimulationError> {
-        if self.adaptive() && self.clock.step > self.clock.nominal {
+        if self.adaptive() && !std::mem::take(&mut self.planned) {
             // A step not planned by `advance` (a bare `step`): land on the next output.
             let step = self.landing_step(self.next_output_time(), self.clock.nominal);
             self.clock.set_step(step);
@@ -531,6 +534,7 @@ impl Stepper {
                 let boundary = t.min(self.next_output_time());
                 let step = self.landing_step(boundary, nominal);
                 self.clock.set_step(step);
+                self.planned = true;
                 self.step_sampled(system, &mut sample)?;
                 continue;
             }
