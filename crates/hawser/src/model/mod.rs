@@ -99,8 +99,7 @@ pub struct Settings {
     pub time_step: TimeStep,
     /// Safety factor applied to the stability limit by [`TimeStep::Auto`] [-]; default 0.8.
     pub safety_factor: Real,
-    /// Integration scheme. Models built in code default to [`Scheme::Rk4`]; scenario files
-    /// default to [`Scheme::Auto`].
+    /// Integration scheme; default [`Scheme::Rk4`] ([`Scheme::Auto`] is opt-in).
     pub scheme: Scheme,
     /// ρ∞ of the generalized-α scheme [-], in [0, 1]: the spectral radius of its amplification
     /// matrix as ωΔt → ∞, i.e. the factor by which an unresolved mode's amplitude is multiplied

@@ -11,11 +11,9 @@ pub(super) fn build_settings(
     b: &mut Builder,
     spec: Option<&SimulationSpec>,
 ) -> (Settings, Option<Range<usize>>) {
-    // Scenario files choose the scheme by the rule of `scheme = "auto"` unless they set one.
-    let mut s = Settings {
-        scheme: Scheme::Auto,
-        ..Settings::default()
-    };
+    // RK4 unless the scenario sets a scheme: `scheme = "auto"` is opt-in (docs/implicit.md
+    // says why it is not the default yet).
+    let mut s = Settings::default();
     let Some(sim) = spec else { return (s, None) };
     s.duration = b.num(
         &sim.duration,
@@ -58,11 +56,11 @@ pub(super) fn build_settings(
         ));
     }
     s.scheme = match sim.scheme {
-        Some(SchemeSpec::Rk4) => Scheme::Rk4,
+        Some(SchemeSpec::Rk4) | None => Scheme::Rk4,
         Some(SchemeSpec::SspRk3) => Scheme::SspRk3,
         Some(SchemeSpec::ThreeLevel) => Scheme::ThreeLevel,
         Some(SchemeSpec::GeneralizedAlpha) => Scheme::GeneralizedAlpha,
-        Some(SchemeSpec::Auto) | None => Scheme::Auto,
+        Some(SchemeSpec::Auto) => Scheme::Auto,
     };
     s.spectral_radius = b.opt(
         &sim.spectral_radius,
