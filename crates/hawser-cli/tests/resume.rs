@@ -209,7 +209,13 @@ fn free_body_in_waves_interrupted_resumes_bit_for_bit() {
 fn killed_after_a_checkpoint_resumes_bit_for_bit() {
     // SIGKILL leaves no chance to flush or save: the periodic checkpoint and the files cut
     // back to their length at that checkpoint carry the run.
-    let (dir, path) = scenario("kill", "catenary_mooring.toml", 12.0, "");
+    kill_and_resume("kill", "catenary_mooring.toml", 12.0, "");
+}
+
+/// Kills a run (SIGKILL) once it has written a checkpoint (every 2 s simulated), resumes it,
+/// and compares with the uninterrupted run.
+fn kill_and_resume(name: &str, example: &str, duration: f64, extra: &str) {
+    let (dir, path) = scenario(name, example, duration, extra);
     let (whole, parts) = (dir.join("whole"), dir.join("parts"));
     run_whole(&path, &whole);
     let total = rows(&whole.join("timeseries.csv"));
@@ -223,20 +229,12 @@ fn killed_after_a_checkpoint_resumes_bit_for_bit() {
 #[test]
 fn generalized_alpha_free_body_killed_after_a_checkpoint_resumes_bit_for_bit() {
     // A free body (quaternion state, rotation-group update) with adaptive generalized-α steps.
-    let (dir, path) = scenario(
+    kill_and_resume(
         "kill_ga",
         "rov_irregular_waves.toml",
         30.0,
         "scheme = \"generalized-alpha\"",
     );
-    let (whole, parts) = (dir.join("whole"), dir.join("parts"));
-    run_whole(&path, &whole);
-    let total = rows(&whole.join("timeseries.csv"));
-    let code = run_and_stop(&path, &parts, libc::SIGKILL, total / 3, Some(2.0));
-    assert_eq!(code, None, "killed by a signal");
-    resume(&parts);
-    assert_same_results(&whole, &parts);
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]

@@ -78,8 +78,8 @@ pub enum SchemeSpec {
     /// The implicit generalized-α method (Chung and Hulbert 1993) with Newton iterations:
     /// adaptive steps with `time_step = "auto"`, far above the explicit stability limit.
     GeneralizedAlpha,
-    /// RK4 or generalized-α, whichever is cheaper at the `tolerance` asked (default;
-    /// docs/implicit.md).
+    /// RK4 or generalized-α, whichever the rule of docs/implicit.md finds cheaper at the
+    /// `tolerance` asked (opt-in; the default is `rk4`).
     Auto,
 }
 
@@ -123,7 +123,7 @@ pub struct SimulationSpec {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<f64>")]
     pub safety_factor: Option<Spanned<f64>>,
-    /// `"auto"` (default), `"rk4"`, `"ssp-rk3"`, `"three-level"` or `"generalized-alpha"`.
+    /// `"rk4"` (default), `"ssp-rk3"`, `"three-level"`, `"generalized-alpha"` or `"auto"`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub scheme: Option<SchemeSpec>,
     /// ρ∞ of the generalized-α scheme [-], in [0, 1]: the amplitude factor per step of a mode

@@ -104,9 +104,9 @@ pub struct Settings {
     /// ρ∞ of the generalized-α scheme [-], in [0, 1]: the spectral radius of its amplification
     /// matrix as ωΔt → ∞, i.e. the factor by which an unresolved mode's amplitude is multiplied
     /// per step (Chung and Hulbert 1993). 1 dissipates nothing (the trapezoidal rule); 0 damps
-    /// unresolved modes in one step. Default 0.8 (docs/implicit.md): damps a mode of ωΔt = 10
-    /// by 2.0 % per step while a resolved mode of ωΔt = 0.3 (21 steps per period) loses
-    /// 0.02 % of its amplitude per period.
+    /// unresolved modes in one step. Default 0.8 (docs/implicit.md): a mode of ωΔt = 3.9 loses
+    /// 2.1 % of its amplitude per step, a mode of ωΔt = 0.31 (20 steps per period) 0.014 % per
+    /// period (tests/generalized_alpha.rs).
     pub spectral_radius: Real,
     /// Accuracy a run asks for [-]: the largest local error per step of the adaptive
     /// generalized-α step ([`TimeStep::Auto`]), in each element's tension relative to its line's
