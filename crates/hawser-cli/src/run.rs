@@ -248,13 +248,25 @@ pub(crate) fn run(
         );
     }
     if !quiet {
-        eprintln!(
-            "time step {:.4e} s (stability limit {:.4e} s, set by {}), {} steps",
-            session.step_size(),
-            limit,
-            culprit,
-            (model.settings.duration / session.step_size()).ceil()
-        );
+        let choice = session.scheme();
+        eprintln!("scheme: {} ({})", choice.scheme.name(), choice.reason);
+        if choice.scheme == hawser::model::Scheme::GeneralizedAlpha
+            && model.settings.time_step == hawser::model::TimeStep::Auto
+        {
+            eprintln!(
+                "time step: adaptive, tolerance {:.1e}, first step {:.4e} s",
+                model.settings.tolerance,
+                session.step_size()
+            );
+        } else {
+            eprintln!(
+                "time step {:.4e} s (stability limit {:.4e} s, set by {}), {} steps",
+                session.step_size(),
+                limit,
+                culprit,
+                (model.settings.duration / session.step_size()).ceil()
+            );
+        }
     }
     let invocation = Invocation {
         scenario: std::fs::canonicalize(file).unwrap_or_else(|_| file.to_path_buf()),
@@ -434,6 +446,13 @@ fn drive(
                     simulated / wall.max(1e-9),
                     out.display()
                 );
+                if let Some(s) = session.implicit_statistics() {
+                    eprintln!(
+                        "generalized-α: {} steps ({} refused), {} Newton iterations, {} \
+                         Jacobians",
+                        s.steps, s.rejected, s.iterations, s.jacobians
+                    );
+                }
             }
             Ok(ExitCode::SUCCESS)
         }

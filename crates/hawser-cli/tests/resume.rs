@@ -1,9 +1,9 @@
 //! Interrupt and resume: a run stopped by SIGINT or SIGTERM, or killed (SIGKILL) after a
 //! periodic checkpoint, then continued by `hawser resume`, writes a `timeseries.csv`,
 //! `timeseries.parquet`, snapshots, ParaView files and `summary.json` byte-identical to the
-//! uninterrupted run's: RK4, SSP-RK3 and the
-//! three-level scheme on the catenary mooring, and RK4 with a free body in irregular waves
-//! (the ROV example). A stopped run exits 130 (SIGINT) or 143 (SIGTERM) with its status
+//! uninterrupted run's: RK4, SSP-RK3, the three-level scheme and adaptive generalized-α on the
+//! catenary mooring, and RK4 and generalized-α with a free body in irregular waves (the ROV
+//! example). A stopped run exits 130 (SIGINT) or 143 (SIGTERM) with its status
 //! "interrupted"; an output folder holding a run is refused without `--overwrite`.
 
 use std::path::{Path, PathBuf};
@@ -206,6 +206,19 @@ fn three_level_interrupted_resumes_bit_for_bit() {
 }
 
 #[test]
+fn generalized_alpha_interrupted_resumes_bit_for_bit() {
+    // Adaptive steps: the acceleration history, the step controller's nominal step and the
+    // Jacobian the Newton iterations reuse are all in the checkpoint.
+    interrupt_and_resume(
+        "generalized_alpha",
+        "catenary_mooring.toml",
+        60.0,
+        "scheme = \"generalized-alpha\"",
+        libc::SIGINT,
+    );
+}
+
+#[test]
 fn free_body_in_waves_interrupted_resumes_bit_for_bit() {
     interrupt_and_resume("rov", "rov_irregular_waves.toml", 12.0, "", libc::SIGINT);
 }
@@ -214,7 +227,13 @@ fn free_body_in_waves_interrupted_resumes_bit_for_bit() {
 fn killed_after_a_checkpoint_resumes_bit_for_bit() {
     // SIGKILL leaves no chance to flush or save: the periodic checkpoint and the files cut
     // back to their length at that checkpoint carry the run.
-    let (dir, path) = scenario("kill", "catenary_mooring.toml", 12.0, "");
+    kill_and_resume("kill", "catenary_mooring.toml", 12.0, "");
+}
+
+/// Kills a run (SIGKILL) once it has written a checkpoint (every 2 s simulated), resumes it,
+/// and compares with the uninterrupted run.
+fn kill_and_resume(name: &str, example: &str, duration: f64, extra: &str) {
+    let (dir, path) = scenario(name, example, duration, extra);
     let (whole, parts) = (dir.join("whole"), dir.join("parts"));
     run_whole(&path, &whole);
     let total = rows(&whole.join("timeseries.csv"));
@@ -223,6 +242,17 @@ fn killed_after_a_checkpoint_resumes_bit_for_bit() {
     resume(&parts);
     assert_same_results(&whole, &parts);
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn generalized_alpha_free_body_killed_after_a_checkpoint_resumes_bit_for_bit() {
+    // A free body (quaternion state, rotation-group update) with adaptive generalized-α steps.
+    kill_and_resume(
+        "kill_ga",
+        "rov_irregular_waves.toml",
+        30.0,
+        "scheme = \"generalized-alpha\"",
+    );
 }
 
 #[test]

@@ -138,30 +138,165 @@ pub fn force_jacobian(
     current_factor: Real,
     ws: &mut Workspace,
 ) {
-    let options = LoadOptions::direct(current_factor);
     kinematics_at_rest(system, y, current_factor, ws);
+    let mut scratch = JacobianScratch::new(system);
+    let Workspace {
+        lines,
+        blocks,
+        points,
+        coupled,
+        ..
+    } = ws;
+    loads_jacobian(
+        system,
+        JacobianAt::Rest { current_factor },
+        variable,
+        difference,
+        LoadsAt {
+            lines,
+            points,
+            meshes: None,
+            fluid: None,
+        },
+        blocks,
+        &mut coupled.point_diag,
+        &mut scratch,
+    );
+}
+
+/// The force Jacobian ∂F/∂x or ∂F/∂v of the dynamics at time `t` [s] and state `y`, with
+/// every point's kinematics (prescribed, coupled, free) and every line's velocities as they
+/// are, the current mesh of lines on winches and the run's wave kinematics: the stiffness
+/// and damping of the implicit scheme's Newton iteration
+/// ([`crate::integrate::GeneralizedAlpha`]). Call after [`System::assemble`] at the same
+/// (t, y) (it prepared the winches and the wave tables at t). Writes each line's blocks
+/// (nodes 0..=N) into `lines` (marked coupled) and the free points' own-load blocks into
+/// `points`; `ws` keeps only scratch. No allocation: the scratch is `scratch`.
+#[allow(clippy::too_many_arguments)]
+pub fn dynamic_force_jacobian(
+    system: &System,
+    t: Real,
+    y: &[Real],
+    variable: Variable,
+    ws: &mut Workspace,
+    lines: &mut [LineBlocks],
+    points: &mut [Mat3],
+    scratch: &mut JacobianScratch,
+) {
+    system.point_kinematics(t, y, ws);
+    system.gather_lines(y, ws);
+    let Workspace {
+        lines: work,
+        points: kinematics,
+        winches,
+        wave_points,
+        ..
+    } = ws;
+    loads_jacobian(
+        system,
+        JacobianAt::State { time: t },
+        variable,
+        Difference::Forward,
+        LoadsAt {
+            lines: work,
+            points: kinematics,
+            meshes: Some(winches),
+            fluid: Some(wave_points),
+        },
+        lines,
+        points,
+        scratch,
+    );
+}
+
+/// Scratch of a force Jacobian: the forces of one line at the base and perturbed states,
+/// sized once for the longest line.
+#[derive(Clone, Debug)]
+pub struct JacobianScratch {
+    base: Vec<Vec3>,
+    plus: Vec<Vec3>,
+}
+
+impl JacobianScratch {
+    /// Scratch for the lines of `system`.
+    pub fn new(system: &System) -> Self {
+        let n = system.lines.iter().map(|l| l.vectors()).max().unwrap_or(0);
+        Self {
+            base: vec![Vec3::zeros(); n],
+            plus: vec![Vec3::zeros(); n],
+        }
+    }
+}
+
+/// Where a force Jacobian is taken.
+#[derive(Clone, Copy, Debug)]
+enum JacobianAt {
+    /// The static state: t = 0, direct wave kinematics, the current scaled by this factor.
+    Rest { current_factor: Real },
+    /// A state of the dynamics at this time [s].
+    State { time: Real },
+}
+
+/// What [`loads_jacobian`] reads and perturbs: the lines' gathered kinematics, the points'
+/// kinematics, and in the dynamics the current meshes of winch lines and the run's wave
+/// tables.
+struct LoadsAt<'a> {
+    lines: &'a mut [crate::system::LineWork],
+    points: &'a [crate::system::PointKinematics],
+    meshes: Option<&'a [Option<crate::system::WinchWork>]>,
+    fluid: Option<&'a crate::system::WavePoints>,
+}
+
+/// The Jacobian of every line's forces and every free point's own load by coloured finite
+/// differences (see [`force_jacobian`]), from the kinematics in `at`, into `out` and
+/// `out_points`.
+#[allow(clippy::too_many_arguments)]
+fn loads_jacobian(
+    system: &System,
+    place: JacobianAt,
+    variable: Variable,
+    difference: Difference,
+    at: LoadsAt,
+    out: &mut [LineBlocks],
+    out_points: &mut [Mat3],
+    scratch: &mut JacobianScratch,
+) {
+    let (time, current_factor) = match place {
+        JacobianAt::Rest { current_factor } => (0.0, current_factor),
+        JacobianAt::State { time } => (time, 1.0),
+    };
     let env = &system.environment;
-    let mut base: Vec<Vec3> = Vec::new();
-    let mut plus: Vec<Vec3> = Vec::new();
+    let JacobianScratch { base, plus } = scratch;
     for (li, l) in system.lines.iter().enumerate() {
         let n = l.vectors() - 1;
         let h = match variable {
             Variable::Position => position_step(system, li, difference),
             Variable::Velocity => VELOCITY_STEP,
         };
+        let mesh = match at.meshes.and_then(|m| m[li].as_ref()) {
+            Some(w) => &w.mesh,
+            None => &l.mesh,
+        };
+        let options = LoadOptions {
+            current_factor,
+            fluid: match at.fluid {
+                Some(w) => w.of_line(li),
+                None => crate::physics::static_kinematics::FluidPoints::Direct,
+            },
+        };
         // Tangents (dimensionless) take the step per metre of the shortest element.
         let scale = |j: usize| 1.0 / l.length_scale(j);
-        let blocks = &mut ws.blocks[li];
+        let blocks = &mut out[li];
         blocks.coupled = true;
         blocks.clear();
         let stride = 2 * blocks.width() + 1;
-        let lw = &mut ws.lines[li];
-        let evaluate = |lw: &mut crate::system::LineWork, out: &mut Vec<Vec3>| {
+        let lw = &mut at.lines[li];
+        let evaluate = |lw: &mut crate::system::LineWork, out: &mut [Vec3]| {
             line_forces(
-                &l.mesh,
+                mesh,
                 &l.discretisation,
                 env,
-                0.0,
+                time,
                 &lw.position,
                 &lw.velocity,
                 &mut lw.force,
@@ -169,8 +304,7 @@ pub fn force_jacobian(
                 None,
                 options,
             );
-            out.clear();
-            out.extend_from_slice(&lw.force);
+            out[..=n].copy_from_slice(&lw.force[..=n]);
         };
         let shift = |lw: &mut crate::system::LineWork, colour: usize, k: usize, by: Real| {
             let v = match variable {
@@ -182,12 +316,12 @@ pub fn force_jacobian(
             }
         };
         if difference == Difference::Forward {
-            evaluate(lw, &mut base);
+            evaluate(lw, base);
         }
         for colour in 0..stride.min(n + 1) {
             for k in 0..3 {
                 shift(lw, colour, k, h);
-                evaluate(lw, &mut plus);
+                evaluate(lw, plus);
                 let step = match difference {
                     Difference::Forward => {
                         shift(lw, colour, k, -h);
@@ -195,7 +329,7 @@ pub fn force_jacobian(
                     }
                     Difference::Central => {
                         shift(lw, colour, k, -2.0 * h);
-                        evaluate(lw, &mut base);
+                        evaluate(lw, base);
                         shift(lw, colour, k, h);
                         2.0 * h
                     }
@@ -211,7 +345,7 @@ pub fn force_jacobian(
         }
     }
     for (f, &p) in system.free_points.iter().enumerate() {
-        let k0 = ws.points[p];
+        let k0 = at.points[p];
         let h = match variable {
             Variable::Position => POINT_POSITION_STEP,
             Variable::Velocity => VELOCITY_STEP,
@@ -222,9 +356,9 @@ pub fn force_jacobian(
                 Variable::Position => k.position[axis] += by,
                 Variable::Velocity => k.velocity[axis] += by,
             }
-            system.point_own_load(p, &k, 0.0, current_factor).0
+            system.point_own_load(p, &k, time, current_factor).0
         };
-        let f0 = system.point_own_load(p, &k0, 0.0, current_factor).0;
+        let f0 = system.point_own_load(p, &k0, time, current_factor).0;
         let mut m = Mat3::zeros();
         for k in 0..3 {
             let column = match difference {
@@ -233,7 +367,7 @@ pub fn force_jacobian(
             };
             m.set_column(k, &column);
         }
-        ws.coupled.point_diag[f] = m;
+        out_points[f] = m;
     }
 }
 

@@ -74,6 +74,18 @@ impl<'a> Simulation<'a> {
         self.stepper.evaluations_per_step()
     }
 
+    /// The scheme the run uses and why (`scheme = "auto"` resolved,
+    /// [`crate::integrate::choose_scheme`]).
+    pub fn scheme(&self) -> &crate::integrate::SchemeChoice {
+        self.stepper.scheme()
+    }
+
+    /// What the generalized-α scheme did so far: steps, refused steps, Newton iterations,
+    /// Jacobians (`None` for the other schemes).
+    pub fn implicit_statistics(&self) -> Option<crate::integrate::generalized_alpha::Statistics> {
+        self.stepper.implicit_statistics()
+    }
+
     /// Steps taken so far.
     pub fn steps_done(&self) -> u64 {
         self.stepper.steps_done()

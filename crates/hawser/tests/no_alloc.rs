@@ -7,7 +7,7 @@
 //! a consistent-mass line with a free point mass; the same with lumped mass; and two lines
 //! sharing a free point (the dense shared-point solve) with a prescribed, time-series end, in
 //! water with current, an irregular sea, drag, added mass and seabed contact, under each
-//! scheme; the same with a fixed sphere and a moving cylinder in contact with a line; and the
+//! scheme (generalized-α with adaptive steps); the same with a fixed sphere and a moving cylinder in contact with a line; and the
 //! same with one `hermite` line with bending (and the obstacles), the same with both lines on
 //! winches, and with one `dg` line. And a `Session` with a coupled fairlead, an observer that
 //! reads every channel and line sample, and repeated coupling intervals: 290 intervals of a
@@ -29,7 +29,12 @@ use hawser::system::System;
 fn check(name: &str, model: &Model, scheme: Scheme) {
     let system = System::new(model).unwrap();
     let y = system.straight_state();
-    let dt = 0.5 * system.stable_step(scheme).0;
+    // Generalized-α has no stability limit: its steps are sized from RK4's.
+    let dt = 0.5
+        * system
+            .stable_step(scheme)
+            .0
+            .min(system.stable_step(Scheme::Rk4).0);
     let mut settings = Settings {
         scheme,
         ..fixed_step_settings(dt, scheme)
@@ -37,6 +42,13 @@ fn check(name: &str, model: &Model, scheme: Scheme) {
     if scheme == Scheme::ThreeLevel {
         // Automatic, variable steps: the step is chosen again every output interval.
         settings.time_step = TimeStep::Auto;
+        settings.output_interval = 20.0 * dt;
+    }
+    if scheme == Scheme::GeneralizedAlpha {
+        // Adaptive steps (error estimate, refused steps, landing on output times) with a
+        // tolerance tight enough that the controller and the Jacobian refreshes both act.
+        settings.time_step = TimeStep::Auto;
+        settings.tolerance = 1e-6;
         settings.output_interval = 20.0 * dt;
     }
     let mut sim = Simulation::new(&system, &settings, y).unwrap();
@@ -84,7 +96,7 @@ fn time_loop_does_not_allocate() {
             mass_matrix,
         );
         model.environment.current = Current::Uniform(Vec3::new(0.5, 0.2, 0.0));
-        for scheme in [Scheme::Rk4, Scheme::ThreeLevel] {
+        for scheme in [Scheme::Rk4, Scheme::ThreeLevel, Scheme::GeneralizedAlpha] {
             check(
                 &format!("{mass_matrix:?} line + free point, {scheme:?}"),
                 &model,
@@ -160,7 +172,12 @@ fn time_loop_does_not_allocate() {
         end_b: LineEnd::Point(2),
         winch: None,
     });
-    for scheme in [Scheme::Rk4, Scheme::SspRk3, Scheme::ThreeLevel] {
+    for scheme in [
+        Scheme::Rk4,
+        Scheme::SspRk3,
+        Scheme::ThreeLevel,
+        Scheme::GeneralizedAlpha,
+    ] {
         check("two lines on a shared buoy", &model, scheme);
     }
     // The same with the waves at the static position (the cache's ring refilled as time
@@ -233,7 +250,12 @@ fn time_loop_does_not_allocate() {
         obstacle_forces(&system, &ws, 0.0, &mut loads);
         assert!(loads.iter().all(|l| l.contact_length > 0.0), "{loads:?}");
     }
-    for scheme in [Scheme::Rk4, Scheme::SspRk3, Scheme::ThreeLevel] {
+    for scheme in [
+        Scheme::Rk4,
+        Scheme::SspRk3,
+        Scheme::ThreeLevel,
+        Scheme::GeneralizedAlpha,
+    ] {
         check("two lines on a shared buoy, with obstacles", &model, scheme);
     }
 
@@ -241,7 +263,12 @@ fn time_loop_does_not_allocate() {
     // end and the three-level scheme's exact mass stages.
     model.lines[0].formulation = Formulation::Hermite;
     model.line_types[0].bending_stiffness = 1.0e3;
-    for scheme in [Scheme::Rk4, Scheme::SspRk3, Scheme::ThreeLevel] {
+    for scheme in [
+        Scheme::Rk4,
+        Scheme::SspRk3,
+        Scheme::ThreeLevel,
+        Scheme::GeneralizedAlpha,
+    ] {
         check("hermite and fe lines on a shared buoy", &model, scheme);
     }
 
@@ -264,7 +291,12 @@ fn time_loop_does_not_allocate() {
     };
     model.lines[0].winch = Some(winch.clone());
     model.lines[1].winch = Some(winch);
-    for scheme in [Scheme::Rk4, Scheme::SspRk3, Scheme::ThreeLevel] {
+    for scheme in [
+        Scheme::Rk4,
+        Scheme::SspRk3,
+        Scheme::ThreeLevel,
+        Scheme::GeneralizedAlpha,
+    ] {
         check("hermite and fe lines on winches", &model, scheme);
     }
     model.lines[0].winch = None;

@@ -29,9 +29,14 @@ pub struct BenchArgs {
     /// element as their nodes.
     #[arg(long, value_name = "P")]
     pub order: Option<usize>,
-    /// Integration scheme: as-is (the scenario's), rk4, ssp-rk3, three-level or all.
+    /// Integration scheme: as-is (the scenario's), rk4, ssp-rk3, three-level,
+    /// generalized-alpha, auto or all (the four schemes).
     #[arg(long, default_value = "as-is")]
     pub scheme: String,
+    /// `simulation.tolerance` of the cases (the adaptive generalized-α step's local error,
+    /// and the accuracy `auto` chooses for) [-].
+    #[arg(long)]
+    pub tolerance: Option<Real>,
     /// Free rigid bodies: as-is, points (each replaced by point masses at its line ends,
     /// the lines unchanged) or both (each case twice; prints the overhead per body and
     /// step).
@@ -79,6 +84,7 @@ pub fn run(args: &BenchArgs) -> Result<ExitCode> {
             formulation: &args.formulation,
             order: args.order,
             scheme: &args.scheme,
+            tolerance: args.tolerance,
             bodies: &args.bodies,
             waves: &args.waves,
             kinematics: &args.kinematics,
@@ -95,6 +101,7 @@ struct BenchChoice<'a> {
     formulation: &'a str,
     order: Option<usize>,
     scheme: &'a str,
+    tolerance: Option<Real>,
     bodies: &'a str,
     waves: &'a str,
     kinematics: &'a str,
@@ -146,13 +153,19 @@ fn bench(
         "rk4" => vec![Some(Scheme::Rk4)],
         "ssp-rk3" => vec![Some(Scheme::SspRk3)],
         "three-level" => vec![Some(Scheme::ThreeLevel)],
+        "generalized-alpha" => vec![Some(Scheme::GeneralizedAlpha)],
+        "auto" => vec![Some(Scheme::Auto)],
         "all" => vec![
             Some(Scheme::Rk4),
             Some(Scheme::SspRk3),
             Some(Scheme::ThreeLevel),
+            Some(Scheme::GeneralizedAlpha),
         ],
         other => {
-            eprintln!("error: --scheme {other}: expected as-is, rk4, ssp-rk3, three-level or all");
+            eprintln!(
+                "error: --scheme {other}: expected as-is, rk4, ssp-rk3, three-level, \
+                 generalized-alpha, auto or all"
+            );
             return Ok(ExitCode::from(2));
         }
     };
@@ -257,6 +270,9 @@ fn bench(
         }
         if let Some(s) = scheme {
             model.settings.scheme = s;
+        }
+        if let Some(t) = choice.tolerance {
+            model.settings.tolerance = t;
         }
         if let Some(d) = duration {
             model.settings.duration = d;
@@ -365,7 +381,7 @@ fn bench(
         results.push(serde_json::json!({
             "formulation": system.lines.first().map_or("fe", |l| l.discretisation.name()),
             "order": model.lines.first().filter(|l| l.formulation == Formulation::Dg).map(|l| l.sections[0].order),
-            "scheme": format!("{:?}", model.settings.scheme).to_lowercase(),
+            "scheme": sim.scheme().scheme.name(),
             "stable_step": limit,
             "mass_matrix": format!("{:?}", c.mass).to_lowercase(),
             "nodes": nodes,

@@ -75,6 +75,12 @@ pub enum SchemeSpec {
     /// The elastic-link paper's explicit three-time-level predictor–corrector with variable
     /// steps.
     ThreeLevel,
+    /// The implicit generalized-α method (Chung and Hulbert 1993) with Newton iterations:
+    /// adaptive steps with `time_step = "auto"`, far above the explicit stability limit.
+    GeneralizedAlpha,
+    /// RK4 or generalized-α, whichever the rule of docs/implicit.md finds cheaper at the
+    /// `tolerance` asked (opt-in; the default is `rk4`).
+    Auto,
 }
 
 /// A result format written besides CSV and JSON (which every run writes).
@@ -129,9 +135,20 @@ pub struct SimulationSpec {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<f64>")]
     pub safety_factor: Option<Spanned<f64>>,
-    /// `"rk4"` (default), `"ssp-rk3"` or `"three-level"`.
+    /// `"rk4"` (default), `"ssp-rk3"`, `"three-level"`, `"generalized-alpha"` or `"auto"`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub scheme: Option<SchemeSpec>,
+    /// ρ∞ of the generalized-α scheme [-], in [0, 1]: the amplitude factor per step of a mode
+    /// far above what the step resolves (1: no numerical dissipation), default 0.8.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub spectral_radius: Option<Spanned<f64>>,
+    /// Accuracy asked [-]: the largest local error per step of the adaptive generalized-α
+    /// step, in element tension relative to the line's reference tension; also what
+    /// `scheme = "auto"` chooses for. Default 1e-4.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub tolerance: Option<Spanned<f64>>,
     /// A fixed `time_step` above the stability limit: `"refuse"` the run (default) or take
     /// the `"auto"` step instead.
     #[serde(default, skip_serializing_if = "Option::is_none")]

@@ -46,7 +46,7 @@ impl Scheme {
         match self {
             Scheme::Rk4 => Some(&RK4),
             Scheme::SspRk3 => Some(&SSP_RK3),
-            Scheme::ThreeLevel => None,
+            Scheme::ThreeLevel | Scheme::GeneralizedAlpha | Scheme::Auto => None,
         }
     }
 }

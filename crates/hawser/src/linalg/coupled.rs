@@ -249,6 +249,9 @@ pub struct CoupledSystem {
     lu: DenseLu,
     b: Vec<Real>,
     tmp: Vec<Real>,
+    /// Whether the solve in progress factors the matrices (false: it reuses the factors of
+    /// the last solve, [`CoupledSystem::solve_again`]).
+    factoring: bool,
 }
 
 impl CoupledSystem {
@@ -270,6 +273,7 @@ impl CoupledSystem {
             lu: DenseLu::new(n),
             b: vec![0.0; n],
             tmp: vec![0.0; n],
+            factoring: true,
         }
     }
 
@@ -296,9 +300,13 @@ impl CoupledSystem {
     }
 
     /// Adds `sign`·m as the coefficient of slot q's acceleration in slot p's row.
+    /// When the solve reuses the factors, only the right-hand side's part is added.
     fn add_block(&mut self, p: usize, q: usize, m: &Mat3, sign: Real) {
         let np = self.point_diag.len();
         if p < np && q < np {
+            if !self.factoring {
+                return;
+            }
             for r in 0..3 {
                 for c in 0..3 {
                     self.lu.add(3 * p + r, 3 * q + c, sign * m[(r, c)]);
@@ -308,10 +316,12 @@ impl CoupledSystem {
         }
         let (op, wp, jp, _) = self.slot_map(p);
         let (oq, wq, jq, cq) = self.slot_map(q);
-        let full = jp.transpose() * m * jq;
-        for r in 0..wp {
-            for c in 0..wq {
-                self.lu.add(op + r, oq + c, sign * full[(r, c)]);
+        if self.factoring {
+            let full = jp.transpose() * m * jq;
+            for r in 0..wp {
+                for c in 0..wq {
+                    self.lu.add(op + r, oq + c, sign * full[(r, c)]);
+                }
             }
         }
         // The known part of a_q = J_q u + c_q moves to the right-hand side.
@@ -362,21 +372,23 @@ impl CoupledSystem {
                     }
                 }
             }
-            line.banded.clear();
-            for i in 1..n {
-                for j in i.saturating_sub(w).max(1)..=(i + w).min(n - 1) {
-                    let b = line.block(i, j);
-                    for r in 0..3 {
-                        for c in 0..3 {
-                            line.banded.set(3 * (i - 1) + r, 3 * (j - 1) + c, b[(r, c)]);
+            if self.factoring {
+                line.banded.clear();
+                for i in 1..n {
+                    for j in i.saturating_sub(w).max(1)..=(i + w).min(n - 1) {
+                        let b = line.block(i, j);
+                        for r in 0..3 {
+                            for c in 0..3 {
+                                line.banded.set(3 * (i - 1) + r, 3 * (j - 1) + c, b[(r, c)]);
+                            }
                         }
                     }
                 }
+                line.banded.factor().map_err(|k| Singular::Line {
+                    line: li,
+                    node: k / 3 + 1,
+                })?;
             }
-            line.banded.factor().map_err(|k| Singular::Line {
-                line: li,
-                node: k / 3 + 1,
-            })?;
             for i in 1..n {
                 for r in 0..3 {
                     line.column[3 * (i - 1) + r] = line.x[i][r];
@@ -388,7 +400,7 @@ impl CoupledSystem {
                 line.x[i] = Vec3::new(line.column[k], line.column[k + 1], line.column[k + 2]);
             }
             for (end, node) in [(line.end_a, 0), (line.end_b, n)] {
-                if !matches!(end, EndKind::Free(_)) {
+                if !matches!(end, EndKind::Free(_)) || !self.factoring {
                     continue;
                 }
                 for c in 0..3 {
@@ -458,8 +470,28 @@ impl CoupledSystem {
 
     /// Solves the whole system in place: every line's `x` and `point_x` become the solution.
     pub fn solve(&mut self, lines: &mut [LineBlocks]) -> Result<(), Singular> {
+        self.factoring = true;
+        self.eliminate(lines)
+    }
+
+    /// Solves for new right-hand sides (every line's `x`, `point_x`, `body_x`) with the
+    /// factors of the last [`CoupledSystem::solve`]: the lines' blocks, the points' and
+    /// bodies' own blocks and the body slots' offsets must be those it factored (the biases
+    /// may differ). The same arithmetic as `solve` on the right-hand side, without the
+    /// factorisations (the implicit scheme's Newton iterations on one iteration matrix).
+    pub fn solve_again(&mut self, lines: &mut [LineBlocks]) -> Result<(), Singular> {
+        self.factoring = false;
+        let solved = self.eliminate(lines);
+        self.factoring = true;
+        solved
+    }
+
+    /// [`CoupledSystem::solve`], factoring when `self.factoring`.
+    fn eliminate(&mut self, lines: &mut [LineBlocks]) -> Result<(), Singular> {
         let np = self.point_diag.len();
-        self.lu.clear();
+        if self.factoring {
+            self.lu.clear();
+        }
         for p in 0..np {
             let d = self.point_diag[p];
             self.add_block(p, p, &d, 1.0);
@@ -470,8 +502,10 @@ impl CoupledSystem {
         for k in 0..self.body_diag.len() {
             let o = self.body_row(k);
             for r in 0..6 {
-                for c in 0..6 {
-                    self.lu.add(o + r, o + c, self.body_diag[k][(r, c)]);
+                if self.factoring {
+                    for c in 0..6 {
+                        self.lu.add(o + r, o + c, self.body_diag[k][(r, c)]);
+                    }
                 }
                 self.b[o + r] = self.body_x[k][r];
             }
@@ -495,23 +529,27 @@ impl CoupledSystem {
                     line.x[n - 1] -= line.upper[n - 1] * xb;
                 }
                 if line.coupled {
-                    line.factor
-                        .factor(
-                            &line.diag[1..n],
-                            &line.lower[1..n - 1],
-                            &line.upper[1..n - 1],
-                        )
-                        .map_err(|k| Singular::Line {
-                            line: li,
-                            node: k + 1,
-                        })?;
+                    if self.factoring {
+                        line.factor
+                            .factor(
+                                &line.diag[1..n],
+                                &line.lower[1..n - 1],
+                                &line.upper[1..n - 1],
+                            )
+                            .map_err(|k| Singular::Line {
+                                line: li,
+                                node: k + 1,
+                            })?;
+                    }
                     line.factor.solve(interior, &mut line.x[1..n]);
-                    if let EndKind::Free(_) = line.end_a {
+                    if !self.factoring {
+                        // The responses depend on the blocks only: kept.
+                    } else if let EndKind::Free(_) = line.end_a {
                         line.response_a.iter_mut().for_each(|m| *m = Mat3::zeros());
                         line.response_a[0] = line.lower[0];
                         line.factor.solve_blocks(interior, &mut line.response_a);
                     }
-                    if let EndKind::Free(_) = line.end_b {
+                    if let (true, EndKind::Free(_)) = (self.factoring, line.end_b) {
                         line.response_b.iter_mut().for_each(|m| *m = Mat3::zeros());
                         line.response_b[interior - 1] = line.upper[n - 1];
                         line.factor.solve_blocks(interior, &mut line.response_b);
@@ -566,9 +604,11 @@ impl CoupledSystem {
         }
         // 3. Solve the points and bodies.
         if !self.b.is_empty() {
-            self.lu
-                .factor()
-                .map_err(|k| Singular::Point((k / 3).min(np)))?;
+            if self.factoring {
+                self.lu
+                    .factor()
+                    .map_err(|k| Singular::Point((k / 3).min(np)))?;
+            }
             self.lu.solve(&mut self.b, &mut self.tmp);
             for p in 0..np {
                 self.point_x[p] = Vec3::new(self.b[3 * p], self.b[3 * p + 1], self.b[3 * p + 2]);

@@ -27,7 +27,7 @@ use crate::error::ModelError;
 use crate::math::Real;
 use crate::physics::environment::Environment;
 
-/// Explicit time-integration scheme.
+/// Time-integration scheme.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum Scheme {
     /// Classical 4th-order Runge–Kutta (position-vector paper §3).
@@ -38,13 +38,21 @@ pub enum Scheme {
     /// The elastic-link paper's explicit three-time-level scheme with variable steps and a
     /// predictor–corrector (eqs. 35–48), [`crate::integrate::ThreeLevel`].
     ThreeLevel,
+    /// The implicit generalized-α method of Chung and Hulbert (1993) with Newton iterations
+    /// on the block-banded Jacobian, [`crate::integrate::GeneralizedAlpha`]; its high-frequency
+    /// spectral radius is [`Settings::spectral_radius`].
+    GeneralizedAlpha,
+    /// The cheapest of RK4 and generalized-α at the accuracy the settings ask for, chosen when
+    /// the run starts ([`crate::integrate::choose_scheme`]).
+    Auto,
 }
 
 /// Time step of a dynamic run.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum TimeStep {
-    /// The largest stable step from the CFL limit of every element and point, times the
-    /// safety factor.
+    /// Explicit schemes: the largest stable step from the CFL limit of every element and
+    /// point, times the safety factor. Generalized-α: adaptive steps that keep the local error
+    /// estimate within [`Settings::tolerance`].
     Auto,
     /// A fixed step [s]; refused when above the stability limit.
     Fixed(Real),
@@ -76,6 +84,12 @@ pub enum InitialCondition {
     SteadyTow,
 }
 
+/// Default ρ∞ of the generalized-α scheme ([`Settings::spectral_radius`]).
+pub const DEFAULT_SPECTRAL_RADIUS: Real = 0.8;
+
+/// Default accuracy of a run ([`Settings::tolerance`]).
+pub const DEFAULT_TOLERANCE: Real = 1e-4;
+
 /// Settings of a simulation.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Settings {
@@ -85,8 +99,20 @@ pub struct Settings {
     pub time_step: TimeStep,
     /// Safety factor applied to the stability limit by [`TimeStep::Auto`] [-]; default 0.8.
     pub safety_factor: Real,
-    /// Integration scheme.
+    /// Integration scheme; default [`Scheme::Rk4`] ([`Scheme::Auto`] is opt-in).
     pub scheme: Scheme,
+    /// ρ∞ of the generalized-α scheme [-], in [0, 1]: the spectral radius of its amplification
+    /// matrix as ωΔt → ∞, i.e. the factor by which an unresolved mode's amplitude is multiplied
+    /// per step (Chung and Hulbert 1993). 1 dissipates nothing (the trapezoidal rule); 0 damps
+    /// unresolved modes in one step. Default 0.8 (docs/implicit.md): a mode of ωΔt = 3.9 loses
+    /// 2.1 % of its amplitude per step, a mode of ωΔt = 0.31 (20 steps per period) 0.014 % per
+    /// period (tests/generalized_alpha.rs).
+    pub spectral_radius: Real,
+    /// Accuracy a run asks for [-]: the largest local error per step of the adaptive
+    /// generalized-α step ([`TimeStep::Auto`]), in each element's tension relative to its line's
+    /// reference tension, and the accuracy [`Scheme::Auto`] chooses a scheme for. Default 1e-4
+    /// (docs/implicit.md).
+    pub tolerance: Real,
     /// What a fixed `time_step` above the stability limit does.
     pub step_above_limit: StepAboveLimit,
     /// Interval between time-series samples [s].
@@ -109,6 +135,8 @@ impl Default for Settings {
             time_step: TimeStep::Auto,
             safety_factor: 0.8,
             scheme: Scheme::Rk4,
+            spectral_radius: DEFAULT_SPECTRAL_RADIUS,
+            tolerance: DEFAULT_TOLERANCE,
             step_above_limit: StepAboveLimit::Refuse,
             output_interval: 0.1,
             snapshot_interval: None,
@@ -304,6 +332,15 @@ impl Model {
                 "simulation".into(),
                 "duration must be ≥ 0 s and output_interval > 0 s",
             );
+        }
+        if !(0.0..=1.0).contains(&s.spectral_radius) {
+            return bad(
+                "simulation.spectral_radius".into(),
+                "must be in [0, 1] (ρ∞ of the generalized-α scheme)",
+            );
+        }
+        if !(s.tolerance > 0.0 && s.tolerance < 1.0) {
+            return bad("simulation.tolerance".into(), "must be in (0, 1)");
         }
         for (k, &p) in s.release.iter().enumerate() {
             let what = format!("simulation.release[{k}]");

@@ -4,8 +4,9 @@
 //!
 //! Format (little-endian): the magic `HAWSERCK`, the format version (u32), the model's hash
 //! ([`model_hash`], u64), then the run: samples taken and the last sample time, the clock, the
-//! stability limit and what sets it, the state vector, the three-level scheme's previous level
-//! and last step, the coupling tracks and interval, and the saved start of the coupling
+//! stability limit and what sets it, the state vector, the scheme's history (the three-level
+//! scheme's previous level and last step; generalized-α's accelerations, step controller and
+//! Jacobian), the coupling tracks and interval, and the saved start of the coupling
 //! interval. Every number is stored exactly (f64 bits), so a restored run steps exactly as the
 //! saved one would have. A checkpoint of another model, of another format version or a
 //! truncated one is refused with [`SimulationError::Checkpoint`].
@@ -169,7 +170,7 @@ fn get_clock(d: &mut Decoder) -> Result<Clock, SimulationError> {
 fn put_saved(e: &mut Encoder, s: &Saved) {
     e.f64s(&s.state);
     put_clock(e, &s.clock);
-    e.f64s(&s.previous);
+    e.f64s(&s.history);
     e.f64(s.last_step);
 }
 
@@ -177,7 +178,7 @@ fn get_saved(d: &mut Decoder) -> Result<Saved, SimulationError> {
     Ok(Saved {
         state: d.f64s()?,
         clock: get_clock(d)?,
-        previous: d.f64s()?,
+        history: d.f64s()?,
         last_step: d.f64()?,
     })
 }
@@ -309,7 +310,11 @@ impl Session {
         if session.stepper.state.len() != saved.state.len() {
             return Err(bad("the checkpoint's state has another length".into()));
         }
-        session.stepper.restore(&saved);
+        if !session.stepper.restore(&saved) {
+            return Err(bad(
+                "the checkpoint's integrator history does not fit this run's scheme".into(),
+            ));
+        }
         session.stepper.stable_step = (limit, culprit);
         get_tracks(&mut d, &mut session.stepper.ws.coupling)?;
         let open = d.bool()?;

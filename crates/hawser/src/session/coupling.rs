@@ -85,7 +85,8 @@ impl Session {
         {
             if now > t0 + tolerance {
                 // The interval was computed: go back to its start.
-                self.stepper.restore(&self.coupling.start);
+                // Saved by this run: its history fits.
+                let _ = self.stepper.restore(&self.coupling.start);
                 let (samples, last) = self.coupling.start_samples;
                 if self.samples > samples {
                     for o in self.observers.iter_mut().flatten() {

@@ -3,7 +3,8 @@
 //! low-level [`crate::simulation::Simulation`] borrows a system for tests that compose parts.
 
 use crate::error::{ModelError, SimulationError};
-use crate::integrate::{ExplicitRk, ThreeLevel};
+use crate::integrate::generalized_alpha::{Attempt, Statistics};
+use crate::integrate::{ExplicitRk, GeneralizedAlpha, SchemeChoice, ThreeLevel, choose_scheme};
 use crate::math::Real;
 use crate::model::{Scheme, Settings, TimeStep};
 use crate::system::{Location, System, Workspace};
@@ -23,7 +24,17 @@ pub(crate) enum Integrator {
     /// The three-level scheme; `variable`: the step is chosen again from the wave speeds
     /// (eq. 48) at the start of every output interval.
     ThreeLevel { scheme: ThreeLevel, variable: bool },
+    /// The implicit generalized-α scheme; `adaptive`: each step is chosen by its error
+    /// estimate ([`TimeStep::Auto`]), landing on every output time.
+    GeneralizedAlpha {
+        scheme: Box<GeneralizedAlpha>,
+        adaptive: bool,
+    },
 }
+
+/// The shortest adaptive step relative to the output interval [-]: a step that must be
+/// shorter to meet the tolerance stops the run (a discontinuity the model cannot step over).
+const MIN_ADAPTIVE_STEP: Real = 1e-9;
 
 /// Simulated time kept without accumulating round-off: t = anchor + n·Δt, with the anchor
 /// moved to the exact output time k·Δt_out whenever a step lands on one, so that in a run
@@ -89,9 +100,10 @@ pub(crate) struct Saved {
     pub state: Vec<Real>,
     /// The clock.
     pub clock: Clock,
-    /// The three-level scheme's previous level (empty for Runge–Kutta schemes).
-    pub previous: Vec<Real>,
-    /// The three-level scheme's last step [s].
+    /// The scheme's history: the three-level scheme's previous level; generalized-α's
+    /// accelerations and Jacobian ([`GeneralizedAlpha::history`]); empty for Runge–Kutta.
+    pub history: Vec<Real>,
+    /// The three-level scheme's last step [s] (0 for the others).
     pub last_step: Real,
 }
 
@@ -115,15 +127,19 @@ pub struct Stepper {
     pub(crate) interrupt: Option<Arc<AtomicBool>>,
     /// Steps done when the workspace was last evaluated (`None`: never).
     evaluated_at: Option<u64>,
+    /// The scheme the run uses and why.
+    scheme: SchemeChoice,
+    /// Whether the next adaptive step was planned by [`Stepper::advance`].
+    planned: bool,
 }
 
 /// What a step size rule found wrong.
 pub(crate) fn scheme_error(system: &System, scheme: Scheme) -> Option<SimulationError> {
-    if scheme == Scheme::ThreeLevel
+    if matches!(scheme, Scheme::ThreeLevel | Scheme::GeneralizedAlpha)
         && let Some(l) = system.lines.iter().find(|l| l.dg().is_some())
     {
         return Some(SimulationError::Model(ModelError::SchemeCannotStepDg {
-            scheme: "three-level",
+            scheme: scheme.name(),
             line: l.name.clone(),
         }));
     }
@@ -146,15 +162,20 @@ impl Stepper {
         initial: Vec<Real>,
         check: bool,
     ) -> Result<Self, SimulationError> {
-        if let Some(e) = scheme_error(system, settings.scheme) {
+        let choice = choose_scheme(system, settings);
+        let scheme = choice.scheme;
+        if let Some(e) = scheme_error(system, scheme) {
             return Err(e);
         }
-        let (mut limit, mut culprit) = system.stable_step(settings.scheme);
+        let (mut limit, mut culprit) = system.stable_step(scheme);
+        if scheme == Scheme::GeneralizedAlpha {
+            culprit = "nothing: generalized-α is unconditionally stable".into();
+        }
         let stiffness_limit = limit;
         let n = initial.len();
         let mut ws = system.workspace();
         system.start_wave_tables(0.0, &initial, &mut ws);
-        if settings.scheme == Scheme::ThreeLevel {
+        if scheme == Scheme::ThreeLevel {
             // Eq. 48 at the initial strains, bounded by the stiffness-and-damping estimate.
             let mut derivative = vec![0.0; n];
             system
@@ -169,7 +190,12 @@ impl Stepper {
                 );
             }
         }
+        let adaptive = scheme == Scheme::GeneralizedAlpha && settings.time_step == TimeStep::Auto;
         let wanted = match settings.time_step {
+            // The first adaptive step: the a-priori accuracy step of the automatic choice.
+            TimeStep::Auto if adaptive => {
+                crate::integrate::choice::accuracy_step(system, settings).0
+            }
             TimeStep::Auto => settings.safety_factor * limit,
             TimeStep::Fixed(dt) => {
                 if check && dt > limit {
@@ -185,18 +211,33 @@ impl Stepper {
         // Auto: a whole number of steps per output interval, none longer than wanted. Fixed:
         // the user's step exactly, sampling every round(output_interval / step) steps.
         let (step, per_output) = match settings.time_step {
+            TimeStep::Auto if adaptive => (wanted.min(settings.output_interval), 1.0),
             TimeStep::Auto => {
                 let n = (settings.output_interval / wanted).ceil().max(1.0);
                 (settings.output_interval / n, n)
             }
             TimeStep::Fixed(dt) => (dt, (settings.output_interval / dt).round().max(1.0)),
         };
-        let integrator = match settings.scheme.tableau() {
-            Some(t) => Integrator::Rk(ExplicitRk::new(t, n)),
-            None => Integrator::ThreeLevel {
+        let integrator = match (scheme, scheme.tableau()) {
+            (_, Some(t)) => Integrator::Rk(ExplicitRk::new(t, n)),
+            (Scheme::GeneralizedAlpha, None) => Integrator::GeneralizedAlpha {
+                scheme: Box::new(GeneralizedAlpha::new(
+                    system,
+                    n,
+                    settings.spectral_radius,
+                    settings.tolerance,
+                )),
+                adaptive,
+            },
+            _ => Integrator::ThreeLevel {
                 scheme: ThreeLevel::new(system, n),
                 variable: settings.time_step == TimeStep::Auto,
             },
+        };
+        let interval = if adaptive {
+            settings.output_interval
+        } else {
+            step * per_output
         };
         Ok(Self {
             ws,
@@ -212,13 +253,53 @@ impl Stepper {
                 anchor: 0.0,
                 since_anchor: 0,
                 steps_done: 0,
-                interval: step * per_output,
+                interval,
                 next_output: 0,
             },
             stable_step: (limit, culprit),
             safety_factor: settings.safety_factor,
             stiffness_limit,
+            scheme: choice,
+            planned: false,
         })
+    }
+
+    /// The scheme the run uses and why ([`choose_scheme`]).
+    pub fn scheme(&self) -> &SchemeChoice {
+        &self.scheme
+    }
+
+    /// What the generalized-α scheme did so far (`None` for the other schemes).
+    pub fn implicit_statistics(&self) -> Option<Statistics> {
+        match &self.integrator {
+            Integrator::GeneralizedAlpha { scheme, .. } => Some(scheme.statistics),
+            _ => None,
+        }
+    }
+
+    /// Whether each step is chosen by an error estimate (generalized-α with automatic steps).
+    fn adaptive(&self) -> bool {
+        matches!(
+            self.integrator,
+            Integrator::GeneralizedAlpha { adaptive: true, .. }
+        )
+    }
+
+    /// The time [s] of the first output after now.
+    fn next_output_time(&self) -> Real {
+        let now = self.clock.time();
+        let mut k = self.clock.next_output;
+        while (k as Real) * self.clock.interval <= now + 1e-9 * self.clock.interval {
+            k += 1;
+        }
+        k as Real * self.clock.interval
+    }
+
+    /// An adaptive step of about `wanted` [s] that lands on `boundary` [s]: the distance to it
+    /// in ⌈distance / wanted⌉ equal steps.
+    fn landing_step(&self, boundary: Real, wanted: Real) -> Real {
+        let distance = boundary - self.clock.time();
+        distance / (distance / wanted - 1e-9).ceil().max(1.0)
     }
 
     /// Simulated time [s].
@@ -235,12 +316,16 @@ impl Stepper {
         match &self.integrator {
             Integrator::ThreeLevel { scheme, .. } => {
                 let (previous, last_step) = scheme.history();
-                saved.previous.clear();
-                saved.previous.extend_from_slice(previous);
+                saved.history.clear();
+                saved.history.extend_from_slice(previous);
                 saved.last_step = last_step;
             }
+            Integrator::GeneralizedAlpha { scheme, .. } => {
+                scheme.history(&mut saved.history);
+                saved.last_step = 0.0;
+            }
             Integrator::Rk(_) => {
-                saved.previous.clear();
+                saved.history.clear();
                 saved.last_step = 0.0;
             }
         }
@@ -251,14 +336,23 @@ impl Stepper {
         self.evaluated_at = None;
     }
 
-    /// Goes back to a saved point of this run (or of a run of the same model).
-    pub(crate) fn restore(&mut self, saved: &Saved) {
+    /// Goes back to a saved point of this run (or of a run of the same model); false when the
+    /// saved history does not fit this run's scheme.
+    pub(crate) fn restore(&mut self, saved: &Saved) -> bool {
         self.state.copy_from_slice(&saved.state);
         self.clock = saved.clock;
-        if let Integrator::ThreeLevel { scheme, .. } = &mut self.integrator {
-            scheme.set_history(&saved.previous, saved.last_step);
-        }
         self.evaluated_at = None;
+        match &mut self.integrator {
+            Integrator::ThreeLevel { scheme, .. } => {
+                if saved.history.len() != self.state.len() {
+                    return false;
+                }
+                scheme.set_history(&saved.history, saved.last_step);
+                true
+            }
+            Integrator::GeneralizedAlpha { scheme, .. } => scheme.set_history(&saved.history),
+            Integrator::Rk(_) => saved.history.is_empty(),
+        }
     }
 
     /// The state vector.
@@ -289,11 +383,13 @@ impl Stepper {
         self.clock.interval
     }
 
-    /// Right-hand-side (force) evaluations per step.
+    /// Right-hand-side (force) evaluations per step (generalized-α: per Newton iteration;
+    /// [`Stepper::implicit_statistics`] counts them).
     pub fn evaluations_per_step(&self) -> usize {
         match &self.integrator {
             Integrator::Rk(rk) => rk.stages(),
             Integrator::ThreeLevel { scheme, .. } => scheme.evaluations(),
+            Integrator::GeneralizedAlpha { scheme, .. } => scheme.evaluations(),
         }
     }
 
@@ -306,6 +402,11 @@ impl Stepper {
     /// values after; a step that diverged leaves the state and time of the last good step
     /// (what a run's final state reports).
     pub fn step(&mut self, system: &System) -> Result<(), SimulationError> {
+        if self.adaptive() && !std::mem::take(&mut self.planned) {
+            // A step not planned by `advance` (a bare `step`): land on the next output.
+            let step = self.landing_step(self.next_output_time(), self.clock.nominal);
+            self.clock.set_step(step);
+        }
         let (t, dt) = (self.clock.time(), self.clock.step);
         if let Some(flag) = &self.interrupt
             && flag.load(Ordering::Relaxed)
@@ -315,20 +416,18 @@ impl Stepper {
         self.last_good.0.copy_from_slice(&self.state);
         self.last_good.1 = self.clock;
         let done = match &mut self.integrator {
-            Integrator::Rk(rk) => rk.step(system, &mut self.ws, t, dt, &mut self.state),
-            Integrator::ThreeLevel { scheme, .. } => {
-                scheme.step(system, &mut self.ws, t, dt, &mut self.state)
-            }
+            Integrator::Rk(rk) => rk
+                .step(system, &mut self.ws, t, dt, &mut self.state)
+                .map_err(|loc| (loc, "singular mass matrix".to_string())),
+            Integrator::ThreeLevel { scheme, .. } => scheme
+                .step(system, &mut self.ws, t, dt, &mut self.state)
+                .map_err(|loc| (loc, "singular mass matrix".to_string())),
+            Integrator::GeneralizedAlpha { .. } => self.implicit_step(system, t, dt),
         };
         self.clock.steps_done += 1;
         self.clock.since_anchor += 1;
         let failed = match done {
-            Err(loc) => Some(divergence(
-                self.stable_step.0,
-                t,
-                loc,
-                "singular mass matrix",
-            )),
+            Err((loc, reason)) => Some(divergence(self.stable_step.0, t, loc, &reason)),
             Ok(()) => self.state.iter().position(|x| !x.is_finite()).map(|i| {
                 divergence(
                     self.stable_step.0,
@@ -345,6 +444,52 @@ impl Stepper {
             return Err(e);
         }
         Ok(())
+    }
+
+    /// A generalized-α step from t, of `dt` [s] or, adaptive, of what its error estimate
+    /// allows: refused attempts are tried again shorter, landing on the same boundary; the
+    /// clock takes the step done and the controller's next step as its nominal one.
+    fn implicit_step(
+        &mut self,
+        system: &System,
+        t: Real,
+        dt: Real,
+    ) -> Result<(), (Location, String)> {
+        let adaptive = self.adaptive();
+        let boundary = t + dt;
+        let mut dt = dt;
+        loop {
+            let Integrator::GeneralizedAlpha { scheme, .. } = &mut self.integrator else {
+                unreachable!("an implicit step of the generalized-α scheme")
+            };
+            let attempt = scheme
+                .step(system, &mut self.ws, t, dt, &mut self.state, adaptive)
+                .map_err(|f| (f.location, f.reason))?;
+            match attempt {
+                Attempt::Accepted { error } => {
+                    if adaptive {
+                        self.clock.nominal = scheme.next_step(self.clock.nominal, dt, error);
+                    }
+                    return Ok(());
+                }
+                Attempt::Rejected { error } => {
+                    let wanted = scheme.retry_step(dt, error);
+                    self.clock.nominal = wanted;
+                    dt = self.landing_step(boundary, wanted);
+                    if dt < MIN_ADAPTIVE_STEP * self.clock.interval {
+                        return Err((
+                            system.locate(0),
+                            format!(
+                                "the adaptive generalized-α step fell below {:.1e} s: the error \
+                                 estimate or the Newton iterations fail at every step",
+                                MIN_ADAPTIVE_STEP * self.clock.interval
+                            ),
+                        ));
+                    }
+                    self.clock.set_step(dt);
+                }
+            }
+        }
     }
 
     /// One step; at an output time, marks the output taken, evaluates and calls `sample`.
@@ -384,6 +529,14 @@ impl Stepper {
             let remaining = t - self.clock.time();
             if !(remaining > 1e-9 * nominal) {
                 break;
+            }
+            if self.adaptive() {
+                let boundary = t.min(self.next_output_time());
+                let step = self.landing_step(boundary, nominal);
+                self.clock.set_step(step);
+                self.planned = true;
+                self.step_sampled(system, &mut sample)?;
+                continue;
             }
             let k = remaining / nominal;
             let whole = k.round();

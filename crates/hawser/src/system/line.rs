@@ -135,6 +135,20 @@ impl SystemLine {
         self.discretisation.node_vector(node, self.mesh.elements())
     }
 
+    /// The vectors of element `e`: its two end positions (A, B) and, for `hermite`, its two
+    /// end tangents (`fe` has none; a `dg` line has no element vectors and gives its node
+    /// outputs).
+    pub fn element_vectors(&self, e: usize) -> ([usize; 2], Option<[usize; 2]>) {
+        let n = self.mesh.elements();
+        match &self.discretisation {
+            Discretisation::Fe { .. } | Discretisation::Dg(_) => ([e, e + 1], None),
+            Discretisation::Hermite(_) => {
+                let [ra, ta, rb, tb] = crate::formulation::hermite::element_vectors(e, n);
+                ([ra, rb], Some([ta, tb]))
+            }
+        }
+    }
+
     /// Number of quadrature points at which the line evaluates the fluid: 2 per `fe`
     /// element, 4 per `hermite` element, the Gauss points of a `dg` line.
     pub fn fluid_points(&self) -> usize {

@@ -407,6 +407,8 @@ pub(super) fn simulation_of(
         time_step,
         safety_factor: None,
         scheme: Some(SchemeSpec::Rk4),
+        spectral_radius: None,
+        tolerance: None,
         // dtM was chosen for MoorDyn's integrator.
         step_above_limit: Some(StepAboveLimitSpec::Auto),
         output_interval: output_interval.clone(),

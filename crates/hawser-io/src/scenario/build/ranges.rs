@@ -63,6 +63,8 @@ pub(super) const RANGES: &[(&str, Range)] = &[
     ("simulation.duration", TIME),
     ("simulation.time_step", all(0.0, 1e3, "s")),
     ("simulation.safety_factor", all(0.0, 1.0, "-")),
+    ("simulation.spectral_radius", all(0.0, 1.0, "-")),
+    ("simulation.tolerance", all(0.0, 1.0, "-")),
     ("simulation.output_interval", TIME),
     ("simulation.snapshot_interval", TIME),
     // [environment]

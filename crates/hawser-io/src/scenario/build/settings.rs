@@ -69,6 +69,8 @@ pub(super) fn build_settings(
     b: &mut Builder,
     spec: Option<&SimulationSpec>,
 ) -> (Settings, Option<Range<usize>>) {
+    // RK4 unless the scenario sets a scheme: `scheme = "auto"` is opt-in (docs/implicit.md
+    // says why it is not the default yet).
     let mut s = Settings::default();
     let Some(sim) = spec else { return (s, None) };
     s.duration = b.num(
@@ -112,10 +114,34 @@ pub(super) fn build_settings(
         ));
     }
     s.scheme = match sim.scheme {
+        Some(SchemeSpec::Rk4) | None => Scheme::Rk4,
         Some(SchemeSpec::SspRk3) => Scheme::SspRk3,
         Some(SchemeSpec::ThreeLevel) => Scheme::ThreeLevel,
-        Some(SchemeSpec::Rk4) | None => Scheme::Rk4,
+        Some(SchemeSpec::GeneralizedAlpha) => Scheme::GeneralizedAlpha,
+        Some(SchemeSpec::Auto) => Scheme::Auto,
     };
+    s.spectral_radius = b.opt(
+        &sim.spectral_radius,
+        "simulation.spectral_radius",
+        DEFAULT_SPECTRAL_RADIUS,
+        Check {
+            ok: |x| (0.0..=1.0).contains(&x),
+            expected: "-, in [0, 1]",
+        },
+        "ρ∞ of generalized-α: 1 keeps every mode's amplitude, 0 damps unresolved modes in one \
+         step; 0.8 is the default",
+    );
+    s.tolerance = b.opt(
+        &sim.tolerance,
+        "simulation.tolerance",
+        DEFAULT_TOLERANCE,
+        Check {
+            ok: |x| x > 0.0 && x < 1.0,
+            expected: "-, in (0, 1)",
+        },
+        "the local tension error per step relative to the line's reference tension; 1e-4 is \
+         the default",
+    );
     s.step_above_limit = match sim.step_above_limit {
         Some(StepAboveLimitSpec::Auto) => StepAboveLimit::UseAuto,
         Some(StepAboveLimitSpec::Refuse) | None => StepAboveLimit::Refuse,

@@ -1,0 +1,152 @@
+//! `scheme = "auto"`: the cheaper of RK4 at its stable step and adaptive generalized-α at the
+//! accuracy the settings ask for (docs/implicit.md states the rule and checks it).
+//!
+//! RK4 costs four evaluations of the forces per step and must step within its stability
+//! limit h_e (axial waves, seabed contact, damping: [`System::stable_step`]) whatever the
+//! motion. Generalized-α costs one evaluation and one block solve per Newton iteration, about
+//! three per step with the Jacobian reused (docs/implicit.md), and steps as far as the accuracy
+//! allows. Its step is not known before the run (the error estimate chooses it), so the rule
+//! estimates it from what the scenario shows of its time scales: the accuracy step
+//!
+//!   h_a = min(Δt_out, T_min / n(tol)),   n(tol) = 2π / √(12 · tol / c),
+//!
+//! where Δt_out is the output interval (steps land on the output times), T_min the shortest
+//! period of the excitation (prescribed sinusoids and orbits, wave components, RAO motions),
+//! and n(tol) the steps per period at which the second-order phase error per period of
+//! generalized-α on a mode of that period, (ωh)²/12 per radian, stays within the tolerance
+//! scaled by [`PHASE_PER_TOLERANCE`]. The run goes implicit when h_a ≥ [`SPEEDUP`] · h_e: the
+//! implicit step is then long enough to pay for its iterations. A run with a fixed
+//! `time_step` keeps RK4 (the step was chosen for an explicit scheme), and a run with `dg`
+//! lines steps explicitly (generalized-α cannot step them).
+
+use crate::math::Real;
+use crate::model::{Motion, PointKind, Scheme, Settings, TimeStep};
+use crate::system::System;
+
+/// The ratio of the accuracy step to RK4's stable step above which generalized-α is chosen
+/// [-]: its step costs about as much as RK4's four evaluations (three Newton iterations with a
+/// block solve each and the amortised Jacobian), so it must be this much longer to be
+/// clearly cheaper (docs/implicit.md measures the costs).
+pub const SPEEDUP: Real = 3.0;
+
+/// How much of the tolerance the a-priori phase error per radian may take [-] (calibrates
+/// n(tol) against the steps the adaptive controller takes on the bundled examples,
+/// docs/implicit.md).
+pub const PHASE_PER_TOLERANCE: Real = 100.0;
+
+/// The scheme a run uses and why.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SchemeChoice {
+    /// The scheme (never [`Scheme::Auto`]).
+    pub scheme: Scheme,
+    /// Why, in words with the numbers.
+    pub reason: String,
+}
+
+/// The scheme of a run of `system` with `settings`: the settings' own, or for
+/// [`Scheme::Auto`] the rule of the module doc.
+pub fn choose_scheme(system: &System, settings: &Settings) -> SchemeChoice {
+    let given = |scheme: Scheme, reason: String| SchemeChoice { scheme, reason };
+    if settings.scheme != Scheme::Auto {
+        return given(settings.scheme, "set by the scenario".into());
+    }
+    if let Some(l) = system.lines.iter().find(|l| l.dg().is_some()) {
+        return given(
+            Scheme::Rk4,
+            format!("line {} uses dg, which steps explicitly", l.name),
+        );
+    }
+    if let TimeStep::Fixed(dt) = settings.time_step {
+        return given(
+            Scheme::Rk4,
+            format!("the fixed time_step {dt:.3e} s is kept with RK4"),
+        );
+    }
+    let (limit, culprit) = system.stable_step(Scheme::Rk4);
+    let explicit = settings.safety_factor * limit;
+    let (accuracy, what) = accuracy_step(system, settings);
+    if accuracy >= SPEEDUP * explicit {
+        given(
+            Scheme::GeneralizedAlpha,
+            format!(
+                "the accuracy step {accuracy:.3e} s ({what}) is {:.0}× RK4's stable step \
+                 {explicit:.3e} s (set by {culprit})",
+                accuracy / explicit
+            ),
+        )
+    } else {
+        given(
+            Scheme::Rk4,
+            format!(
+                "RK4's stable step {explicit:.3e} s (set by {culprit}) is within {SPEEDUP}× the \
+                 accuracy step {accuracy:.3e} s ({what})"
+            ),
+        )
+    }
+}
+
+/// The a-priori accuracy step h_a [s] of the module doc and what sets it.
+pub fn accuracy_step(system: &System, settings: &Settings) -> (Real, String) {
+    let interval = settings.output_interval;
+    let Some(period) = shortest_period(system) else {
+        return (interval, "the output interval".into());
+    };
+    let steps =
+        2.0 * std::f64::consts::PI / (12.0 * settings.tolerance * PHASE_PER_TOLERANCE).sqrt();
+    let step = period / steps;
+    if step < interval {
+        (
+            step,
+            format!(
+                "{steps:.0} steps per {period:.3} s period of the excitation at tolerance {:.0e}",
+                settings.tolerance
+            ),
+        )
+    } else {
+        (interval, "the output interval".into())
+    }
+}
+
+/// The shortest period [s] of the excitation the model shows: prescribed sinusoids and orbits
+/// of points, the wave components (their highest frequency; they also drive RAO motions of
+/// prescribed bodies and vessels). `None` when nothing periodic drives the system.
+pub fn shortest_period(system: &System) -> Option<Real> {
+    let mut shortest = Real::INFINITY;
+    let mut frequency = |f: Real| {
+        if f > 0.0 && f.is_finite() {
+            shortest = shortest.min(1.0 / f);
+        }
+    };
+    let mut motion = |m: &Motion| match m {
+        Motion::Sinusoid {
+            amplitude,
+            frequency: f,
+            ..
+        } => {
+            for k in 0..3 {
+                if amplitude[k] != 0.0 {
+                    frequency(f[k]);
+                }
+            }
+        }
+        Motion::CircularOrbit {
+            radius,
+            frequency: f,
+            ..
+        } if *radius != 0.0 => frequency(*f),
+        _ => {}
+    };
+    for p in &system.points {
+        if let PointKind::Prescribed(m) = &p.kind {
+            motion(m);
+        }
+    }
+    // RAO motions of vessels and bodies move at the wave components' frequencies.
+    if let Some(field) = system.environment.waves.field() {
+        let omega = field.highest_frequency();
+        if omega > 0.0 {
+            shortest = shortest.min(2.0 * std::f64::consts::PI / omega);
+        }
+    }
+    shortest.is_finite().then_some(shortest)
+}
