@@ -49,7 +49,8 @@ pub fn line_forces(
     forces[..=n].iter_mut().for_each(|f| *f = Vec3::zeros());
     let g = env.gravity;
     let rho_w = env.water_density;
-    let bed_z = env.seabed_z();
+    // Nothing above the bed's highest point touches it (−depth for a flat bed).
+    let bed_top = env.seabed_top();
     let consistent = mass_matrix == MassMatrix::Consistent;
     // No current and no waves: the fluid is at rest everywhere.
     let still_water = env.is_still_water();
@@ -162,12 +163,11 @@ pub fn line_forces(
         }
 
         // Seabed contact (DG paper eqs. 15–16) by nodal quadrature over the element.
-        if ra.z < bed_z || rb.z < bed_z {
+        if ra.z < bed_top || rb.z < bed_top {
             let net_weight = (rho_w * sec.area - lt.mass_per_length) * g;
             for (node, rn, vn) in [(e, ra, va), (e + 1, rb, vb)] {
-                let f = env.seabed.contact_force(
-                    bed_z,
-                    rn.z,
+                let f = env.seabed_contact_force(
+                    &rn,
                     &vn,
                     lt.diameter,
                     lt.mass_per_length,

@@ -49,6 +49,7 @@ pub(super) fn build_environment(b: &mut Builder, spec: Option<&EnvironmentSpec>)
         ),
         depth: f64::INFINITY,
         seabed: Seabed::default(),
+        bathymetry: Default::default(),
         current: Current::None,
         waves: Waves::None,
         wave_kinematics: Default::default(),
