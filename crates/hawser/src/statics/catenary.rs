@@ -399,6 +399,52 @@ mod tests {
     }
 }
 #[cfg(test)]
+mod slope {
+    use super::*;
+
+    /// The OC3 chain on a bed rising (falling) at 5 %: B is reached, the line leaves the bed
+    /// tangentially (tension continuous, V = H tan α at the touchdown), the grounded length
+    /// carries its weight's component along the bed, and the forces on the whole line balance:
+    /// T_B − T_A (cos α, sin α) − w L ẑ + w cos α L_B n = 0 with n = (−sin α, cos α).
+    #[test]
+    fn closed_form_reaches_b_and_balances() {
+        let (l, w, ea) = (902.2, 700.0, 3.84e8);
+        for m in [0.05, -0.05, 0.2] {
+            let z = 250.0;
+            let c = solve_on_slope(848.67, z, l, w, ea, m).expect("converges");
+            assert!(c.grounded_length > 10.0, "{c:?}");
+            let (x, zb) = c.position(l);
+            assert!((x - 848.67).abs() < 1e-8 * l && (zb - z).abs() < 1e-8 * l);
+            let lb = c.grounded_length;
+            let (cos, sin) = (1.0 / m.hypot(1.0), m / m.hypot(1.0));
+            let (below, above) = (c.tension(lb * (1.0 - 1e-12)), c.tension(lb * (1.0 + 1e-12)));
+            assert!((below - above).abs() < 1e-6 * above, "{below} {above}");
+            assert!((c.tension(lb) - c.horizontal / cos).abs() < 1e-9 * c.horizontal);
+            // The touchdown lies on the bed, at the slope's height.
+            let (xt, zt) = c.position(lb);
+            assert!((zt - m * xt).abs() < 1e-9 * l);
+            let ta = c.tension_a();
+            let fx = c.horizontal - ta * cos - w * cos * lb * sin;
+            let fz = c.vertical_b - ta * sin - w * l + w * cos * lb * cos;
+            assert!(
+                fx.abs() < 1e-6 * w * l && fz.abs() < 1e-6 * w * l,
+                "{fx} {fz}"
+            );
+        }
+    }
+
+    /// A vanishing slope is the flat bed's closed form.
+    #[test]
+    fn small_slope_tends_to_the_flat_bed() {
+        let flat = solve(850.0, 250.0, 902.2, 700.0, 3.84e8, true).unwrap();
+        let tilted = solve_on_slope(850.0, 250.0, 902.2, 700.0, 3.84e8, 1e-10).unwrap();
+        assert!((flat.tension_a() / tilted.tension_a() - 1.0).abs() < 1e-7);
+        assert!((flat.tension_b() / tilted.tension_b() - 1.0).abs() < 1e-7);
+        assert!((flat.grounded_length - tilted.grounded_length).abs() < 1e-5);
+    }
+}
+
+#[cfg(test)]
 mod regression {
     /// A suspended line's tension at end A is √(H² + V_A²), not H (the grounded branch once
     /// caught s = 0 when nothing was grounded).
