@@ -262,10 +262,14 @@ impl Body {
         touching.then_some(total)
     }
 
-    /// Bound on the rate |λ| [1/s] of the seabed contact of the body, for the stable step:
-    /// ω = √(K_g A_max / m) with A_max the largest area it can press on the bed and m its
-    /// mass with the smallest translational added mass, or the damping rate c_A A_max / m when
-    /// larger; `None` without a seabed or a shape.
+    /// Bound on the rate |λ| [1/s] of the seabed contact of the body, for the stable step.
+    /// The contact's stiffness K_g A_max (A_max the largest area the shape can press on the
+    /// bed), its damping c_A A_max and the friction's slope at rest μ W π/v_μ (W the body's
+    /// weight in water, the normal force of a body resting on the bed alone) act on its
+    /// translation, with mass m (its own plus the smallest translational added mass), and, at
+    /// arms up to R (the reach of its shape from its origin), on its rotation, with inertia J
+    /// (the smallest principal inertia plus the smallest rotational added mass): the rate is
+    /// the largest of √(k/m), c/m, √(k R²/J) and c R²/J over these.
     pub fn seabed_rate(&self, env: &Environment) -> Option<Real> {
         let k = env.seabed.stiffness;
         if !(env.has_seabed() && k > 0.0) {
@@ -273,9 +277,22 @@ impl Body {
         }
         let (footprint, largest) = self.contact_areas()?;
         let m = self.mass + self.added_mass.fixed_rows::<3>(0).min().max(0.0);
-        let omega = (k * largest / m).sqrt();
-        let damping = self.contact_damping(env, footprint) * largest / m;
-        Some(omega.max(damping))
+        let j = self.inertia.symmetric_eigenvalues().min()
+            + self.added_mass.fixed_rows::<3>(3).min().max(0.0);
+        let r2 = self.contact_reach().powi(2);
+        let stiffness = k * largest;
+        let mut damping = self.contact_damping(env, footprint) * largest;
+        let wet = (self.mass - env.water_density * self.displacement.volume()) * env.gravity;
+        if env.seabed.friction_coefficient > 0.0 && wet > 0.0 {
+            damping = damping.max(env.seabed.friction_slope(wet, 1.0));
+        }
+        let translation = (stiffness / m).sqrt().max(damping / m);
+        let rotation = if j > 0.0 {
+            (stiffness * r2 / j).sqrt().max(damping * r2 / j)
+        } else {
+            Real::INFINITY
+        };
+        Some(translation.max(rotation))
     }
 }
 

@@ -13,9 +13,12 @@ use crate::physics::environment::Environment;
 /// along the bed's normal n and in its tangent plane.
 #[derive(Clone, Copy, Debug)]
 pub(super) struct SphereContact {
-    radius: Real,
-    stiffness: Real,
-    damping: Real,
+    /// Radius of the sphere of the point's volume [m].
+    pub(super) radius: Real,
+    /// Contact stiffness K_g π r² [N/m].
+    pub(super) stiffness: Real,
+    /// Contact damping [N·s/m].
+    pub(super) damping: Real,
 }
 
 impl SphereContact {

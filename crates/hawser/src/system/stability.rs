@@ -123,6 +123,16 @@ impl System {
             } = &p.kind
             {
                 point_rows[i].mass = mass + rho * volume * added_mass_coefficient;
+                // Its own seabed contact (a sphere of its volume): the spring, the damper and
+                // the friction's slope at rest under its weight in water.
+                if let Some(c) = &p.seabed_contact {
+                    point_rows[i].contact_stiffness += c.stiffness;
+                    point_rows[i].contact_damping += c.damping;
+                    let wet = (mass - rho * volume) * env.gravity;
+                    if seabed.friction_coefficient > 0.0 && wet > 0.0 {
+                        point_rows[i].friction_damping += seabed.friction_slope(wet, 1.0);
+                    }
+                }
             }
         }
         let mut worst = 0.0;
