@@ -269,7 +269,9 @@ impl Body {
     /// translation, with mass m (its own plus the smallest translational added mass), and, at
     /// arms up to R (the reach of its shape from its origin), on its rotation, with inertia J
     /// (the smallest principal inertia plus the smallest rotational added mass): the rate is
-    /// the largest of √(k/m), c/m, √(k R²/J) and c R²/J over these.
+    /// the largest of √(k/m), c/m, √(k R²/J) and c R²/J over these. The normal force on a
+    /// `Submerged` body's sphere passes through the sphere's centre, so its spring and damper
+    /// act at the arm of that centre only (its friction at the full reach).
     pub fn seabed_rate(&self, env: &Environment) -> Option<Real> {
         let k = env.seabed.stiffness;
         if !(env.has_seabed() && k > 0.0) {
@@ -280,15 +282,24 @@ impl Body {
         let j = self.inertia.symmetric_eigenvalues().min()
             + self.added_mass.fixed_rows::<3>(3).min().max(0.0);
         let r2 = self.contact_reach().powi(2);
+        let normal_r2 = match self.displacement {
+            Displacement::Submerged { .. } => self.centre_of_buoyancy.norm_squared(),
+            _ => r2,
+        };
         let stiffness = k * largest;
-        let mut damping = self.contact_damping(env, footprint) * largest;
+        let damping = self.contact_damping(env, footprint) * largest;
         let wet = (self.mass - env.water_density * self.displacement.volume()) * env.gravity;
-        if env.seabed.friction_coefficient > 0.0 && wet > 0.0 {
-            damping = damping.max(env.seabed.friction_slope(wet, 1.0));
-        }
-        let translation = (stiffness / m).sqrt().max(damping / m);
+        let friction = if env.seabed.friction_coefficient > 0.0 && wet > 0.0 {
+            env.seabed.friction_slope(wet, 1.0)
+        } else {
+            0.0
+        };
+        let translation = (stiffness / m).sqrt().max(damping.max(friction) / m);
         let rotation = if j > 0.0 {
-            (stiffness * r2 / j).sqrt().max(damping * r2 / j)
+            (stiffness * normal_r2 / j)
+                .sqrt()
+                .max(damping * normal_r2 / j)
+                .max(friction * r2 / j)
         } else {
             Real::INFINITY
         };
