@@ -10,7 +10,7 @@
 mod common;
 use common::*;
 use hawser::model::Formulation;
-use hawser::verification::{Fidelity, grounded_catenary, suspended_catenary};
+use hawser::verification::{Fidelity, grounded_catenary, sloped_catenary, suspended_catenary};
 
 #[test]
 fn suspended_catenary_end_tensions_match_closed_form() {
@@ -20,4 +20,9 @@ fn suspended_catenary_end_tensions_match_closed_form() {
 #[test]
 fn catenary_on_frictionless_seabed_matches_closed_form() {
     assert_case_passes(grounded_catenary(Formulation::Fe, Fidelity::Quick));
+}
+
+#[test]
+fn catenary_on_frictionless_sloping_seabed_matches_closed_form() {
+    assert_case_passes(sloped_catenary(Formulation::Fe, Fidelity::Quick));
 }

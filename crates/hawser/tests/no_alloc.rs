@@ -9,7 +9,8 @@
 //! water with current, an irregular sea, drag, added mass and seabed contact, under each
 //! scheme (generalized-α with adaptive steps); the same with a fixed sphere and a moving cylinder in contact with a line; and the
 //! same with one `hermite` line with bending (and the obstacles), the same with both lines on
-//! winches, and with one `dg` line. And a `Session` with a coupled fairlead, an observer that
+//! winches, and with one `dg` line; the same over a sloping bed and over a grid of depths,
+//! with a box body resting on the bed (dg and fe). And a `Session` with a coupled fairlead, an observer that
 //! reads every channel and line sample, and repeated coupling intervals: 290 intervals of a
 //! step the interval does not divide, allocation-free (RK4 and the three-level scheme).
 
@@ -22,6 +23,7 @@ use hawser::math::Vec3;
 use hawser::model::*;
 use hawser::physics::environment::Current;
 use hawser::physics::obstacles::{Obstacle, ObstacleDamping, ObstacleShape};
+use hawser::physics::seabed::{Bathymetry, SeabedGrid};
 use hawser::physics::waves::{IrregularSea, SeaState, Spectrum, Stretching, WaveSpec, Waves};
 use hawser::simulation::Simulation;
 use hawser::system::System;
@@ -308,6 +310,53 @@ fn time_loop_does_not_allocate() {
     model.lines[0].formulation = Formulation::Dg;
     for scheme in [Scheme::Rk4, Scheme::SspRk3] {
         check("dg and fe lines on a shared buoy", &model, scheme);
+    }
+
+    // The same over a sloping bed and over a grid of depths (the bed's height and normal
+    // looked up at every contact), with a box body resting on the bed (its contact summed
+    // over its surface patches): the dg line, then both lines in fe.
+    let mut sloped = model.clone();
+    sloped.environment.bathymetry = Bathymetry::Plane {
+        gradient: [0.02, 0.01],
+    };
+    let mut crate_body = Body::new(
+        "crate",
+        8000.0,
+        hawser::math::Mat3::from_diagonal(&Vec3::new(3000.0, 3000.0, 5300.0)),
+    );
+    crate_body.displacement = Displacement::Box {
+        length: 2.0,
+        breadth: 2.0,
+        height: 1.0,
+    };
+    // Its base 2 cm into the bed at (20, 10), where the plane is at −60 + 0.4 + 0.1.
+    crate_body.position = Vec3::new(20.0, 10.0, -59.5 + 0.5 - 0.02);
+    sloped.bodies.push(crate_body);
+    let mut grid = sloped.clone();
+    grid.environment.bathymetry = Bathymetry::Grid(
+        SeabedGrid::new(
+            vec![-150.0, 0.0, 150.0],
+            vec![-50.0, 50.0],
+            vec![-61.0, -59.0, -59.0, -61.0, -59.5, -59.5],
+        )
+        .unwrap(),
+    );
+    // Its base 2 cm into the grid's bed at (20, 10).
+    let bed = grid.environment.seabed_at(20.0, 10.0).z;
+    grid.bodies[0].position.z = bed + 0.5 - 0.02;
+    for line in [Formulation::Dg, Formulation::Fe] {
+        sloped.lines[0].formulation = line;
+        grid.lines[0].formulation = line;
+        check(
+            &format!("{line:?} and fe lines, sloping bed"),
+            &sloped,
+            Scheme::Rk4,
+        );
+        check(
+            &format!("{line:?} and fe lines, grid bed"),
+            &grid,
+            Scheme::Rk4,
+        );
     }
 }
 

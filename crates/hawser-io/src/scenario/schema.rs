@@ -198,7 +198,8 @@ pub struct EnvironmentSpec {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<f64>")]
     pub air_density: Option<Spanned<f64>>,
-    /// Water depth [m]: flat seabed at z = −depth. Omit for deep water without a seabed.
+    /// Water depth [m]: flat seabed at z = −depth (the depth at the origin of a sloping
+    /// seabed, the waves' depth over a grid). Omit for deep water without a seabed.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<f64>")]
     pub depth: Option<Spanned<f64>>,
@@ -248,6 +249,21 @@ pub struct SeabedSpec {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<f64>")]
     pub static_friction_scale: Option<Spanned<f64>>,
+    /// A sloping plane through (0, 0, −depth): its rise per metre [∂z/∂x, ∂z/∂y] [-]; flat by
+    /// default.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<[f64; 2]>")]
+    pub gradient: Option<Spanned<[f64; 2]>>,
+    /// A sloping plane through (0, 0, −depth) given by its upward normal [nx, ny, nz] [-]
+    /// (any length, nz > 0), instead of `gradient`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<[f64; 3]>")]
+    pub normal: Option<Spanned<[f64; 3]>>,
+    /// A grid of bed heights, interpolated bilinearly: a MoorDyn `SeafloorFile` (C or F
+    /// format) or a CSV with columns `x,y,z` (or `depth`), relative to the scenario file.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<String>")]
+    pub grid: Option<Spanned<String>>,
 }
 
 /// Kind of current.

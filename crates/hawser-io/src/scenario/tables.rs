@@ -393,6 +393,225 @@ pub fn read_current_profile(path: &Path) -> Result<Vec<[f64; 4]>, String> {
     Ok(rows)
 }
 
+/// A grid of seabed heights as read from a file: node coordinates x, y [m] (increasing) and
+/// the heights z [m] (up, negative below the surface) with `z[j · x.len() + i]` at (x_i, y_j).
+#[derive(Clone, Debug, PartialEq)]
+pub struct HeightGrid {
+    /// x of the nodes [m].
+    pub x: Vec<f64>,
+    /// y of the nodes [m].
+    pub y: Vec<f64>,
+    /// Heights [m].
+    pub z: Vec<f64>,
+}
+
+/// Reads a seabed grid in any of three formats, told apart by their first lines:
+///
+/// - MoorDyn-C's `SeafloorFile`: a line `nx ny`, a line of the nx x values, a line of the ny
+///   y values, then one line `x y z` per node, z the bed's height (negative below the
+///   surface);
+/// - MoorDyn-F's bathymetry file: a title line, `nGridX nx`, `nGridY ny`, a line of the nx x
+///   values, then ny lines `y d₁ … d_nx` of depths (positive down);
+/// - CSV: a header naming the columns `x`, `y` and `z` (height) or `depth` (positive down),
+///   units in brackets allowed (`x [m]`), then one row per node in any order.
+///
+/// Every node of the grid needs exactly one value, on a grid value of x and y (MoorDyn leaves
+/// this undefined); the error names the file and line.
+pub fn read_seabed_grid(path: &Path) -> Result<HeightGrid, String> {
+    let text = read_text_file(path).map_err(|e| format!("cannot read {}: {e}", path.display()))?;
+    let at = |n: usize| format!("{}:{}", path.display(), n + 1);
+    let lines: Vec<(usize, &str)> = text
+        .lines()
+        .enumerate()
+        .map(|(n, l)| (n, l.trim()))
+        .filter(|(_, l)| !l.is_empty() && !l.starts_with('#'))
+        .collect();
+    let Some(&(first_line, first)) = lines.first() else {
+        return Err(format!("{}: the file is empty", path.display()));
+    };
+    let numbers = |n: usize, line: &str| -> Result<Vec<f64>, String> {
+        line.split([',', ';', '\t', ' '])
+            .filter(|s| !s.is_empty())
+            .map(|f| parse_number(f).ok_or_else(|| format!("{}: `{f}` is not a number", at(n))))
+            .collect()
+    };
+    let counts = |line: &str| -> Option<Vec<usize>> {
+        line.split_whitespace().map(|f| f.parse().ok()).collect()
+    };
+    // Nodes as (line, x, y, z).
+    let mut nodes: Vec<(usize, f64, f64, f64)> = Vec::new();
+    let (xs, ys): (Vec<f64>, Vec<f64>);
+    if let Some(c) = counts(first).filter(|c| c.len() == 2) {
+        // MoorDyn-C.
+        let axis = |k: usize, count: usize, name: &str| -> Result<Vec<f64>, String> {
+            let &(n, line) = lines.get(k).ok_or_else(|| {
+                format!(
+                    "{}: the line of the {count} {name} values is missing",
+                    path.display()
+                )
+            })?;
+            let v = numbers(n, line)?;
+            if v.len() != count {
+                return Err(format!(
+                    "{}: {} {name} values, but the first line announces {count}",
+                    at(n),
+                    v.len()
+                ));
+            }
+            Ok(v)
+        };
+        xs = axis(1, c[0], "x")?;
+        ys = axis(2, c[1], "y")?;
+        for &(n, line) in &lines[3.min(lines.len())..] {
+            let v = numbers(n, line)?;
+            if v.len() != 3 {
+                return Err(format!(
+                    "{}: expected `x y z`, found {} numbers",
+                    at(n),
+                    v.len()
+                ));
+            }
+            nodes.push((n, v[0], v[1], v[2]));
+        }
+    } else if first.contains(',') {
+        // CSV with a header.
+        let names: Vec<String> = first
+            .split(',')
+            .map(|h| {
+                h.split('[')
+                    .next()
+                    .unwrap_or("")
+                    .trim()
+                    .to_ascii_lowercase()
+            })
+            .collect();
+        let column = |name: &str| names.iter().position(|h| h == name);
+        let (Some(cx), Some(cy)) = (column("x"), column("y")) else {
+            return Err(format!(
+                "{}: the header needs columns `x`, `y` and `z` or `depth`, found `{first}`",
+                at(first_line)
+            ));
+        };
+        let (cz, sign) = match (column("z"), column("depth")) {
+            (Some(c), None) => (c, 1.0),
+            (None, Some(c)) => (c, -1.0),
+            _ => {
+                return Err(format!(
+                    "{}: the header needs one column `z` (height, up) or `depth` (down), found `{first}`",
+                    at(first_line)
+                ));
+            }
+        };
+        for &(n, line) in &lines[1..] {
+            let v = numbers(n, line)?;
+            if v.len() != names.len() {
+                return Err(format!(
+                    "{}: {} columns where the header names {}",
+                    at(n),
+                    v.len(),
+                    names.len()
+                ));
+            }
+            nodes.push((n, v[cx], v[cy], sign * v[cz]));
+        }
+        let axis = |pick: fn(&(usize, f64, f64, f64)) -> f64| {
+            let mut a: Vec<f64> = nodes.iter().map(pick).collect();
+            a.sort_by(f64::total_cmp);
+            a.dedup();
+            a
+        };
+        xs = axis(|r| r.1);
+        ys = axis(|r| r.2);
+    } else {
+        // MoorDyn-F: a title, then nGridX and nGridY.
+        let count = |k: usize, key: &str| -> Result<usize, String> {
+            let &(n, line) = lines
+                .get(k)
+                .ok_or_else(|| format!("{}: the line `{key} N` is missing", path.display()))?;
+            let mut f = line.split_whitespace();
+            match (f.next(), f.next().and_then(|v| v.parse().ok())) {
+                (Some(k), Some(v)) if k.eq_ignore_ascii_case(key) => Ok(v),
+                _ => Err(format!(
+                    "{}: expected `{key} N` (a MoorDyn-F bathymetry file), or a first line `nx ny` \
+                     (MoorDyn-C), or a CSV header `x,y,z`; found `{line}`",
+                    at(n)
+                )),
+            }
+        };
+        let nx = count(1, "nGridX")?;
+        let ny = count(2, "nGridY")?;
+        let &(n, line) = lines
+            .get(3)
+            .ok_or_else(|| format!("{}: the line of x values is missing", path.display()))?;
+        xs = numbers(n, line)?;
+        if xs.len() != nx {
+            return Err(format!(
+                "{}: {} x values, but nGridX is {nx}",
+                at(n),
+                xs.len()
+            ));
+        }
+        let rows = &lines[4.min(lines.len())..];
+        if rows.len() != ny {
+            return Err(format!(
+                "{}: {} rows of depths, but nGridY is {ny}",
+                path.display(),
+                rows.len()
+            ));
+        }
+        let mut y = Vec::with_capacity(ny);
+        for &(n, line) in rows {
+            let v = numbers(n, line)?;
+            if v.len() != nx + 1 {
+                return Err(format!(
+                    "{}: expected `y` and {nx} depths, found {} numbers",
+                    at(n),
+                    v.len()
+                ));
+            }
+            y.push(v[0]);
+            for (i, d) in v[1..].iter().enumerate() {
+                nodes.push((n, xs[i], v[0], -d));
+            }
+        }
+        ys = y;
+    }
+    for (name, axis) in [("x", &xs), ("y", &ys)] {
+        if let Some(k) = axis.windows(2).position(|w| !(w[1] > w[0])) {
+            return Err(format!(
+                "{}: the {name} values must increase: {} then {}",
+                path.display(),
+                axis[k],
+                axis[k + 1]
+            ));
+        }
+    }
+    let (nx, ny) = (xs.len(), ys.len());
+    let mut z = vec![f64::NAN; nx * ny];
+    for &(n, x, y, height) in &nodes {
+        let find = |axis: &[f64], v: f64| axis.iter().position(|&a| a == v);
+        let (Some(i), Some(j)) = (find(&xs, x), find(&ys, y)) else {
+            return Err(format!(
+                "{}: the node ({x}, {y}) is not on the grid's x and y values",
+                at(n)
+            ));
+        };
+        if !z[j * nx + i].is_nan() {
+            return Err(format!("{}: the node ({x}, {y}) is given twice", at(n)));
+        }
+        z[j * nx + i] = height;
+    }
+    if let Some(k) = z.iter().position(|v| v.is_nan()) {
+        return Err(format!(
+            "{}: the node ({}, {}) has no height: give every node of the {nx} × {ny} grid",
+            path.display(),
+            xs[k % nx],
+            ys[k / nx]
+        ));
+    }
+    Ok(HeightGrid { x: xs, y: ys, z })
+}
+
 /// Parses a number as MoorDyn does (C `atof`), accepting Fortran `D` exponents too.
 pub fn parse_number(text: &str) -> Option<f64> {
     let t = text.replace(['d', 'D'], "e");
@@ -407,6 +626,55 @@ mod tests {
         let dir = std::env::temp_dir().join(format!("hawser-tables-{}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();
         dir.join(name)
+    }
+
+    /// The three grid formats read to the same grid; a node off the grid, a missing node and
+    /// a count that does not match are refused with the file and line.
+    #[test]
+    fn seabed_grids_in_three_formats() {
+        let c = temp("seafloor_c.txt");
+        std::fs::write(
+            &c,
+            "3 2\n-10 0 10\n-5 5\n-10 -5 -40\n0 -5 -41\n10 -5 -42\n-10 5 -43\n0 5 -44\n10 5 -45\n",
+        )
+        .unwrap();
+        let f = temp("bathymetry_f.txt");
+        std::fs::write(
+            &f,
+            "--- MoorDyn Bathymetry Input File ---\nnGridX 3\nnGridY 2\n  -10 0 10\n-5 40 41 42\n5 43 44 45\n",
+        )
+        .unwrap();
+        let csv = temp("grid.csv");
+        std::fs::write(
+            &csv,
+            "x [m],y [m],depth [m]\n10,5,45\n-10,-5,40\n0,-5,41\n10,-5,42\n-10,5,43\n0,5,44\n",
+        )
+        .unwrap();
+        let expected = HeightGrid {
+            x: vec![-10.0, 0.0, 10.0],
+            y: vec![-5.0, 5.0],
+            z: vec![-40.0, -41.0, -42.0, -43.0, -44.0, -45.0],
+        };
+        for p in [&c, &f, &csv] {
+            assert_eq!(read_seabed_grid(p).unwrap(), expected, "{}", p.display());
+        }
+        for (text, wanted) in [
+            (
+                "2 1\n0 1\n0\n0 0 -1\n0.5 0 -1\n",
+                ":5: the node (0.5, 0) is not on the grid",
+            ),
+            ("2 1\n0 1\n0\n0 0 -1\n", "the node (1, 0) has no height"),
+            (
+                "3 1\n0 1\n0\n",
+                ":2: 2 x values, but the first line announces 3",
+            ),
+            ("x,y,h\n0,0,1\n", "needs one column `z`"),
+        ] {
+            let p = temp("bad_grid.txt");
+            std::fs::write(&p, text).unwrap();
+            let e = read_seabed_grid(&p).unwrap_err();
+            assert!(e.contains(wanted), "{e}");
+        }
     }
 
     /// `/dev/zero` was read until memory ran out; a FIFO blocked for ever. Both are refused

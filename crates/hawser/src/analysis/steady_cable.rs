@@ -128,8 +128,8 @@ pub struct SteadyTow {
     pub current: Vec3,
     /// Position of the tow point on the ship [m] (z ≤ 0).
     pub ship_end: Vec3,
-    /// Seabed height [m] (−depth; −∞ for deep water). The integration stops with an error if
-    /// the cable reaches it.
+    /// Seabed height [m] under the tow point (−depth on a flat bed; −∞ for deep water). The
+    /// integration stops with an error if the cable reaches it.
     pub seabed_z: Real,
     /// Cable segments in order from the body end to the ship end.
     pub segments: Vec<CableSegment>,
@@ -443,7 +443,7 @@ impl SteadyTow {
             water_density: env.water_density,
             current,
             ship_end: ship.1.position,
-            seabed_z: env.seabed_z(),
+            seabed_z: env.seabed_at(ship.1.position.x, ship.1.position.y).z,
             segments,
             body: TowedBody {
                 mass: *mass,
@@ -798,6 +798,7 @@ mod tests {
             length: 400.0,
             weight: w,
             ea: seg.axial_stiffness,
+            slope: 0.0,
         };
         let scale = 400.0;
         for st in &p.stations {

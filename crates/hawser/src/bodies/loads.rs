@@ -61,9 +61,9 @@ impl Body {
     /// I_o = R I_G Rᵀ − m [c]× [c]×
     ///
     /// F   = −m g ẑ + ρ g V_s ẑ + (ρ V_s 1 + f A_t) a_w − f A_t ω×(ω×p) + F_drag
-    ///       + R F_thrust + F_wind − m ω×(ω×c)
+    ///       + R F_thrust + F_wind − m ω×(ω×c) + F_bed
     /// M_o = c × (−m g ẑ) + p × (ρ g V_s ẑ + (ρ V_s + f A_t) a_w − f A_t ω×(ω×p) + F_drag)
-    ///       + R M_drag + R M_thrust + c_w × F_wind − ω × (I_o ω)
+    ///       + R M_drag + R M_thrust + c_w × F_wind − ω × (I_o ω) + M_bed
     /// ```
     ///
     /// - A_t = diag(A₁, A₂, A₃) [kg], A_r = diag(A₄, A₅, A₆) [kg·m²]: the added mass in body
@@ -85,9 +85,12 @@ impl Body {
     ///   the moving origin: the body's momentum is m (v_o + ω × c) and its angular momentum
     ///   about the origin m c × v_o + I_o ω.
     ///
+    /// - F_bed, M_bed: the seabed's contact force and its moment about the origin over the
+    ///   body's shape ([`Body::seabed_contact`]), when the body reaches the bed.
+    ///
     /// Left out (docs/bodies.md): the velocity-dependent added-mass terms of Kirchhoff's
     /// equations (Munk moment), the rate of change of the added mass with submergence,
-    /// radiation damping and memory, second-order wave loads, seabed contact.
+    /// radiation damping and memory, second-order wave loads.
     pub fn loads(&self, k: &RigidKinematics, env: &Environment, t: Real) -> BodyLoads {
         let r = *k.orientation.to_rotation_matrix().matrix();
         let w = k.angular_velocity;
@@ -172,6 +175,11 @@ impl Body {
             let fw = 0.5 * env.air_density * wind.drag_area * u.norm() * u;
             force += fw;
             moment += cw.cross(&fw);
+        }
+
+        if let Some(c) = self.seabed_contact(k, &r, env) {
+            force += c.force;
+            moment += c.moment;
         }
 
         BodyLoads {

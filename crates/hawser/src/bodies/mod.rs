@@ -29,9 +29,11 @@
 //! Attached lines add their end forces (and the moments of those forces about the origin) to
 //! the right-hand side, and their end masses to M.
 
+mod contact;
 mod hydrostatics;
 mod loads;
 
+pub use contact::SeabedContact;
 pub use hydrostatics::{CYLINDER_SIDES, Section, Wetted, wetted_prism};
 pub use loads::BodyLoads;
 

@@ -55,7 +55,8 @@ pub fn line_forces(
     let n = line.elements();
     let (r, v, forces) = (&r[..=n], &v[..=n], &mut forces[..=n]);
     let (tension_out, strain_out) = (&mut elements.tension[..n], &mut elements.strain[..n]);
-    let bed_z = env.seabed_z();
+    // Nothing above the bed's highest point touches it (−depth for a flat bed).
+    let bed_top = env.seabed_top();
     let consistent = mass_matrix == MassMatrix::Consistent;
     // No current and no waves: the fluid is at rest everywhere.
     let still_water = env.is_still_water();
@@ -151,11 +152,11 @@ pub fn line_forces(
             }
 
             // Seabed contact (DG paper eqs. 15–16) by nodal quadrature over the element.
-            if ra.z < bed_z || rb.z < bed_z {
-                let contact = |z: Real, velocity: &Vec3, node_length: Real| {
+            if ra.z < bed_top || rb.z < bed_top {
+                let contact = |position: &Vec3, velocity: &Vec3, node_length: Real| {
                     env.seabed.contact_force_with(
-                        bed_z,
-                        z,
+                        &env.seabed_at(position.x, position.y),
+                        position,
                         velocity,
                         lt.diameter,
                         root_stretch,
@@ -165,13 +166,13 @@ pub fn line_forces(
                     ) * k.half_length
                 };
                 // Each node carries half of each adjacent element.
-                fa += contact(ra.z, &va, previous_half + k.half_length);
+                fa += contact(&ra, &va, previous_half + k.half_length);
                 let next_half = if e + 1 < n {
                     0.5 * line.section(e + 1).element_length
                 } else {
                     0.0
                 };
-                fb += contact(rb.z, &vb, k.half_length + next_half);
+                fb += contact(&rb, &vb, k.half_length + next_half);
             }
             *force_out = fa;
             node_force = fb;

@@ -205,7 +205,7 @@ pub fn line_forces(
         .for_each(|f| *f = Vec3::zeros());
     let g = env.gravity;
     let rho_w = env.water_density;
-    let bed_z = env.seabed_z();
+    let bed_top = env.seabed_top();
     let still_water = env.is_still_water();
     // σ = L̇/L of a line on a winch ([`Mesh::length_rate`]).
     let sigma = mesh.length_rate;
@@ -280,10 +280,9 @@ pub fn line_forces(
                 load.current_factor,
                 still_water,
             );
-            if r.z < bed_z {
-                f += env.seabed.contact_force(
-                    bed_z,
-                    r.z,
+            if r.z < bed_top {
+                f += env.seabed_contact_force(
+                    &r,
                     &v,
                     lt.diameter,
                     lt.mass_per_length,

@@ -196,6 +196,20 @@ impl Model {
         if !(env.depth > 0.0) {
             return bad("environment.depth".into(), "must be > 0 m");
         }
+        if let crate::physics::seabed::Bathymetry::Plane { gradient } = &env.bathymetry {
+            if !env.depth.is_finite() {
+                return bad(
+                    "environment.bathymetry".into(),
+                    "is a sloping plane through (0, 0, −depth): it needs a finite depth",
+                );
+            }
+            if !gradient.iter().all(|g| g.is_finite()) {
+                return bad(
+                    "environment.bathymetry".into(),
+                    "has a gradient that is not finite",
+                );
+            }
+        }
         if let Some(w) = env.waves.field()
             && (w.depth() != env.depth || w.gravity() != env.gravity)
         {

@@ -2,6 +2,7 @@
 
 use crate::math::{Real, Vec3};
 use crate::physics::obstacles::Obstacle;
+use crate::physics::seabed::{Bathymetry, BedPoint};
 use crate::physics::static_kinematics::WaveKinematicsMethod;
 use crate::physics::waves::Waves;
 
@@ -15,7 +16,8 @@ pub const AIR_DENSITY: Real = 1.225;
 /// The medium around a cable: water, air above z = 0, the seabed, the current, the waves and
 /// the obstacles in the water.
 ///
-/// z is up and z = 0 is the still water level; the flat seabed is at z = −`depth`.
+/// z is up and z = 0 is the still water level; the seabed is the flat plane z = −`depth` or
+/// the shape of its `bathymetry`.
 /// Current and waves are superposed: in the water their velocities add, with no wave–current
 /// interaction (the waves are not Doppler-shifted by the current, nor the current profile
 /// stretched by the waves).
@@ -27,10 +29,14 @@ pub struct Environment {
     pub water_density: Real,
     /// Air density above z = 0 [kg/m³]; default [`AIR_DENSITY`]. Air exerts drag, not buoyancy.
     pub air_density: Real,
-    /// Water depth [m]: the seabed is the plane z = −depth. `Real::INFINITY` for no seabed.
+    /// Water depth [m]: the depth the waves are built for, and the seabed's: the plane
+    /// z = −depth, or the depth at the origin of a sloping plane ([`Bathymetry`]).
+    /// `Real::INFINITY` for deep water without a seabed (unless the bathymetry is a grid).
     pub depth: Real,
     /// Seabed contact parameters.
     pub seabed: crate::physics::seabed::Seabed,
+    /// Shape of the seabed: flat at z = −depth (default), a sloping plane, or a grid.
+    pub bathymetry: Bathymetry,
     /// Current velocity field.
     pub current: Current,
     /// Sea state; [`Waves::None`] by default. Build it with [`Waves::new`] for this
@@ -51,6 +57,7 @@ impl Default for Environment {
             air_density: AIR_DENSITY,
             depth: Real::INFINITY,
             seabed: Default::default(),
+            bathymetry: Bathymetry::Flat,
             current: Current::None,
             waves: Waves::None,
             wave_kinematics: WaveKinematicsMethod::Direct,
@@ -285,10 +292,52 @@ impl Environment {
             && self.waves.field().is_none_or(|w| w.ramp(time).0 == 0.0)
     }
 
-    /// Height of the seabed z = −depth [m].
+    /// Whether there is a seabed: a finite depth, or a grid of heights.
     #[inline]
-    pub fn seabed_z(&self) -> Real {
-        -self.depth
+    pub fn has_seabed(&self) -> bool {
+        self.depth.is_finite() || matches!(self.bathymetry, Bathymetry::Grid(_))
+    }
+
+    /// The seabed under (x, y) [m]: its height and upward normal ([`Bathymetry::at`]). Without
+    /// a seabed, the height is −∞.
+    #[inline]
+    pub fn seabed_at(&self, x: Real, y: Real) -> BedPoint {
+        self.bathymetry.at(self.depth, x, y)
+    }
+
+    /// The highest point of the seabed [m]: no point above it is in contact (−∞ without a
+    /// seabed, +∞ for a sloping plane, −depth for a flat bed).
+    #[inline]
+    pub fn seabed_top(&self) -> Real {
+        self.bathymetry.top(self.depth)
+    }
+
+    /// Seabed contact force per unit unstretched length [N/m] on a cable point at `position`
+    /// [m] moving with `velocity` [m/s] ([`crate::physics::seabed::Seabed::contact_force`]
+    /// over the bed under the point). A flat bed is a constant: no lookup.
+    #[inline]
+    #[allow(clippy::too_many_arguments)]
+    pub fn seabed_contact_force(
+        &self,
+        position: &Vec3,
+        velocity: &Vec3,
+        diameter: Real,
+        mass_per_length: Real,
+        stretch: Real,
+        net_weight_z: Real,
+        node_length: Real,
+    ) -> Vec3 {
+        let bed = self.seabed_at(position.x, position.y);
+        self.seabed.contact_force(
+            &bed,
+            position,
+            velocity,
+            diameter,
+            mass_per_length,
+            stretch,
+            net_weight_z,
+            node_length,
+        )
     }
 }
 

@@ -214,18 +214,22 @@ pub fn catenary_seed(system: &System, y: &mut [Real], ws: &mut Workspace) {
         let horizontal = Vec3::new(d.x, d.y, 0.0);
         let span = horizontal.norm();
         let height = d.z * w.signum();
-        let on_bed = env.depth.is_finite()
-            && w > 0.0
-            && (lo.z - env.seabed_z()).abs() < 1e-3 * length.max(1.0);
+        let bed = env.seabed_at(lo.x, lo.y);
+        let on_bed = env.has_seabed() && w > 0.0 && (lo.z - bed.z).abs() < 1e-3 * length.max(1.0);
         let dir = if span > 0.0 {
             horizontal / span
         } else {
             Vec3::x()
         };
-        let cat = if w.abs() > 0.0 {
-            catenary::solve(span, height, length, w.abs(), ea, on_bed)
-        } else {
+        // The bed's slope from the lower end toward the upper one, in their vertical plane.
+        let slope = -(bed.normal.x * dir.x + bed.normal.y * dir.y) / bed.normal.z;
+        let cat = if w.abs() == 0.0 {
             None
+        } else if on_bed && slope != 0.0 {
+            catenary::solve_on_slope(span, height, length, w.abs(), ea, slope)
+                .or_else(|| catenary::solve(span, height, length, w.abs(), ea, false))
+        } else {
+            catenary::solve(span, height, length, w.abs(), ea, on_bed)
         };
         let o = system.layout.line_offset[li];
         let shape: Vec<Vec3> = (0..=n)

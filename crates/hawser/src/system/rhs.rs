@@ -9,12 +9,16 @@ use crate::physics::environment::Environment;
 /// Seabed contact of a free point: a sphere of the point's displaced volume pressing on the
 /// bed with the ground stiffness K_g over its projected area, k = K_g π r² [N/m], damped at
 /// the seabed's damping ratio of the point's own critical damping, with sliding friction
-/// μ N tanh(π|v_xy|/v_μ) (the line contact of DG paper eqs. 15–16 applied to a sphere).
+/// μ N tanh(π|v_t|/v_μ) (the line contact of DG paper eqs. 15–16 applied to a sphere), all
+/// along the bed's normal n and in its tangent plane.
 #[derive(Clone, Copy, Debug)]
 pub(super) struct SphereContact {
-    radius: Real,
-    stiffness: Real,
-    damping: Real,
+    /// Radius of the sphere of the point's volume [m].
+    pub(super) radius: Real,
+    /// Contact stiffness K_g π r² [N/m].
+    pub(super) stiffness: Real,
+    /// Contact damping [N·s/m].
+    pub(super) damping: Real,
 }
 
 impl SphereContact {
@@ -32,7 +36,7 @@ impl SphereContact {
             return None;
         };
         let m = mass + env.water_density * volume * added_mass_coefficient;
-        if !(env.depth.is_finite() && env.seabed.stiffness > 0.0 && *volume > 0.0 && *mass > 0.0) {
+        if !(env.has_seabed() && env.seabed.stiffness > 0.0 && *volume > 0.0 && *mass > 0.0) {
             return None;
         }
         let radius = (3.0 * volume / (4.0 * std::f64::consts::PI)).cbrt();
@@ -48,23 +52,25 @@ impl SphereContact {
         })
     }
 
-    pub(super) fn force(
-        &self,
-        bed_z: Real,
-        position: &Vec3,
-        velocity: &Vec3,
-        seabed: &crate::physics::seabed::Seabed,
-    ) -> Vec3 {
-        let penetration = bed_z - (position.z - self.radius);
+    /// The contact force [N] on the sphere centred at `position` [m] moving at `velocity`
+    /// [m/s]: (k δ − c v·n) n with δ the depth of its lowest point below the bed's tangent
+    /// plane along the normal n, and friction against v_t = v − (v·n) n.
+    pub(super) fn force(&self, env: &Environment, position: &Vec3, velocity: &Vec3) -> Vec3 {
+        let bed = env.seabed_at(position.x, position.y);
+        let n = bed.normal;
+        // The lowest point along −n: (z_bed − (z − r/n_z)) n_z = (z_bed − z) n_z + r.
+        let penetration = (bed.z - (position.z - self.radius / n.z)) * n.z;
         if penetration <= 0.0 {
             return Vec3::zeros();
         }
-        let normal = self.stiffness * penetration - self.damping * velocity.z;
-        let mut f = Vec3::new(0.0, 0.0, normal);
-        let vxy = Vec3::new(velocity.x, velocity.y, 0.0);
-        let speed = vxy.norm();
+        let vn = velocity.dot(&n);
+        let normal = self.stiffness * penetration - self.damping * vn;
+        let mut f = n * normal;
+        let vt = velocity - n * vn;
+        let speed = vt.norm();
+        let seabed = &env.seabed;
         if seabed.friction_coefficient > 0.0 && speed > 0.0 && normal > 0.0 {
-            f -= vxy * (seabed.friction(speed, normal, 1.0) / speed);
+            f -= vt * (seabed.friction(speed, normal, 1.0) / speed);
         }
         f
     }
@@ -183,7 +189,7 @@ impl System {
         let rel = uw * load_factor - k.velocity;
         f += rel * (0.5 * rho * drag_area * rel.norm());
         if let Some(contact) = &self.points[p].seabed_contact {
-            f += contact.force(env.seabed_z(), &k.position, &k.velocity, &env.seabed);
+            f += contact.force(env, &k.position, &k.velocity);
         }
         (f, Mat3::identity() * m)
     }

@@ -123,6 +123,16 @@ impl System {
             } = &p.kind
             {
                 point_rows[i].mass = mass + rho * volume * added_mass_coefficient;
+                // Its own seabed contact (a sphere of its volume): the spring, the damper and
+                // the friction's slope at rest under its weight in water.
+                if let Some(c) = &p.seabed_contact {
+                    point_rows[i].contact_stiffness += c.stiffness;
+                    point_rows[i].contact_damping += c.damping;
+                    let wet = (mass - rho * volume) * env.gravity;
+                    if seabed.friction_coefficient > 0.0 && wet > 0.0 {
+                        point_rows[i].friction_damping += seabed.friction_slope(wet, 1.0);
+                    }
+                }
             }
         }
         let mut worst = 0.0;
@@ -185,9 +195,9 @@ impl System {
                         .position
                         .z
                         .min(self.points[l.end_b].position.z);
-                    let reaches_bed = env.depth.is_finite()
+                    let reaches_bed = env.has_seabed()
                         && seabed.stiffness > 0.0
-                        && low - longest <= env.seabed_z();
+                        && low - longest <= env.seabed_top();
                     // The obstacles this line may touch, as the seabed: a fixed one within its length
                     // of an end (its bounding ball), a moving one always. Each adds its contact
                     // stiffness k and damping c per unit length over a node's share of the line;
@@ -319,12 +329,17 @@ impl System {
             }
         }
         for &b in &self.free_bodies {
-            let (lambda, what) = self.bodies[b]
-                .body
-                .own_rate(self.environment.water_density, self.environment.gravity);
+            let body = &self.bodies[b].body;
+            let (mut lambda, mut what) =
+                body.own_rate(self.environment.water_density, self.environment.gravity);
+            if let Some(bed) = body.seabed_rate(&self.environment)
+                && bed > lambda
+            {
+                (lambda, what) = (bed, "seabed contact");
+            }
             if lambda > worst {
                 worst = lambda;
-                culprit = format!("{what} of body {}", self.bodies[b].body.name);
+                culprit = format!("{what} of body {}", body.name);
             }
         }
         for (p, row) in point_rows.iter().enumerate() {

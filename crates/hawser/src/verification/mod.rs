@@ -21,7 +21,8 @@ mod wave_speed;
 
 pub use catenary::{
     ConvergenceSample, DG_ORDER, catenary_convergence, catenary_errors, catenary_errors_of_order,
-    expected_order, grounded_catenary, grounded_chain, suspended_catenary, suspended_line,
+    expected_order, grounded_catenary, grounded_chain, sloped_catenary, sloped_chain,
+    suspended_catenary, suspended_line,
 };
 pub use conservation::{
     EnergyRun, ObjectivityRun, energy, energy_drift, free_free, pendulum, rigid_motion_objectivity,
@@ -261,6 +262,12 @@ pub const CASES: &[Case] = &[
         description: "elastic catenary resting on a frictionless seabed (OC3 chain): end \
                       tensions against the closed form",
         run: grounded_catenary,
+    },
+    Case {
+        name: "catenary_slope",
+        description: "elastic catenary resting on a frictionless sloping seabed (OC3 chain, \
+                      the bed rising and falling at 5 %): end tensions against the closed form",
+        run: sloped_catenary,
     },
     Case {
         name: "hanging_mass",

@@ -224,16 +224,18 @@ pub(super) fn environment_of(
         )
     });
     let waves = super::water::waves_of(c, o, dir);
-    if let Some((t, _)) = o.get(&["seafloorfile"]) {
-        let d = c
-            .diag(
-                Some(t.span.clone()),
-                "OPTIONS › SeafloorFile",
-                "bathymetry files are not supported",
-            )
-            .expected("a flat seabed at WtrDpth")
-            .hint("remove SeafloorFile to run on a flat bed at WtrDpth");
-        c.errors.push(d);
+    let grid = seafloor_file(c, o, dir);
+    if let (Some(_), Some(d)) = (&grid, &depth) {
+        // MoorDyn builds its waves for the grid's mean depth and its lines touch the grid:
+        // WtrDpth has no use left.
+        let line = c.line_of(&d.span());
+        c.note(
+            line,
+            "WtrDpth is not used with a SeafloorFile: the seabed is the grid, and the waves are \
+             built for its mean depth, as in MoorDyn"
+                .to_string(),
+        );
+        depth = None;
     }
     let current = match o.get(&["currents"]) {
         Some((t, row)) => {
@@ -260,7 +262,7 @@ pub(super) fn environment_of(
         }
         None => None,
     };
-    let seabed = depth.as_ref().map(|_| SeabedSpec {
+    let seabed = (depth.is_some() || grid.is_some()).then(|| SeabedSpec {
         stiffness: kbot,
         damping_ratio: None,
         damping: cbot,
@@ -268,6 +270,9 @@ pub(super) fn environment_of(
         friction_velocity: None,
         friction_damping: friction.as_ref().map(|f| f.0.clone()),
         static_friction_scale: friction.and_then(|f| f.1),
+        gradient: None,
+        normal: None,
+        grid,
     });
     EnvironmentSpec {
         gravity,
@@ -278,6 +283,34 @@ pub(super) fn environment_of(
         current,
         waves,
     }
+}
+
+/// `SeafloorFile`: the bed's heights on a grid (`[environment.seabed] grid`), from the deck's
+/// folder, or from the working directory where MoorDyn-C looks for it; an absolute path in the
+/// scenario, so that a converted file finds it wherever it is written.
+fn seafloor_file(c: &mut Converter, o: &Options, dir: &Path) -> Option<Spanned<String>> {
+    let (t, row) = o.get(&["seafloorfile"])?;
+    c.name_key(
+        "environment.seabed.grid".into(),
+        "OPTIONS › SeafloorFile".into(),
+    );
+    let beside = dir.join(&t.text);
+    let path = if beside.is_file() || !Path::new(&t.text).is_file() {
+        beside
+    } else {
+        Path::new(&t.text).to_path_buf()
+    };
+    let absolute = std::fs::canonicalize(&path).unwrap_or(path);
+    c.note(
+        row.line,
+        format!(
+            "SeafloorFile: the bed's heights from {}, interpolated bilinearly and held beyond \
+             the grid's edges as in MoorDyn; contact acts along the bed's normal (MoorDyn's is \
+             vertical)",
+            absolute.display()
+        ),
+    );
+    Some(spanned(t, absolute.display().to_string()))
 }
 
 /// `Currents 1`: a steady profile from `current_profile.txt` beside the deck (MoorDyn reads

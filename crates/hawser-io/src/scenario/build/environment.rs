@@ -6,11 +6,12 @@ use super::{Builder, Check, NON_NEGATIVE, POSITIVE, span_of};
 use crate::scenario::schema::*;
 use hawser::math::Vec3;
 use hawser::physics::environment::{Current, Environment};
-use hawser::physics::seabed::{ContactDamping, FrictionLaw, Seabed};
+use hawser::physics::seabed::{Bathymetry, ContactDamping, FrictionLaw, Seabed, SeabedGrid};
 use hawser::physics::waves::{
     IrregularSea, MAX_SPREADING, RegularWave, SeaState, Spectrum, Stretching, WaveSpec, Waves,
     wavenumber,
 };
+use std::path::Path;
 use toml::Spanned;
 
 pub(super) fn build_environment(b: &mut Builder, spec: Option<&EnvironmentSpec>) -> Environment {
@@ -49,6 +50,7 @@ pub(super) fn build_environment(b: &mut Builder, spec: Option<&EnvironmentSpec>)
         ),
         depth: f64::INFINITY,
         seabed: Seabed::default(),
+        bathymetry: Default::default(),
         current: Current::None,
         waves: Waves::None,
         wave_kinematics: Default::default(),
@@ -168,7 +170,8 @@ pub(super) fn build_environment(b: &mut Builder, spec: Option<&EnvironmentSpec>)
                 }
             },
         };
-        if e.depth.is_none() {
+        env.bathymetry = build_bathymetry(b, s, &mut env.depth);
+        if env.depth.is_infinite() && e.depth.is_none() {
             let span = key_span(b.source, &["environment", "seabed"]);
             let d = b
                 .diag(
@@ -583,6 +586,134 @@ fn build_waves(b: &mut Builder, w: &WavesSpec, depth: f64, gravity: f64) -> Wave
             let d = b.diag(Some(w.kind.span()), "environment.waves", e.to_string());
             b.push(d);
             Waves::None
+        }
+    }
+}
+
+/// The shape of `[environment.seabed]`: flat, a sloping plane (`gradient` or `normal`), or a
+/// grid of heights from a file (`grid`). Over a grid without `environment.depth`, `depth`
+/// becomes the negated mean of its heights (MoorDyn's average depth), for the waves.
+fn build_bathymetry(b: &mut Builder, s: &SeabedSpec, depth: &mut f64) -> Bathymetry {
+    let given: Vec<(&str, std::ops::Range<usize>)> = [
+        ("gradient", span_of(&s.gradient)),
+        ("normal", span_of(&s.normal)),
+        ("grid", span_of(&s.grid)),
+    ]
+    .into_iter()
+    .filter_map(|(k, span)| span.map(|s| (k, s)))
+    .collect();
+    if given.len() > 1 {
+        let d = b
+            .diag(
+                Some(given[1].1.clone()),
+                &format!("environment.seabed.{}", given[1].0),
+                format!(
+                    "the seabed's shape is given twice (`{}` and `{}`)",
+                    given[0].0, given[1].0
+                ),
+            )
+            .expected("one shape: `gradient` [-], `normal` [-] or `grid` (a file)")
+            .hint("give one of `gradient`, `normal` or `grid`");
+        b.push(d);
+        return Bathymetry::Flat;
+    }
+    if let Some(g) = &s.gradient {
+        let v = g.get_ref();
+        if v.iter().any(|x| !x.is_finite()) {
+            let d = b
+                .diag(
+                    Some(g.span()),
+                    "environment.seabed.gradient",
+                    "`environment.seabed.gradient` has a non-finite component",
+                )
+                .expected("[∂z/∂x, ∂z/∂y], two finite numbers [-]")
+                .hint("0.05 rises 5 m per 100 m");
+            b.push(d);
+            return Bathymetry::Flat;
+        }
+        if !b.physical(Some(g.span()), "environment.seabed.gradient", v) {
+            return Bathymetry::Flat;
+        }
+        return Bathymetry::Plane { gradient: *v };
+    }
+    if let Some(n) = &s.normal {
+        let v = n.get_ref();
+        if !(v.iter().all(|x| x.is_finite()) && v[2] > 0.0) {
+            let d = b
+                .diag(
+                    Some(n.span()),
+                    "environment.seabed.normal",
+                    "`environment.seabed.normal` must point up",
+                )
+                .expected("[nx, ny, nz], finite, nz > 0 [-]")
+                .hint("the bed's upward normal; [0, 0, 1] is flat");
+            b.push(d);
+            return Bathymetry::Flat;
+        }
+        if !b.physical(Some(n.span()), "environment.seabed.normal", v) {
+            return Bathymetry::Flat;
+        }
+        return Bathymetry::Plane {
+            gradient: [-v[0] / v[2], -v[1] / v[2]],
+        };
+    }
+    let Some(f) = &s.grid else {
+        return Bathymetry::Flat;
+    };
+    let path = b.file.parent().unwrap_or(Path::new(".")).join(f.get_ref());
+    let grid = crate::scenario::tables::read_seabed_grid(&path).map(|g| {
+        let flat: Vec<f64> = (0..g.z.len())
+            .flat_map(|k| [g.x[k % g.x.len()], g.y[k / g.x.len()], g.z[k]])
+            .collect();
+        (g, flat)
+    });
+    let (grid, flat) = match grid {
+        Ok(g) => g,
+        Err(e) => {
+            let d = b
+                .diag(Some(f.span()), "environment.seabed.grid", e)
+                .expected(
+                    "a MoorDyn SeafloorFile (`nx ny`, x values, y values, rows `x y z`), a \
+                     MoorDyn-F bathymetry file, or a CSV `x,y,z` (or `depth`), relative to the \
+                     scenario file",
+                )
+                .hint("heights z are up (negative below the surface); depths are positive down");
+            b.push(d);
+            return Bathymetry::Flat;
+        }
+    };
+    if !b.physical(Some(f.span()), "environment.seabed.grid", &flat) {
+        return Bathymetry::Flat;
+    }
+    match SeabedGrid::new(grid.x, grid.y, grid.z) {
+        Ok(g) => {
+            if depth.is_infinite() {
+                if !(g.mean() < 0.0) {
+                    let d = b
+                        .diag(
+                            Some(f.span()),
+                            "environment.seabed.grid",
+                            format!(
+                                "the grid's mean height is {} m: the bed is not under water",
+                                g.mean()
+                            ),
+                        )
+                        .expected("heights z below the surface (negative)")
+                        .hint("give heights up (z < 0), or a CSV column `depth` for depths");
+                    b.push(d);
+                    return Bathymetry::Flat;
+                }
+                *depth = -g.mean();
+            }
+            Bathymetry::Grid(g)
+        }
+        Err(e) => {
+            let d = b
+                .diag(Some(f.span()), "environment.seabed.grid", e)
+                .expected("x and y values increasing, heights finite [m]")
+                .hint("the grid's x and y values must increase");
+            b.push(d);
+            Bathymetry::Flat
         }
     }
 }

@@ -8,6 +8,7 @@ use crate::scenario::schema::*;
 use hawser::math::Vec3;
 use hawser::model::*;
 use hawser::physics::environment::Environment;
+use hawser::physics::seabed::Bathymetry;
 use std::collections::HashMap;
 
 pub(super) fn build_points(
@@ -218,22 +219,33 @@ pub(super) fn build_points(
                 Vec3::zeros()
             }
         };
-        if env.depth.is_finite()
+        let bed = env.seabed_at(pos.x, pos.y).z;
+        if env.has_seabed()
             && kind != PointKindSpec::Body
-            && pos.z < -env.depth - 1e-9
+            && pos.z < bed - 1e-9 * (1.0 + bed.abs())
             && let Some(ps) = &p.position
         {
+            let flat = matches!(env.bathymetry, Bathymetry::Flat);
             let d = b
                 .diag(
                     Some(ps.span()),
                     &k("position"),
                     format!("point `{name}` is below the seabed"),
                 )
-                .expected(format!("z ≥ −depth = {}", -env.depth))
-                .hint(
+                .expected(if flat {
+                    format!("z ≥ −depth = {bed}")
+                } else {
+                    format!(
+                        "z ≥ {bed}, the seabed's height at x = {}, y = {}",
+                        pos.x, pos.y
+                    )
+                })
+                .hint(if flat {
                     "raise the point, or increase `environment.depth`; anchors sit on the \
-                         seabed at z = −depth",
-                );
+                     seabed at z = −depth"
+                } else {
+                    "raise the point onto the seabed; anchors sit on it"
+                });
             b.push(d);
         }
         out.push(Point {

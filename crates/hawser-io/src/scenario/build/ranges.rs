@@ -79,6 +79,12 @@ pub(super) const RANGES: &[(&str, Range)] = &[
     ("seabed.friction_velocity", all(0.0, 1e3, "m/s")),
     ("seabed.friction_damping", all(0.0, 1e13, "N·s/m")),
     ("seabed.static_friction_scale", all(0.0, 1e3, "-")),
+    ("seabed.gradient", all(-1e3, 1e3, "-")),
+    ("seabed.normal", all(-1e3, 1e3, "-")),
+    (
+        "seabed.grid",
+        Range::Columns(&[b(-1e7, 1e7, "m"), b(-1e7, 1e7, "m"), b(-1e5, 1e5, "m")]),
+    ),
     ("current.velocity", all(-100.0, 100.0, "m/s")),
     (
         "current.profile",
@@ -436,7 +442,7 @@ mod tests {
         // And every range serves a key of the schema (no stale entries).
         for (suffix, _) in RANGES {
             // Files of rows are string keys in the schema.
-            let used = ["motion.file", "waves.elevation_file"].contains(suffix)
+            let used = ["motion.file", "waves.elevation_file", "seabed.grid"].contains(suffix)
                 || leaves
                     .iter()
                     .any(|k| k == suffix || k.ends_with(&format!(".{suffix}")));

@@ -387,7 +387,7 @@ impl DgLine {
 
         // 7. External forces at the points (eqs. 12–17) and dv/dt, dr/dt.
         let still = env.is_still_water();
-        let bed_z = env.seabed_z();
+        let bed_top = env.seabed_top();
         let g = env.gravity;
         for (e, el) in self.elements.iter().enumerate() {
             let sec = self.section(e);
@@ -422,10 +422,9 @@ impl DgLine {
                     1.0,
                     still,
                 );
-                if r.z < bed_z + lt.diameter {
-                    f += env.seabed.contact_force(
-                        bed_z,
-                        r.z,
+                if r.z < bed_top + lt.diameter {
+                    f += env.seabed_contact_force(
+                        &r,
                         &nu,
                         lt.diameter,
                         gamma,
