@@ -9,7 +9,7 @@ use hawser::model::{MassMatrix, Model, TimeStep};
 use hawser::session::{Session, SessionOptions};
 use hawser::statics::StaticOptions;
 use hawser::system::{System, Workspace};
-use hawser_io::results::statics_json;
+use hawser_io::results::{statics_json, warnings_json};
 use hawser_io::scenario::tables::read_text_file;
 use hawser_io::scenario::{self, Diagnostic, InputFormat, LoadedScenario};
 use std::path::{Path, PathBuf};
@@ -305,6 +305,9 @@ fn statics(file: &Path, json: bool, trace: bool) -> Result<ExitCode> {
     for line in &sol.log {
         eprintln!("{line}");
     }
+    for w in &sol.warnings {
+        eprintln!("warning: {w}");
+    }
     let mut ws = system.workspace();
     hawser::statics::evaluate(&system, &sol.state, &mut ws);
     if json {
@@ -313,15 +316,18 @@ fn statics(file: &Path, json: bool, trace: bool) -> Result<ExitCode> {
             "method": sol.method,
             "iterations": sol.iterations,
             "residual": sol.residual,
+            "tolerance": sol.tolerance,
         });
+        j["warnings"] = warnings_json(&sol.warnings);
         out!("{}", serde_json::to_string_pretty(&j)?);
         return Ok(ExitCode::SUCCESS);
     }
     out!(
-        "static equilibrium: {} ({} iterations, residual {:.2e} N)",
+        "static equilibrium: {} ({} iterations, residual {:.2e} N, tolerance {:.2e} N)",
         sol.method,
         sol.iterations,
-        sol.residual
+        sol.residual,
+        sol.tolerance
     );
     out!(
         "{:<16} {:>14} {:>14} {:>14}",
@@ -457,14 +463,33 @@ fn check(file: &Path, deck: &DeckArgs) -> Result<ExitCode> {
         return Ok(ExitCode::from(2));
     }
     let nodes: usize = system.lines.iter().map(|l| l.nodes()).sum();
+    // The step a run takes (the automatic step: the limit times the safety factor, at most).
+    let step = match model.settings.time_step {
+        TimeStep::Fixed(dt) if deck_step_above_limit(&loaded, &system).is_none() => dt,
+        _ => model.settings.safety_factor * limit,
+    };
+    let duration = model.settings.duration;
+    let run_nodes = nodes + system.free_points.len() + system.free_bodies.len();
+    match hawser::session::check_run_length(step, &culprit, duration, run_nodes) {
+        Err(e) => {
+            eprintln!("error: {e}");
+            return Ok(ExitCode::from(2));
+        }
+        Ok(Some(w)) => eprintln!("warning: {w}"),
+        Ok(None) => {}
+    }
     out!(
-        "{}: ok — {} line(s), {} point(s), {} nodes; stable time step {:.4e} s ({})",
+        "{}: ok — {} line(s), {} point(s), {} nodes; stable time step {:.4e} s ({}); {:.0} \
+         steps of at most {:.4e} s for {} s",
         file.display(),
         system.lines.len(),
         system.points.len(),
         nodes,
         limit,
-        culprit
+        culprit,
+        (duration / step).ceil(),
+        step,
+        duration
     );
     Ok(ExitCode::SUCCESS)
 }

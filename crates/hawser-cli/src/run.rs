@@ -152,6 +152,10 @@ pub(crate) fn session_of(
             eprintln!("{}", step_error(file, loaded, &e));
             Ok(Err(ExitCode::from(2)))
         }
+        Err(e @ SimulationError::StepUnusable { .. }) => {
+            eprintln!("error: {e}");
+            Ok(Err(ExitCode::from(2)))
+        }
         Err(SimulationError::Model(e)) => {
             Err(anyhow::Error::new(e).context("the model is invalid"))
         }
@@ -220,6 +224,9 @@ pub(crate) fn run(
             sol.residual,
             t0.elapsed().as_secs_f64()
         );
+    }
+    for w in session.warnings() {
+        eprintln!("warning: {w}");
     }
     let (limit, culprit) = session.stable_step();
     let (limit, culprit) = (limit, culprit.to_string());

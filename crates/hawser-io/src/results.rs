@@ -28,6 +28,8 @@ pub struct RunWriter {
     last_time: Real,
     samples: u64,
     row: Vec<Real>,
+    /// The run's warnings, written into `summary.json` and `status.json` at its end.
+    warnings: Vec<hawser::Warning>,
 }
 
 fn io_context(path: &Path, e: std::io::Error) -> std::io::Error {
@@ -145,6 +147,7 @@ impl RunWriter {
             dir: dir.to_path_buf(),
             stats: vec![RunningStats::default(); channels.len()],
             row: vec![0.0; channels.len()],
+            warnings: Vec::new(),
             names,
             channels,
             detectors: vec![SlackSnapDetector::default(); system.lines.len()],
@@ -264,6 +267,7 @@ impl RunWriter {
         Ok(Self {
             dir: dir.to_path_buf(),
             row: vec![0.0; channels.len()],
+            warnings: Vec::new(),
             stats,
             names,
             channels,
@@ -370,6 +374,7 @@ impl RunWriter {
                 "error": error,
                 "end_time": self.last_time,
                 "samples": self.samples,
+                "warnings": warnings_json(&self.warnings),
                 "channels": channels,
                 "lines": lines,
                 "definitions": {
@@ -391,6 +396,7 @@ impl RunWriter {
                 "error": error,
                 "end_time": self.last_time,
                 "scenario": self.scenario,
+                "warnings": warnings_json(&self.warnings),
             }),
         )
     }
@@ -409,6 +415,7 @@ impl Observer for RunWriter {
     }
 
     fn finish(&mut self, view: &View<'_>, end: &RunEnd) -> Result<(), ObserverError> {
+        self.warnings.clone_from(&end.warnings);
         Ok(self.write_end(view, end.error.as_deref(), end.interrupted)?)
     }
 }
@@ -508,6 +515,16 @@ pub fn statics_json(system: &System, ws: &Workspace) -> Value {
         v["tow_velocity"] = json!([t.x, t.y, t.z]);
     }
     v
+}
+
+/// Warnings as JSON: an array of `{"kind": …, "message": …}` (`summary.json`, `status.json`,
+/// `hawser statics --json`).
+pub fn warnings_json(warnings: &[hawser::Warning]) -> Value {
+    warnings
+        .iter()
+        .map(|w| json!({"kind": w.kind(), "message": w.to_string()}))
+        .collect::<Vec<_>>()
+        .into()
 }
 
 /// `name` as a file name that stays inside its folder: path separators, `:`, control

@@ -23,7 +23,7 @@ mod view;
 
 pub use checkpoint::{CHECKPOINT_VERSION, Decoder, Encoder, fnv1a, model_hash};
 pub use initial::{StepFallback, initial_state, step_fallback};
-pub use stepper::Stepper;
+pub use stepper::{MAX_STEPS, Stepper, check_run_length};
 pub use view::{Attached, LineSample, LineSamples, Observer, ObserverError, RunEnd, View};
 
 use crate::analysis::OutputChannel;
@@ -32,6 +32,7 @@ use crate::math::Real;
 use crate::model::{Model, TimeStep};
 use crate::statics::{StaticOptions, StaticSolution};
 use crate::system::{System, Workspace};
+use crate::warning::Warning;
 use std::sync::Arc;
 use std::sync::atomic::AtomicBool;
 
@@ -58,6 +59,8 @@ pub struct Session {
     observers: Vec<Option<Box<dyn Attached>>>,
     statics: Option<StaticSolution>,
     fallback: Option<StepFallback>,
+    /// The warnings of the initial statics and of the run's length.
+    warnings: Vec<Warning>,
     /// Samples given to the observers so far (0: not even the one at t = 0).
     samples: u64,
     /// Time of the last sample [s].
@@ -128,8 +131,16 @@ impl Session {
         stepper.save(&mut coupling.start);
         let interval = stepper.sample_interval();
         let duration = model.settings.duration;
+        let nodes = system.lines.iter().map(|l| l.nodes()).sum::<usize>()
+            + system.free_points.len()
+            + system.free_bodies.len();
+        let (_, culprit) = stepper.stable_step();
+        let long = check_run_length(stepper.step_size(), culprit, duration, nodes)?;
+        let mut warnings = statics.as_ref().map_or(Vec::new(), |s| s.warnings.clone());
+        warnings.extend(long);
         let outputs = (duration / interval - 1e-9).ceil().max(0.0);
         Ok(Self {
+            warnings,
             end_time: outputs * interval,
             model,
             system,
@@ -157,6 +168,12 @@ impl Session {
     /// The initial static solution, when the run started from one.
     pub fn initial_statics(&self) -> Option<&StaticSolution> {
         self.statics.as_ref()
+    }
+
+    /// What the engineer must know about this run: the warnings of its initial statics
+    /// ([`StaticSolution::warnings`]) and of its length ([`Warning::LongRun`]).
+    pub fn warnings(&self) -> &[Warning] {
+        &self.warnings
     }
 
     /// The input's fixed step, when it was above the stability limit and replaced by the
@@ -335,6 +352,7 @@ impl Session {
             last_sample: self.last_sample,
             error: error.map(|e| e.to_string()),
             interrupted: matches!(error, Some(SimulationError::Interrupted { .. })),
+            warnings: self.warnings.clone(),
         };
         let mut observers = std::mem::take(&mut self.observers);
         let view = self.current_view();
