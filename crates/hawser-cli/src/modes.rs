@@ -51,9 +51,10 @@ struct Timing {
 /// Runs `hawser modes`.
 pub fn run(args: &ModesArgs) -> Result<ExitCode> {
     if !(args.margin >= 0.0 && args.margin < 100.0) || args.count == 0 {
-        eprintln!(
+        err!(
             "error: --margin must be in [0, 100) % and --count at least 1 (got {} %, {})",
-            args.margin, args.count
+            args.margin,
+            args.count
         );
         return Ok(ExitCode::from(2));
     }
@@ -62,14 +63,14 @@ pub fn run(args: &ModesArgs) -> Result<ExitCode> {
     };
     let system = super::system_of(&loaded.model)?;
     if let Err(e) = hawser::analysis::modes::supported(&system) {
-        eprintln!("error: {e}");
+        err!("error: {e}");
         return Ok(ExitCode::from(1));
     }
     let t = Instant::now();
     let sol = match hawser::statics::solve(&system, None, &StaticOptions::default()) {
         Ok(s) => s,
         Err(e) => {
-            eprintln!("error: {e}");
+            err!("error: {e}");
             return Ok(ExitCode::from(1));
         }
     };
@@ -85,7 +86,7 @@ pub fn run(args: &ModesArgs) -> Result<ExitCode> {
     let modes = match natural_modes(&system, &lin, &options) {
         Ok(m) => m,
         Err(e) => {
-            eprintln!("error: {e}");
+            err!("error: {e}");
             return Ok(ExitCode::from(1));
         }
     };
@@ -117,7 +118,7 @@ pub fn run(args: &ModesArgs) -> Result<ExitCode> {
     } else {
         print(&table(&system, &sol, &modes, &stiffness, &report, margin));
     }
-    eprintln!(
+    err!(
         "timing: statics {:.3} s, linearisation {:.3} s, modes {:.3} s ({}), stiffness {:.3} s",
         timing.statics,
         timing.linearisation,
@@ -126,7 +127,7 @@ pub fn run(args: &ModesArgs) -> Result<ExitCode> {
         timing.stiffness
     );
     for r in report.iter().filter(|r| r.warning()) {
-        eprintln!(
+        err!(
             "warning: {} at {:.4} Hz is within {} % of mode {} ({:.4} Hz, {})",
             r.excitation.source,
             r.excitation.frequency,

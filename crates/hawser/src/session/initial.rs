@@ -37,6 +37,27 @@ pub fn initial_state(
     }
 }
 
+/// The step [s] a run of `system` with `settings` will take at most, and what sets it: a fixed
+/// step as given (unless [`step_fallback`] replaces it), else `safety_factor` times the
+/// stability limit (the automatic step is then lowered to divide the output interval). For a
+/// check of the run's length before anything is solved ([`super::check_run_length`]).
+pub fn planned_step(system: &System, settings: &Settings) -> (Real, String) {
+    let (limit, culprit) = system.stable_step(settings.scheme);
+    match settings.time_step {
+        TimeStep::Fixed(dt) if step_fallback(system, settings).is_none() => {
+            (dt, "the scenario's time_step".to_string())
+        }
+        _ => (settings.safety_factor * limit, culprit),
+    }
+}
+
+/// Nodes a run steps: every line node, free point and free body (for the length of a run).
+pub fn stepped_nodes(system: &System) -> usize {
+    system.lines.iter().map(|l| l.nodes()).sum::<usize>()
+        + system.free_points.len()
+        + system.free_bodies.len()
+}
+
 /// A fixed step that [`StepAboveLimit::UseAuto`] replaced by the automatic step.
 #[derive(Clone, Debug, PartialEq)]
 pub struct StepFallback {

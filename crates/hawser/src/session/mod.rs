@@ -22,7 +22,7 @@ mod stepper;
 mod view;
 
 pub use checkpoint::{CHECKPOINT_VERSION, Decoder, Encoder, fnv1a, model_hash};
-pub use initial::{StepFallback, initial_state, step_fallback};
+pub use initial::{StepFallback, initial_state, planned_step, step_fallback, stepped_nodes};
 pub use stepper::{MAX_STEPS, Stepper, check_run_length};
 pub use view::{Attached, LineSample, LineSamples, Observer, ObserverError, RunEnd, View};
 
@@ -81,6 +81,14 @@ impl Session {
     /// equilibrium (with released points held), the steady tow, or the lines as defined.
     pub fn with_options(model: Model, options: SessionOptions) -> Result<Self, SimulationError> {
         let system = System::new(&model)?;
+        // A run that cannot end is refused before its statics are solved.
+        let (step, culprit) = planned_step(&system, &model.settings);
+        check_run_length(
+            step,
+            &culprit,
+            model.settings.duration,
+            stepped_nodes(&system),
+        )?;
         let (state, statics) = initial_state(&system, &model, &options.statics)?;
         Self::assemble(model, system, state, statics, &options)
     }
@@ -131,11 +139,13 @@ impl Session {
         stepper.save(&mut coupling.start);
         let interval = stepper.sample_interval();
         let duration = model.settings.duration;
-        let nodes = system.lines.iter().map(|l| l.nodes()).sum::<usize>()
-            + system.free_points.len()
-            + system.free_bodies.len();
         let (_, culprit) = stepper.stable_step();
-        let long = check_run_length(stepper.step_size(), culprit, duration, nodes)?;
+        let long = check_run_length(
+            stepper.step_size(),
+            culprit,
+            duration,
+            stepped_nodes(&system),
+        )?;
         let mut warnings = statics.as_ref().map_or(Vec::new(), |s| s.warnings.clone());
         warnings.extend(long);
         let outputs = (duration / interval - 1e-9).ceil().max(0.0);
