@@ -386,7 +386,7 @@ impl RunWriter {
         )?;
         write_json(
             &self.dir.join("final_state.json"),
-            &state_json(view, self.last_time),
+            &state_json(view, view.time),
         )?;
         write_json(
             &self.dir.join("status.json"),

@@ -310,6 +310,7 @@ impl Session {
             return Err(bad("the checkpoint's state has another length".into()));
         }
         session.stepper.restore(&saved);
+        session.stepper.save(&mut session.sampled);
         session.stepper.stable_step = (limit, culprit);
         get_tracks(&mut d, &mut session.stepper.ws.coupling)?;
         let open = d.bool()?;

@@ -69,6 +69,9 @@ pub struct Session {
     end_time: Real,
     /// The coupled objects and the coupling interval in progress.
     coupling: coupling::Coupling,
+    /// The run at its last sample: what a diverged run reports as its final state (the
+    /// state of the failed step, or of the step before it, may already be blown up).
+    sampled: stepper::Saved,
 }
 
 impl Session {
@@ -137,6 +140,8 @@ impl Session {
         let mut coupling = coupling::Coupling::of(&model);
         // Sized now: saving the start of an interval allocates nothing.
         stepper.save(&mut coupling.start);
+        let mut sampled = stepper::Saved::default();
+        stepper.save(&mut sampled);
         let interval = stepper.sample_interval();
         let duration = model.settings.duration;
         let (_, culprit) = stepper.stable_step();
@@ -162,6 +167,7 @@ impl Session {
             samples: 0,
             last_sample: 0.0,
             coupling,
+            sampled,
         })
     }
 
@@ -324,11 +330,13 @@ impl Session {
             observers,
             samples,
             last_sample,
+            sampled,
             ..
         } = self;
         let mut notify = |s: &Stepper| {
             *samples += 1;
             *last_sample = s.time();
+            s.save(sampled);
             let view = view_of(system, s, channels, *samples - 1);
             for o in observers.iter_mut().flatten() {
                 o.sample(&view)
@@ -354,6 +362,10 @@ impl Session {
     pub fn finish(&mut self, error: Option<&SimulationError>) -> Result<(), SimulationError> {
         if error.is_none() {
             self.advance_to(self.stepper.time())?;
+        }
+        // A diverged run reports the state of its last sample, which passed the checks.
+        if matches!(error, Some(SimulationError::Diverged { .. })) && self.samples > 0 {
+            self.stepper.restore(&self.sampled);
         }
         // A state that cannot be evaluated (a singular mass matrix) reports the workspace of
         // its last evaluation.

@@ -160,7 +160,7 @@ impl Stepper {
             let mut derivative = vec![0.0; n];
             system
                 .rhs(0.0, &initial, &mut derivative, &mut ws)
-                .map_err(|loc| divergence(limit, 0.0, loc, "singular mass matrix"))?;
+                .map_err(|loc| divergence(limit, 0.0, loc, failed_solve(&ws)))?;
             let (wave, line, element) = system.wave_step(&ws, WAVE_COURANT);
             if wave < limit {
                 limit = wave;
@@ -328,7 +328,7 @@ impl Stepper {
                 self.stable_step.0,
                 t,
                 loc,
-                "singular mass matrix",
+                failed_solve(&self.ws),
             )),
             Ok(()) => self.state.iter().position(|x| !x.is_finite()).map(|i| {
                 divergence(
@@ -459,7 +459,7 @@ impl Stepper {
         self.evaluated_at = None;
         system
             .rhs(t, &self.state, &mut self.derivative, &mut self.ws)
-            .map_err(|loc| divergence(self.stable_step.0, t, loc, "singular mass matrix"))?;
+            .map_err(|loc| divergence(self.stable_step.0, t, loc, failed_solve(&self.ws)))?;
         // Runaway strain: more than 100 % is no cable.
         for (li, lw) in self.ws.lines.iter().enumerate() {
             if let Some(e) = lw.elements.strain.iter().position(|&s| !(s < 1.0)) {
@@ -517,6 +517,17 @@ pub fn check_run_length(
             culprit: culprit.to_string(),
         }),
     )
+}
+
+/// Why the mass solve of an evaluation failed: a state that blew up within the step (its
+/// stages met non-finite positions, velocities or forces), or a mass matrix that is singular
+/// for a finite state.
+fn failed_solve(ws: &Workspace) -> &'static str {
+    if ws.holds_non_finite() {
+        "non-finite position, velocity or force within the step: the state blew up"
+    } else {
+        "singular mass matrix"
+    }
 }
 
 /// The error for a non-finite or runaway state at `location`, with the stable step estimate.
