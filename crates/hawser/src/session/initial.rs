@@ -12,7 +12,8 @@ use crate::system::System;
 /// [`Settings::initial_condition`](crate::model::Settings): the static equilibrium with the
 /// points of `settings.release` held and then free ([`crate::statics::solve_with_release`]),
 /// the steady tow (the system carries the tow velocity, so its statics are the steady tow), or
-/// the lines as defined (elastic catenaries between their ends, everything at rest). Returns
+/// the lines as defined ([`crate::statics::as_defined_shape`]: straight where taut, else
+/// elastic catenaries under their weight in air or water, everything at rest). Returns
 /// the state and the static solution when one was solved.
 pub fn initial_state(
     system: &System,
@@ -31,7 +32,7 @@ pub fn initial_state(
         InitialCondition::AsDefined => {
             let mut ws = system.workspace();
             let mut y = system.straight_state();
-            crate::statics::catenary_seed(system, &mut y, &mut ws);
+            crate::statics::as_defined_shape(system, &mut y, &mut ws);
             Ok((y, None))
         }
     }

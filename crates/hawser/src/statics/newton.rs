@@ -245,10 +245,39 @@ pub fn residual(
     worst
 }
 
-/// Seeds the lines of `y` with elastic catenaries between their current end positions. `dg`
-/// lines take the L2 projection of their hermite twin's seed ([`System::statics_twin`],
-/// [`System::state_from_twin`] without refinement).
+/// Seeds the lines of `y` with elastic catenaries between their current end positions, under
+/// their weight in the medium they hang in (wet below the surface, dry above it, in
+/// proportion for a line that crosses it). `dg` lines take the L2 projection of their hermite
+/// twin's seed ([`System::statics_twin`], [`System::state_from_twin`] without refinement).
 pub fn catenary_seed(system: &System, y: &mut [Real], ws: &mut Workspace) {
+    seed_lines(system, y, ws, false);
+}
+
+/// The lines of `y` as defined, the start of a run with `initial_condition = "as-defined"`:
+/// a line whose unstretched length reaches between its ends no farther than straight is
+/// straight (a beam or a pre-tensioned line as the user drew it, not sagging as a cable),
+/// a longer one the elastic catenary of [`catenary_seed`].
+pub fn as_defined_shape(system: &System, y: &mut [Real], ws: &mut Workspace) {
+    seed_lines(system, y, ws, true);
+}
+
+/// Weight per unit unstretched length [N/m] of a line of weight `dry` in air and `wet` in
+/// water [N/m] whose ends are at heights `za`, `zb` [m]: the share of the chord below the
+/// still water level is wet (SPEC §1: no buoyancy in air).
+fn medium_weight(dry: Real, wet: Real, za: Real, zb: Real) -> Real {
+    let (lo, hi) = (za.min(zb), za.max(zb));
+    let submerged = if hi > lo {
+        ((0.0 - lo) / (hi - lo)).clamp(0.0, 1.0)
+    } else if lo <= 0.0 {
+        1.0
+    } else {
+        0.0
+    };
+    submerged * wet + (1.0 - submerged) * dry
+}
+
+/// [`catenary_seed`], or with `straight_when_taut` [`as_defined_shape`].
+fn seed_lines(system: &System, y: &mut [Real], ws: &mut Workspace, straight_when_taut: bool) {
     if system.has_dg_lines() {
         // A dg line's state is modal: seed its hermite twin and project the cubic shape.
         let twin = system.statics_twin();
@@ -258,7 +287,7 @@ pub fn catenary_seed(system: &System, y: &mut [Real], ws: &mut Workspace) {
                 y_twin[ot..ot + 6].copy_from_slice(&y[*o..o + 6]);
             }
         }
-        catenary_seed(&twin, &mut y_twin, &mut twin.workspace());
+        seed_lines(&twin, &mut y_twin, &mut twin.workspace(), straight_when_taut);
         y.copy_from_slice(&system.state_from_twin(&twin, &y_twin, false));
         system.point_kinematics(0.0, y, ws);
         return;
@@ -268,18 +297,19 @@ pub fn catenary_seed(system: &System, y: &mut [Real], ws: &mut Workspace) {
     for (li, l) in system.lines.iter().enumerate() {
         let n = l.mesh.elements();
         let length = l.mesh.length();
-        let (mut weight, mut ea) = (0.0, 0.0);
+        let (mut dry, mut wet, mut ea) = (0.0, 0.0, 0.0);
         for &k in &l.mesh.element_section {
             let s = &l.mesh.sections[k];
-            weight += (s.line_type.mass_per_length - env.water_density * s.area)
+            dry += s.line_type.mass_per_length * env.gravity * s.element_length;
+            wet += (s.line_type.mass_per_length - env.water_density * s.area)
                 * env.gravity
                 * s.element_length;
             ea += s.element_length / s.law.stiffness.max_tangent();
         }
-        let w = weight / length;
         let ea = length / ea;
         let pa = ws.points[l.end_a].position;
         let pb = ws.points[l.end_b].position;
+        let w = medium_weight(dry / length, wet / length, pa.z, pb.z);
         // Hang from the lower end for a sinking line, from the upper one for a buoyant line.
         let (lo, hi, reversed) = if (w >= 0.0) == (pa.z <= pb.z) {
             (pa, pb, false)
@@ -298,7 +328,8 @@ pub fn catenary_seed(system: &System, y: &mut [Real], ws: &mut Workspace) {
         } else {
             Vec3::x()
         };
-        let cat = if w.abs() > 0.0 {
+        let taut = straight_when_taut && length <= (pb - pa).norm();
+        let cat = if w.abs() > 0.0 && !taut {
             catenary::solve(span, height, length, w.abs(), ea, on_bed)
         } else {
             None
