@@ -39,7 +39,7 @@ pub(super) fn twin_warnings(
     let mut tws = twin.workspace();
     evaluate(twin, y_twin, &mut tws);
     (0..system.lines.len())
-        .filter(|&li| system.lines[li].dg.is_some())
+        .filter(|&li| system.lines[li].dg().is_some())
         .filter_map(|li| twin_mismatch(system, &ws, twin, &tws, li))
         .collect()
 }

@@ -26,7 +26,10 @@ pub(super) fn relax(
         let o = system.layout.line_offset[li] / 3;
         let n = l.mesh.elements();
         let last = l.vectors() - 1;
-        let hermite = matches!(l.kind, crate::formulation::LineKind::Hermite(_));
+        let hermite = matches!(
+            l.discretisation,
+            crate::formulation::Discretisation::Hermite(_)
+        );
         for e in 0..n {
             let s = l.mesh.section(e);
             let k = s.law.stiffness.max_tangent() / s.element_length

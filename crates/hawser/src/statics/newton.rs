@@ -350,7 +350,7 @@ fn seed_lines(system: &System, y: &mut [Real], ws: &mut Workspace, straight_when
                 }
             })
             .collect();
-        l.set_shape(&shape, &mut y[o..]);
+        l.set_node_shape(&shape, &mut y[o..]);
     }
 }
 
@@ -641,7 +641,7 @@ pub(super) fn solve_unchecked(
 pub fn set_tow_velocities(system: &System, y: &mut [Real]) {
     let v = system.tow_velocity;
     for (li, l) in system.lines.iter().enumerate() {
-        if l.dg.is_some() {
+        if l.dg().is_some() {
             continue;
         }
         let o = system.layout.line_offset[li];
@@ -846,7 +846,7 @@ pub fn evaluate(system: &System, y: &[Real], ws: &mut Workspace) -> Real {
         }
         let mut norm: Real = 0.0;
         for (li, l) in system.lines.iter().enumerate() {
-            if let Some(dg) = &l.dg {
+            if let Some(dg) = l.dg() {
                 let o = system.layout.line_offset[li];
                 for (e, el) in dg.elements.iter().enumerate() {
                     let m3 = 3 * dg.section(e).basis.modes();
