@@ -300,6 +300,9 @@ fn statics(file: &Path, json: bool, trace: bool) -> Result<ExitCode> {
     for line in &sol.log {
         err!("{line}");
     }
+    if let Some(f) = &sol.fallback {
+        err!("note: {f}; {} converged", sol.method);
+    }
     for w in &sol.warnings {
         err!("warning: {w}");
     }
@@ -312,6 +315,7 @@ fn statics(file: &Path, json: bool, trace: bool) -> Result<ExitCode> {
             "iterations": sol.iterations,
             "residual": sol.residual,
             "tolerance": sol.tolerance,
+            "fallback": sol.fallback,
         });
         j["warnings"] = warnings_json(&sol.warnings);
         out!("{}", serde_json::to_string_pretty(&j)?);

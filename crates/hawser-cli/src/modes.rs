@@ -40,7 +40,8 @@ pub fn run(args: &ModesArgs) -> Result<ExitCode> {
     if !(args.margin >= 0.0 && args.margin < 100.0) || args.count == 0 {
         err!(
             "error: --margin must be in [0, 100) % and --count at least 1 (got {} %, {})",
-            args.margin, args.count
+            args.margin,
+            args.count
         );
         return Ok(ExitCode::from(2));
     }

@@ -226,6 +226,9 @@ pub(crate) fn run(
             sol.residual,
             t0.elapsed().as_secs_f64()
         );
+        if let Some(f) = &sol.fallback {
+            err!("note: {f}; {} converged", sol.method);
+        }
     }
     for w in session.warnings() {
         err!("warning: {w}");

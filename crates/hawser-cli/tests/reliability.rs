@@ -119,6 +119,13 @@ fn statics_and_run_report_their_warnings() {
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     assert_eq!(v["warnings"][0]["kind"], "strain-beyond-material", "{v}");
     assert!(v["solver"]["tolerance"].as_f64().unwrap() > 0.0);
+    // Which method converged, after how many iterations, to which residual, and why it left
+    // Newton (null: it did not).
+    assert!(v["solver"]["method"].is_string(), "{v}");
+    assert!(v["solver"]["iterations"].as_u64().unwrap() > 0, "{v}");
+    assert!(v["solver"]["residual"].as_f64().unwrap().is_finite(), "{v}");
+    let fallback = &v["solver"]["fallback"];
+    assert!(fallback.is_null() || fallback.is_string(), "{v}");
     let out_dir = dir.join("out");
     let run = hawser(&[
         "run",

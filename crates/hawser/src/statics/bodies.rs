@@ -114,6 +114,7 @@ pub fn solve_with_bodies(
             let warm = twin_state(system, &twin, &y);
             let mut sol = newton_on_poses(system, poses, Some(warm), options)?;
             sol.method = "pseudo-dynamic relaxation, then newton on the bodies' poses";
+            sol.fallback = Some(format!("newton on the bodies' poses failed: {first}"));
             Ok(sol)
         }
     }
@@ -488,5 +489,6 @@ fn newton_on_poses(
         tolerance: sol.tolerance.max(accepted),
         method: "newton on the bodies' poses around the lines' statics",
         log: sol.log,
+        fallback: sol.fallback,
     })
 }

@@ -61,6 +61,10 @@ pub struct StaticSolution {
     pub tolerance: Real,
     /// Method that converged.
     pub method: &'static str,
+    /// Why the solver left Newton from the seed for the method that converged (Newton's
+    /// iterations, residual and tolerance when it failed); `None` when the first method
+    /// converged. A host prints it: an equilibrium found by a fallback deserves a look.
+    pub fallback: Option<String>,
     /// The iteration log, one line per event, when [`StaticOptions::trace`] was set (else
     /// empty).
     pub log: Vec<String>,
@@ -287,7 +291,12 @@ fn seed_lines(system: &System, y: &mut [Real], ws: &mut Workspace, straight_when
                 y_twin[ot..ot + 6].copy_from_slice(&y[*o..o + 6]);
             }
         }
-        seed_lines(&twin, &mut y_twin, &mut twin.workspace(), straight_when_taut);
+        seed_lines(
+            &twin,
+            &mut y_twin,
+            &mut twin.workspace(),
+            straight_when_taut,
+        );
         y.copy_from_slice(&system.state_from_twin(&twin, &y_twin, false));
         system.point_kinematics(0.0, y, ws);
         return;
@@ -692,6 +701,7 @@ fn solve_at_rest(
                 "newton with the bodies held"
             },
             log: sol.log,
+            fallback: sol.fallback,
             warnings,
         });
     }
@@ -721,9 +731,14 @@ fn solve_at_rest(
             tolerance: tol,
             method: "newton",
             log: trace.into_lines(),
+            fallback: None,
             warnings: Vec::new(),
         });
     }
+    let newton_failed = format!(
+        "newton from the seed did not converge in {it} iterations (residual {res:.3e} N, \
+         tolerance {tol:.3e} N)"
+    );
     trace.push(|| {
         format!(
             "newton failed after {it} iterations (residual {res:.3e} N, tolerance {tol:.3e} N): \
@@ -774,6 +789,7 @@ fn solve_at_rest(
                 tolerance: tol,
                 method: "newton with load continuation",
                 log: trace.into_lines(),
+                fallback: Some(newton_failed),
                 warnings: Vec::new(),
             });
         }
@@ -796,6 +812,7 @@ fn solve_at_rest(
             tolerance: tol,
             method: "dynamic relaxation",
             log: trace.into_lines(),
+            fallback: Some(format!("{newton_failed}; load continuation failed")),
             warnings: Vec::new(),
         });
     }
@@ -809,6 +826,7 @@ fn solve_at_rest(
             tolerance: dr_tol,
             method: "dynamic relaxation",
             log: trace.into_lines(),
+            fallback: Some(format!("{newton_failed}; load continuation failed")),
             warnings: Vec::new(),
         });
     }
