@@ -9,7 +9,7 @@ use hawser::model::{MassMatrix, Model, TimeStep};
 use hawser::session::{Session, SessionOptions};
 use hawser::statics::StaticOptions;
 use hawser::system::{System, Workspace};
-use hawser_io::results::statics_json;
+use hawser_io::results::{statics_json, warnings_json};
 use hawser_io::scenario::tables::read_text_file;
 use hawser_io::scenario::{self, InputFormat, LoadedScenario};
 use std::path::{Path, PathBuf};
@@ -29,6 +29,15 @@ macro_rules! out {
     }};
 }
 
+/// `eprintln!` that ignores a failed write: a closed or broken standard error (`2>&-`, a
+/// pipe whose reader has gone) must not turn an error report into a panic (exit 101).
+macro_rules! err {
+    ($($arg:tt)*) => {{
+        use std::io::Write as _;
+        let _ = writeln!(std::io::stderr(), $($arg)*);
+    }};
+}
+
 mod bench;
 mod modes;
 mod run;
@@ -45,14 +54,16 @@ struct Cli {
     command: Command,
 }
 
-/// Choices a MoorDyn deck leaves to its host program.
+/// Choices a MoorDyn deck leaves to its host program (the duration also for scenarios).
 #[derive(clap::Args, Clone, Debug, Default)]
 struct DeckArgs {
-    /// MoorDyn decks: simulated duration [s] (default: the vessel motion's length, else 60 s).
+    /// Simulated duration [s]: replaces a scenario's `simulation.duration`; for a MoorDyn
+    /// deck, default the vessel motion's length, else 60 s.
     #[arg(long = "duration", value_name = "SECONDS")]
     deck_duration: Option<Real>,
-    /// MoorDyn decks: move every Coupled/Vessel point with this vessel motion (columns t, x,
-    /// y, z, roll, pitch, yaw in s, m, deg; its first row is t = 0).
+    /// MoorDyn decks only: move every Coupled/Vessel point with this vessel motion (columns t,
+    /// x, y, z, roll, pitch, yaw in s, m, deg; its first row is t = 0; a relative path is
+    /// relative to the working directory). A scenario names its motions itself and refuses it.
     #[arg(long, value_name = "FILE")]
     vessel_motion: Option<PathBuf>,
 }
@@ -180,7 +191,7 @@ fn main() -> ExitCode {
     match result {
         Ok(code) => code,
         Err(e) => {
-            eprintln!("error: {e:#}");
+            err!("error: {e:#}");
             ExitCode::from(1)
         }
     }
@@ -203,7 +214,7 @@ fn load_with(file: &Path, deck: &DeckArgs, quiet: bool) -> Option<LoadedScenario
             Some(s)
         }
         Err(e) => {
-            eprintln!("{e}");
+            err!("{e}");
             None
         }
     }
@@ -212,9 +223,9 @@ fn load_with(file: &Path, deck: &DeckArgs, quiet: bool) -> Option<LoadedScenario
 fn print_notes(file: &Path, notes: &[hawser_io::moordyn::Note]) {
     for n in notes {
         if n.line > 0 {
-            eprintln!("note: {}:{}: {}", file.display(), n.line, n.message);
+            err!("note: {}:{}: {}", file.display(), n.line, n.message);
         } else {
-            eprintln!("note: {}: {}", file.display(), n.message);
+            err!("note: {}: {}", file.display(), n.message);
         }
     }
 }
@@ -222,7 +233,7 @@ fn print_notes(file: &Path, notes: &[hawser_io::moordyn::Note]) {
 fn convert(file: &Path, out: Option<&Path>, deck: &DeckArgs) -> Result<ExitCode> {
     let source = read_text_file(file).with_context(|| format!("cannot read {}", file.display()))?;
     if !hawser_io::moordyn::looks_like_deck(&source) {
-        eprintln!(
+        err!(
             "error: {} is not a MoorDyn deck (no `---- LINE TYPES ----`, `---- POINTS ----` or `---- LINES ----` section)\n  = hint: `hawser convert` reads MoorDyn v2 input decks; hawser scenarios need no conversion",
             file.display()
         );
@@ -231,7 +242,7 @@ fn convert(file: &Path, out: Option<&Path>, deck: &DeckArgs) -> Result<ExitCode>
     let loaded = match hawser_io::moordyn::parse(file, &source, &deck.options()) {
         Ok(d) => d,
         Err(e) => {
-            eprintln!("{e}");
+            err!("{e}");
             return Ok(ExitCode::from(2));
         }
     };
@@ -241,7 +252,7 @@ fn convert(file: &Path, out: Option<&Path>, deck: &DeckArgs) -> Result<ExitCode>
             std::fs::write(path, &text)
                 .with_context(|| format!("cannot write {}", path.display()))?;
             print_notes(file, &loaded.notes);
-            eprintln!("wrote {}", path.display());
+            err!("wrote {}", path.display());
         }
         None => out!("{text}"),
     }
@@ -282,12 +293,18 @@ fn statics(file: &Path, json: bool, trace: bool) -> Result<ExitCode> {
     let sol = match hawser::statics::solve(&system, None, &options) {
         Ok(s) => s,
         Err(e) => {
-            eprintln!("error: {e}");
+            err!("error: {e}");
             return Ok(ExitCode::from(1));
         }
     };
     for line in &sol.log {
-        eprintln!("{line}");
+        err!("{line}");
+    }
+    if let Some(f) = &sol.fallback {
+        err!("note: {f}; {} converged", sol.method);
+    }
+    for w in &sol.warnings {
+        err!("warning: {w}");
     }
     let mut ws = system.workspace();
     hawser::statics::evaluate(&system, &sol.state, &mut ws);
@@ -297,15 +314,19 @@ fn statics(file: &Path, json: bool, trace: bool) -> Result<ExitCode> {
             "method": sol.method,
             "iterations": sol.iterations,
             "residual": sol.residual,
+            "tolerance": sol.tolerance,
+            "fallback": sol.fallback,
         });
+        j["warnings"] = warnings_json(&sol.warnings);
         out!("{}", serde_json::to_string_pretty(&j)?);
         return Ok(ExitCode::SUCCESS);
     }
     out!(
-        "static equilibrium: {} ({} iterations, residual {:.2e} N)",
+        "static equilibrium: {} ({} iterations, residual {:.2e} N, tolerance {:.2e} N)",
         sol.method,
         sol.iterations,
-        sol.residual
+        sol.residual,
+        sol.tolerance
     );
     out!(
         "{:<16} {:>14} {:>14} {:>14}",
@@ -425,7 +446,7 @@ fn check(file: &Path, deck: &DeckArgs) -> Result<ExitCode> {
     let system = system_of(model)?;
     let (limit, culprit) = system.stable_step(model.settings.scheme);
     if let Some((dt, limit, culprit)) = deck_step_above_limit(&loaded, &system) {
-        eprintln!(
+        err!(
             "warning: the deck's dtM = {dt} s is above hawser's stability limit {limit:.4e} s \
              ({culprit}); `hawser run` will use time_step = \"auto\""
         );
@@ -437,18 +458,33 @@ fn check(file: &Path, deck: &DeckArgs) -> Result<ExitCode> {
             limit,
             culprit,
         };
-        eprintln!("{}", step_error(file, &loaded, &e));
+        err!("{}", step_error(file, &loaded, &e));
         return Ok(ExitCode::from(2));
     }
     let nodes: usize = system.lines.iter().map(|l| l.nodes()).sum();
+    let (step, sets) = hawser::session::planned_step(&system, &model.settings);
+    let duration = model.settings.duration;
+    let run_nodes = hawser::session::stepped_nodes(&system);
+    match hawser::session::check_run_length(step, &sets, duration, run_nodes) {
+        Err(e) => {
+            err!("error: {e}");
+            return Ok(ExitCode::from(2));
+        }
+        Ok(Some(w)) => err!("warning: {w}"),
+        Ok(None) => {}
+    }
     out!(
-        "{}: ok — {} line(s), {} point(s), {} nodes; stable time step {:.4e} s ({})",
+        "{}: ok — {} line(s), {} point(s), {} nodes; stable time step {:.4e} s ({}); {:.0} \
+         steps of at most {:.4e} s for {} s",
         file.display(),
         system.lines.len(),
         system.points.len(),
         nodes,
         limit,
-        culprit
+        culprit,
+        (duration / step).ceil(),
+        step,
+        duration
     );
     Ok(ExitCode::SUCCESS)
 }

@@ -38,9 +38,10 @@ pub struct ModesArgs {
 /// Runs `hawser modes`.
 pub fn run(args: &ModesArgs) -> Result<ExitCode> {
     if !(args.margin >= 0.0 && args.margin < 100.0) || args.count == 0 {
-        eprintln!(
+        err!(
             "error: --margin must be in [0, 100) % and --count at least 1 (got {} %, {})",
-            args.margin, args.count
+            args.margin,
+            args.count
         );
         return Ok(ExitCode::from(2));
     }
@@ -51,7 +52,7 @@ pub fn run(args: &ModesArgs) -> Result<ExitCode> {
     let analysis = match ModalAnalysis::compute(&system, args.count, args.margin / 100.0) {
         Ok(a) => a,
         Err(e) => {
-            eprintln!("error: {e}");
+            err!("error: {e}");
             return Ok(ExitCode::from(1));
         }
     };
@@ -66,7 +67,7 @@ pub fn run(args: &ModesArgs) -> Result<ExitCode> {
         print(&table(&system, &analysis));
     }
     let timing = &analysis.timing;
-    eprintln!(
+    err!(
         "timing: statics {:.3} s, linearisation {:.3} s, modes {:.3} s ({}), stiffness {:.3} s",
         timing.statics,
         timing.linearisation,
@@ -76,7 +77,7 @@ pub fn run(args: &ModesArgs) -> Result<ExitCode> {
     );
     let modes = &analysis.modes;
     for r in analysis.resonance.iter().filter(|r| r.warning()) {
-        eprintln!(
+        err!(
             "warning: {} at {:.4} Hz is within {} % of mode {} ({:.4} Hz, {})",
             r.excitation.source,
             r.excitation.frequency,

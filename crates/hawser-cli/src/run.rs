@@ -145,11 +145,15 @@ pub(crate) fn session_of(
     match Session::with_options(loaded.model.clone(), options) {
         Ok(s) => Ok(Ok(s)),
         Err(SimulationError::Statics(e)) => {
-            eprintln!("error: {e}");
+            err!("error: {e}");
             Ok(Err(ExitCode::from(1)))
         }
         Err(e @ SimulationError::StepTooLarge { .. }) => {
-            eprintln!("{}", step_error(file, loaded, &e));
+            err!("{}", step_error(file, loaded, &e));
+            Ok(Err(ExitCode::from(2)))
+        }
+        Err(e @ SimulationError::StepUnusable { .. }) => {
+            err!("error: {e}");
             Ok(Err(ExitCode::from(2)))
         }
         Err(SimulationError::Model(e)) => {
@@ -179,7 +183,7 @@ pub(crate) fn run(
     if let Some(c) = checkpoint_every
         && !(c > 0.0 && c.is_finite())
     {
-        eprintln!(
+        err!(
             "error: --checkpoint-every {c}: expected a positive number of seconds of simulated time"
         );
         return Ok(ExitCode::from(2));
@@ -188,7 +192,7 @@ pub(crate) fn run(
         return Ok(ExitCode::from(2));
     };
     if !loaded.has_simulation {
-        eprintln!(
+        err!(
             "error: {} has no [simulation] table\n  = hint: add `[simulation]` with `duration = ...` (s)",
             file.display()
         );
@@ -205,32 +209,40 @@ pub(crate) fn run(
     };
     // Only once the input is accepted: refused input writes nothing.
     if let Err(e) = prepare_output_dir(out, overwrite) {
-        eprintln!("error: {e}");
+        err!("error: {e}");
         return Ok(ExitCode::from(2));
     }
     if let Some(f) = session.step_fallback() {
-        eprintln!(
+        err!(
             "warning: the deck's dtM = {} s is above hawser's stability limit {:.4e} s \
              (set by {}); using time_step = \"auto\"",
-            f.requested, f.limit, f.culprit
+            f.requested,
+            f.limit,
+            f.culprit
         );
     }
     let model = &loaded.model;
     if let Some(sol) = session.initial_statics()
         && !quiet
     {
-        eprintln!(
+        err!(
             "statics: {} after {} iterations, residual {:.2e} N ({:.2} s)",
             sol.method,
             sol.iterations,
             sol.residual,
             t0.elapsed().as_secs_f64()
         );
+        if let Some(f) = &sol.fallback {
+            err!("note: {f}; {} converged", sol.method);
+        }
+    }
+    for w in session.warnings() {
+        err!("warning: {w}");
     }
     let (limit, culprit) = session.stable_step();
     let (limit, culprit) = (limit, culprit.to_string());
     if session.step_size() > limit {
-        eprintln!(
+        err!(
             "warning: time step {:.4e} s is above the stability estimate {:.4e} s ({}); --allow-unstable-step is set",
             session.step_size(),
             limit,
@@ -240,7 +252,7 @@ pub(crate) fn run(
     if (session.sample_interval() - model.settings.output_interval).abs()
         > 1e-9 * model.settings.output_interval
     {
-        eprintln!(
+        err!(
             "note: output_interval {} s is not a whole number of {} s steps; sampling every {} s",
             model.settings.output_interval,
             session.step_size(),
@@ -249,18 +261,35 @@ pub(crate) fn run(
     }
     if !quiet {
         let choice = session.scheme();
-        eprintln!("scheme: {} ({})", choice.scheme.name(), choice.reason);
+        err!("scheme: {} ({})", choice.scheme.name(), choice.reason);
         if choice.scheme == hawser::model::Scheme::GeneralizedAlpha
             && model.settings.time_step == hawser::model::TimeStep::Auto
         {
-            eprintln!(
+            err!(
                 "time step: adaptive, tolerance {:.1e}, first step {:.4e} s",
                 model.settings.tolerance,
                 session.step_size()
             );
         } else {
-            eprintln!(
-                "time step {:.4e} s (stability limit {:.4e} s, set by {}), {} steps",
+            // The automatic step divides the output interval: say so when that lowered it.
+            let wanted = model.settings.safety_factor * limit;
+            let lowered = match (&model.settings.time_step, session.step_fallback()) {
+                (hawser::model::TimeStep::Auto, _) | (_, Some(_))
+                    if session.step_size() < wanted * (1.0 - 1e-9) =>
+                {
+                    format!(
+                        "; lowered from {} × the limit = {wanted:.4e} s ({:.1} %) so that {} \
+                         steps make the output interval of {} s",
+                        model.settings.safety_factor,
+                        100.0 * (1.0 - session.step_size() / wanted),
+                        (session.sample_interval() / session.step_size()).round(),
+                        session.sample_interval()
+                    )
+                }
+                _ => String::new(),
+            };
+            err!(
+                "time step {:.4e} s (stability limit {:.4e} s, set by {}{lowered}), {} steps",
                 session.step_size(),
                 limit,
                 culprit,
@@ -287,7 +316,7 @@ pub(crate) fn run(
 pub(crate) fn resume(dir: &Path, quiet: bool) -> Result<ExitCode> {
     let signals = Signals::install();
     let refuse = |why: String| {
-        eprintln!("error: cannot resume the run in {}: {why}", dir.display());
+        err!("error: cannot resume the run in {}: {why}", dir.display());
         Ok(ExitCode::from(2))
     };
     let invocation = match std::fs::read_to_string(dir.join("run.json"))
@@ -340,7 +369,7 @@ pub(crate) fn resume(dir: &Path, quiet: bool) -> Result<ExitCode> {
         Err(e) => return refuse(e.to_string()),
     };
     if !quiet {
-        eprintln!(
+        err!(
             "resuming {} at t = {:.6} s (step {:.4e} s, {} steps done)",
             file.display(),
             session.time(),
@@ -440,7 +469,7 @@ fn drive(
         Ok(()) => {
             if !quiet {
                 let simulated = session.time() - simulated_from;
-                eprintln!(
+                err!(
                     "done: {:.2} s simulated in {wall:.2} s ({:.1}× real time); results in {}",
                     session.time(),
                     simulated / wall.max(1e-9),
@@ -457,7 +486,7 @@ fn drive(
             Ok(ExitCode::SUCCESS)
         }
         Err(e) if interrupted => {
-            eprintln!(
+            err!(
                 "{e}: results up to t = {:.6} s are in {} (marked interrupted), with a \
                  checkpoint; continue with `hawser resume {}`",
                 written,
@@ -467,7 +496,7 @@ fn drive(
             Ok(ExitCode::from(signals.exit_code()))
         }
         Err(e) => {
-            eprintln!(
+            err!(
                 "error: {e}\n  = results up to t = {:.6} s are in {} (marked incomplete)",
                 written,
                 out.display()

@@ -62,7 +62,7 @@ pub fn run(args: &ValidateArgs) -> Result<ExitCode> {
         for &f in &formulations {
             let t = Instant::now();
             let r = run_case(case, f, fidelity);
-            eprintln!(
+            err!(
                 "{} ({}): {:.1} s",
                 case.name,
                 formulation_name(f),
@@ -73,9 +73,9 @@ pub fn run(args: &ValidateArgs) -> Result<ExitCode> {
     }
     let wall = start.elapsed().as_secs_f64();
     let checks: Vec<_> = results.iter().flat_map(|r| &r.checks).collect();
-    print!("{}", text_table(&checks));
+    out!("{}", text_table(&checks).trim_end_matches('\n'));
     let (pass, fail, na) = tally(&results);
-    println!(
+    out!(
         "\n{pass} passed, {fail} failed, {na} not available ({} suite, {wall:.1} s)",
         if args.quick { "quick" } else { "full" }
     );
@@ -96,7 +96,7 @@ pub fn run(args: &ValidateArgs) -> Result<ExitCode> {
         );
         write_report(&results, &args.report, &preamble)
             .with_context(|| format!("writing {}", args.report.display()))?;
-        println!("report: {}", args.report.display());
+        out!("report: {}", args.report.display());
     }
     Ok(if fail > 0 {
         ExitCode::from(1)

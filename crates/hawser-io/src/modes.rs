@@ -255,7 +255,7 @@ impl ModalAnalysis {
             .collect();
         let timing = &self.timing;
         json!({
-            "statics": {"method": sol.method, "iterations": sol.iterations, "residual_n": sol.residual},
+            "statics": {"method": sol.method, "fallback": sol.fallback, "iterations": sol.iterations, "residual_n": sol.residual},
             "degrees_of_freedom": lin.dofs.len(),
             "method": self.method_name(),
             "stiffness_asymmetry": modes.stiffness_asymmetry,

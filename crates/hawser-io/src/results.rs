@@ -65,6 +65,8 @@ pub struct RunSummary {
     samples: u64,
     /// The channel values of the sample being taken.
     row: Vec<Real>,
+    /// The run's warnings, written into `summary.json` and `status.json` at its end.
+    warnings: Vec<hawser::Warning>,
 }
 
 impl RunSummary {
@@ -85,7 +87,18 @@ impl RunSummary {
             next_snapshot: 0.0,
             last_time: 0.0,
             samples: 0,
+            warnings: Vec::new(),
         }
+    }
+
+    /// The run's warnings ([`RunEnd::warnings`]), written into `summary.json` at its end.
+    pub fn set_warnings(&mut self, warnings: &[hawser::Warning]) {
+        self.warnings = warnings.to_vec();
+    }
+
+    /// The run's warnings set by [`RunSummary::set_warnings`].
+    pub fn warnings(&self) -> &[hawser::Warning] {
+        &self.warnings
     }
 
     /// Reads the channel values of `view` into [`RunSummary::row`] without recording them.
@@ -198,6 +211,7 @@ impl RunSummary {
             "error": error,
             "end_time": self.last_time,
             "samples": self.samples,
+            "warnings": warnings_json(&self.warnings),
             "channels": channels,
             "lines": lines,
             "definitions": {
@@ -673,6 +687,7 @@ impl RunWriter {
             "state": if complete { "finished" } else if interrupted { "interrupted" } else { "stopped" },
             "error": error,
             "end_time": self.summary.last_time,
+            "warnings": warnings_json(&self.summary.warnings),
         }));
         match failure {
             Some(e) => Err(e),
@@ -689,6 +704,7 @@ impl Observer for RunWriter {
     }
 
     fn finish(&mut self, view: &View<'_>, end: &RunEnd) -> Result<(), ObserverError> {
+        self.summary.set_warnings(&end.warnings);
         Ok(self.write_end(view, end.error.as_deref(), end.interrupted)?)
     }
 }
@@ -791,6 +807,16 @@ pub fn statics_json(system: &System, ws: &Workspace) -> Value {
         v["tow_velocity"] = json!([t.x, t.y, t.z]);
     }
     v
+}
+
+/// Warnings as JSON: an array of `{"kind": …, "message": …}` (`summary.json`, `status.json`,
+/// `hawser statics --json`).
+pub fn warnings_json(warnings: &[hawser::Warning]) -> Value {
+    warnings
+        .iter()
+        .map(|w| json!({"kind": w.kind(), "message": w.to_string()}))
+        .collect::<Vec<_>>()
+        .into()
 }
 
 /// `name` as a file name that stays inside its folder: path separators, `:`, control

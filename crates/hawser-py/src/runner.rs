@@ -147,8 +147,9 @@ impl Observer for Recorder {
 
     fn finish(&mut self, view: &View<'_>, end: &RunEnd) -> Result<(), ObserverError> {
         self.summary.finish();
+        self.summary.set_warnings(&end.warnings);
         self.summary_json = Some(self.summary.to_json(view.system, end.error.as_deref()));
-        self.final_state = Some(state_json(view, self.summary.last_time()));
+        self.final_state = Some(state_json(view, view.time));
         self.end = Some(end.clone());
         Ok(())
     }

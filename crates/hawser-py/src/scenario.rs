@@ -401,6 +401,8 @@ impl Scenario {
         raw.set_item("method", sol.method.to_string())?;
         raw.set_item("iterations", sol.iterations)?;
         raw.set_item("residual", sol.residual)?;
+        raw.set_item("tolerance", sol.tolerance)?;
+        raw.set_item("fallback", sol.fallback.clone())?;
         raw.set_item("lines", lines_dict(py, &view)?)?;
         let points = PyDict::new(py);
         for (i, p) in system.points.iter().enumerate() {

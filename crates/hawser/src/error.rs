@@ -89,6 +89,24 @@ pub enum SimulationError {
         /// Which element or point sets it.
         culprit: String,
     },
+    /// A time step with which the run cannot end: zero, not finite, or needing more than
+    /// [`MAX_STEPS`](crate::session::MAX_STEPS) steps for the duration.
+    #[error(
+        "the time step {step:.4e} s (set by {culprit}) cannot run the {duration} s duration: it \
+         needs {steps:.3e} steps; hint: check the property that sets the step (a friction \
+         velocity, damping or stiffness far outside the physical range?), or give a \
+         time_step"
+    )]
+    StepUnusable {
+        /// The step [s].
+        step: Real,
+        /// What sets it.
+        culprit: String,
+        /// The run's duration [s].
+        duration: Real,
+        /// The steps the duration needs (infinite for a zero step).
+        steps: Real,
+    },
     /// The run was stopped from outside (SIGINT, SIGTERM, a host's interrupt flag) between
     /// two steps.
     #[error("the run was interrupted at t = {time:.6} s")]

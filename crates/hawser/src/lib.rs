@@ -26,8 +26,10 @@ pub mod statics;
 pub mod system;
 pub mod validation;
 pub mod verification;
+pub mod warning;
 
 pub use error::{ModalError, ModelError, SimulationError, StaticsError};
 pub use model::Model;
 pub use session::Session;
 pub use system::System;
+pub use warning::Warning;

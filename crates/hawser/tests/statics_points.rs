@@ -160,6 +160,12 @@ fn the_trace_logs_the_iterations_only_when_asked() {
         traced.log
     );
     assert!(failed, "this case falls back ({})", traced.method);
+    // The solution says so without the trace: Newton failed, with its residual.
+    let why = quiet.fallback.as_deref().expect("the fallback is reported");
+    assert!(
+        why.starts_with("newton from the seed did not converge") && why.contains(" N"),
+        "{why}"
+    );
     let newton = |l: &String| l.starts_with("newton ") && l.contains(" -> ");
     assert!(traced.log.iter().any(newton), "{:?}", traced.log);
     // A case Newton solves alone: the same line with its end held, the mass hung below.
@@ -168,6 +174,7 @@ fn the_trace_logs_the_iterations_only_when_asked() {
     let system = System::new(&model).unwrap();
     let sol = solve(&system, None, &options).unwrap();
     assert_eq!(sol.method, "newton", "{:?}", sol.log);
+    assert_eq!(sol.fallback, None);
     let last = sol.log.iter().rev().find(|l| newton(l)).unwrap();
     let after = last.split(" -> ").nth(1).unwrap();
     let r: f64 = after.split(' ').next().unwrap().parse().unwrap();

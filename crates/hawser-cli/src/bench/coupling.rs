@@ -47,7 +47,7 @@ fn timed(
 /// `hawser bench FILE --coupling SECONDS`.
 pub fn run(args: &BenchArgs, interval: Real) -> Result<ExitCode> {
     if !(interval.is_finite() && interval > 0.0) {
-        eprintln!("error: --coupling {interval}: expected a coupling interval > 0 s");
+        err!("error: --coupling {interval}: expected a coupling interval > 0 s");
         return Ok(ExitCode::from(2));
     }
     let deck = DeckArgs {
@@ -66,7 +66,7 @@ pub fn run(args: &BenchArgs, interval: Real) -> Result<ExitCode> {
     }
     let (coupled_model, motions) = couple_prescribed_points(&model);
     if motions.is_empty() {
-        eprintln!(
+        err!(
             "error: {}: --coupling needs prescribed points to couple; this scenario has none",
             args.file.display()
         );

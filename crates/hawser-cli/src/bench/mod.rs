@@ -130,7 +130,7 @@ fn bench(
         "consistent" => &[MassMatrix::Consistent],
         "both" => &[MassMatrix::Lumped, MassMatrix::Consistent],
         other => {
-            eprintln!("error: --mass {other}: expected lumped, consistent or both");
+            err!("error: --mass {other}: expected lumped, consistent or both");
             return Ok(ExitCode::from(2));
         }
     };
@@ -140,12 +140,12 @@ fn bench(
         "hermite" => Some(Formulation::Hermite),
         "dg" => Some(Formulation::Dg),
         other => {
-            eprintln!("error: --formulation {other}: expected as-is, fe, hermite or dg");
+            err!("error: --formulation {other}: expected as-is, fe, hermite or dg");
             return Ok(ExitCode::from(2));
         }
     };
     if choice.order.is_some() && formulation != Some(Formulation::Dg) {
-        eprintln!("error: --order applies to --formulation dg only");
+        err!("error: --order applies to --formulation dg only");
         return Ok(ExitCode::from(2));
     }
     let schemes: Vec<Option<Scheme>> = match choice.scheme {
@@ -162,7 +162,7 @@ fn bench(
             Some(Scheme::GeneralizedAlpha),
         ],
         other => {
-            eprintln!(
+            err!(
                 "error: --scheme {other}: expected as-is, rk4, ssp-rk3, three-level, \
                  generalized-alpha, auto or all"
             );
@@ -181,14 +181,14 @@ fn bench(
         "points" => &[true],
         "both" => &[false, true],
         other => {
-            eprintln!("error: --bodies {other}: expected as-is, points or both");
+            err!("error: --bodies {other}: expected as-is, points or both");
             return Ok(ExitCode::from(2));
         }
     };
     let wave_cases = match bench_cases::parse_waves(choice.waves) {
         Ok(w) => w,
         Err(e) => {
-            eprintln!("error: {e}");
+            err!("error: {e}");
             return Ok(ExitCode::from(2));
         }
     };
@@ -198,7 +198,7 @@ fn bench(
         "static-position" => &[true],
         "both" => &[false, true],
         other => {
-            eprintln!("error: --kinematics {other}: expected direct, static-position or both");
+            err!("error: --kinematics {other}: expected direct, static-position or both");
             return Ok(ExitCode::from(2));
         }
     };
@@ -319,7 +319,7 @@ fn bench(
             let mut sim = match Session::from_state(c.model.clone(), c.y0.clone(), options) {
                 Ok(s) => s,
                 Err(e) => {
-                    eprintln!("{}", step_error(file, &loaded, &e));
+                    err!("{}", step_error(file, &loaded, &e));
                     return Ok(ExitCode::from(2));
                 }
             };
@@ -427,7 +427,7 @@ fn bench(
             r["wave_table_bytes"].as_u64(),
             r["wave_table_points"].as_u64(),
         ) {
-            eprintln!(
+            err!(
                 "{} static-position cache: {points} points, {bytes} bytes ({:.0} bytes per point)",
                 r["waves"].as_str().unwrap_or(""),
                 bytes as f64 / points.max(1) as f64

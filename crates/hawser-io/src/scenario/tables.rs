@@ -178,9 +178,10 @@ pub fn read_rao_table(path: &Path) -> Result<RaoTable, String> {
                 "frequency_hz" => "frequency_hz",
                 "omega_rad_s" => "omega_rad_s",
                 _ => {
+                    // The file may be no table at all: its contents are not quoted.
                     return Err(format!(
-                        "{}: the header must start with `period_s`, `frequency_hz` or \
-                         `omega_rad_s`, found `{first}`",
+                        "{}: not an RAO table: its first line must be a header starting with \
+                         `period_s`, `frequency_hz` or `omega_rad_s`",
                         at(n)
                     ));
                 }
@@ -198,7 +199,7 @@ pub fn read_rao_table(path: &Path) -> Result<RaoTable, String> {
             .iter()
             .map(|s| s.parse::<f64>())
             .collect::<Result<_, _>>()
-            .map_err(|_| format!("{}: not a number in `{line}`", at(n)))?;
+            .map_err(|_| not_a_number(&at(n), &fields, !amplitudes.is_empty()))?;
         if nums.len() != 14 {
             return Err(format!(
                 "{}: expected 14 columns (first column, heading, then amplitude and phase of \
@@ -334,15 +335,31 @@ pub fn read_table<const N: usize>(path: &Path, columns: &str) -> Result<Vec<[f64
             }
             Err(_) if rows.is_empty() && n == 0 => continue, // header
             Err(_) => {
-                return Err(format!(
-                    "{}:{}: not a number in `{line}`",
-                    path.display(),
-                    n + 1
-                ));
+                let at = format!("{}:{}", path.display(), n + 1);
+                return Err(not_a_number(&at, &fields, !rows.is_empty()));
             }
         }
     }
     Ok(rows)
+}
+
+/// The error for a row of a table of numbers at `at` (file:line) whose `fields` are not all
+/// numbers. The first bad field is quoted only when rows of numbers came before it (`table`):
+/// a file that is not a table at all (a path mistyped into a password file, a key) has none
+/// of its contents quoted.
+fn not_a_number(at: &str, fields: &[&str], table: bool) -> String {
+    let bad = fields.iter().find(|s| s.parse::<f64>().is_err());
+    match bad {
+        Some(b) if table => {
+            let shown: String = b.chars().take(32).collect();
+            let more = if b.chars().count() > 32 { "…" } else { "" };
+            format!("{at}: not a number: `{}{more}`", shown.escape_debug())
+        }
+        _ => format!(
+            "{at}: not a table of numbers (this line holds text where numbers were expected; \
+             its contents are not shown)"
+        ),
+    }
 }
 
 /// Reads a MoorDyn tension–strain table: rows `strain tension` [-, N], whitespace or comma

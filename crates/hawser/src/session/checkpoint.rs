@@ -315,6 +315,7 @@ impl Session {
                 "the checkpoint's integrator history does not fit this run's scheme".into(),
             ));
         }
+        session.stepper.save(&mut session.sampled);
         session.stepper.stable_step = (limit, culprit);
         get_tracks(&mut d, &mut session.stepper.ws.coupling)?;
         let open = d.bool()?;

@@ -96,6 +96,8 @@ impl Session {
                 }
                 self.samples = samples;
                 self.last_sample = last;
+                // The last accepted state is now the interval's start.
+                self.stepper.save(&mut self.sampled);
             }
             return Ok(false);
         }

@@ -12,7 +12,8 @@ use crate::system::System;
 /// [`Settings::initial_condition`](crate::model::Settings): the static equilibrium with the
 /// points of `settings.release` held and then free ([`crate::statics::solve_with_release`]),
 /// the steady tow (the system carries the tow velocity, so its statics are the steady tow), or
-/// the lines as defined (elastic catenaries between their ends, everything at rest). Returns
+/// the lines as defined ([`crate::statics::as_defined_shape`]: straight where taut, else
+/// elastic catenaries under their weight in air or water, everything at rest). Returns
 /// the state and the static solution when one was solved.
 pub fn initial_state(
     system: &System,
@@ -31,10 +32,31 @@ pub fn initial_state(
         InitialCondition::AsDefined => {
             let mut ws = system.workspace();
             let mut y = system.straight_state();
-            crate::statics::catenary_seed(system, &mut y, &mut ws);
+            crate::statics::as_defined_shape(system, &mut y, &mut ws);
             Ok((y, None))
         }
     }
+}
+
+/// The step [s] a run of `system` with `settings` will take at most, and what sets it: a fixed
+/// step as given (unless [`step_fallback`] replaces it), else `safety_factor` times the
+/// stability limit (the automatic step is then lowered to divide the output interval). For a
+/// check of the run's length before anything is solved ([`super::check_run_length`]).
+pub fn planned_step(system: &System, settings: &Settings) -> (Real, String) {
+    let (limit, culprit) = system.stable_step(settings.scheme);
+    match settings.time_step {
+        TimeStep::Fixed(dt) if step_fallback(system, settings).is_none() => {
+            (dt, "the scenario's time_step".to_string())
+        }
+        _ => (settings.safety_factor * limit, culprit),
+    }
+}
+
+/// Nodes a run steps: every line node, free point and free body (for the length of a run).
+pub fn stepped_nodes(system: &System) -> usize {
+    system.lines.iter().map(|l| l.nodes()).sum::<usize>()
+        + system.free_points.len()
+        + system.free_bodies.len()
 }
 
 /// A fixed step that [`StepAboveLimit::UseAuto`] replaced by the automatic step.

@@ -22,8 +22,8 @@ mod stepper;
 mod view;
 
 pub use checkpoint::{CHECKPOINT_VERSION, Decoder, Encoder, fnv1a, model_hash};
-pub use initial::{StepFallback, initial_state, step_fallback};
-pub use stepper::Stepper;
+pub use initial::{StepFallback, initial_state, planned_step, step_fallback, stepped_nodes};
+pub use stepper::{MAX_STEPS, Stepper, check_run_length};
 pub use view::{Attached, LineSample, LineSamples, Observer, ObserverError, RunEnd, View};
 
 use crate::analysis::OutputChannel;
@@ -32,6 +32,7 @@ use crate::math::Real;
 use crate::model::{Model, TimeStep};
 use crate::statics::{StaticOptions, StaticSolution};
 use crate::system::{System, Workspace};
+use crate::warning::Warning;
 use std::sync::Arc;
 use std::sync::atomic::AtomicBool;
 
@@ -58,6 +59,8 @@ pub struct Session {
     observers: Vec<Option<Box<dyn Attached>>>,
     statics: Option<StaticSolution>,
     fallback: Option<StepFallback>,
+    /// The warnings of the initial statics and of the run's length.
+    warnings: Vec<Warning>,
     /// Samples given to the observers so far (0: not even the one at t = 0).
     samples: u64,
     /// Time of the last sample [s].
@@ -66,6 +69,9 @@ pub struct Session {
     end_time: Real,
     /// The coupled objects and the coupling interval in progress.
     coupling: coupling::Coupling,
+    /// The run at its last sample: what a diverged run reports as its final state (the
+    /// state of the failed step, or of the step before it, may already be blown up).
+    sampled: stepper::Saved,
 }
 
 impl Session {
@@ -78,6 +84,14 @@ impl Session {
     /// equilibrium (with released points held), the steady tow, or the lines as defined.
     pub fn with_options(model: Model, options: SessionOptions) -> Result<Self, SimulationError> {
         let system = System::new(&model)?;
+        // A run that cannot end is refused before its statics are solved.
+        let (step, culprit) = planned_step(&system, &model.settings);
+        check_run_length(
+            step,
+            &culprit,
+            model.settings.duration,
+            stepped_nodes(&system),
+        )?;
         let (state, statics) = initial_state(&system, &model, &options.statics)?;
         Self::assemble(model, system, state, statics, &options)
     }
@@ -126,10 +140,22 @@ impl Session {
         let mut coupling = coupling::Coupling::of(&model);
         // Sized now: saving the start of an interval allocates nothing.
         stepper.save(&mut coupling.start);
+        let mut sampled = stepper::Saved::default();
+        stepper.save(&mut sampled);
         let interval = stepper.sample_interval();
         let duration = model.settings.duration;
+        let (_, culprit) = stepper.stable_step();
+        let long = check_run_length(
+            stepper.step_size(),
+            culprit,
+            duration,
+            stepped_nodes(&system),
+        )?;
+        let mut warnings = statics.as_ref().map_or(Vec::new(), |s| s.warnings.clone());
+        warnings.extend(long);
         let outputs = (duration / interval - 1e-9).ceil().max(0.0);
         Ok(Self {
+            warnings,
             end_time: outputs * interval,
             model,
             system,
@@ -141,6 +167,7 @@ impl Session {
             samples: 0,
             last_sample: 0.0,
             coupling,
+            sampled,
         })
     }
 
@@ -157,6 +184,12 @@ impl Session {
     /// The initial static solution, when the run started from one.
     pub fn initial_statics(&self) -> Option<&StaticSolution> {
         self.statics.as_ref()
+    }
+
+    /// What the engineer must know about this run: the warnings of its initial statics
+    /// ([`StaticSolution::warnings`]) and of its length ([`Warning::LongRun`]).
+    pub fn warnings(&self) -> &[Warning] {
+        &self.warnings
     }
 
     /// The input's fixed step, when it was above the stability limit and replaced by the
@@ -309,11 +342,13 @@ impl Session {
             observers,
             samples,
             last_sample,
+            sampled,
             ..
         } = self;
         let mut notify = |s: &Stepper| {
             *samples += 1;
             *last_sample = s.time();
+            s.save(sampled);
             let view = view_of(system, s, channels, *samples - 1);
             for o in observers.iter_mut().flatten() {
                 o.sample(&view)
@@ -340,6 +375,10 @@ impl Session {
         if error.is_none() {
             self.advance_to(self.stepper.time())?;
         }
+        // A diverged run reports the state of its last sample, which passed the checks.
+        if matches!(error, Some(SimulationError::Diverged { .. })) && self.samples > 0 {
+            self.stepper.restore(&self.sampled);
+        }
         // A state that cannot be evaluated (a singular mass matrix) reports the workspace of
         // its last evaluation.
         let _ = self.stepper.evaluate(&self.system);
@@ -347,6 +386,7 @@ impl Session {
             last_sample: self.last_sample,
             error: error.map(|e| e.to_string()),
             interrupted: matches!(error, Some(SimulationError::Interrupted { .. })),
+            warnings: self.warnings.clone(),
         };
         let mut observers = std::mem::take(&mut self.observers);
         let view = self.current_view();

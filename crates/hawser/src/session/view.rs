@@ -207,4 +207,6 @@ pub struct RunEnd {
     pub error: Option<String>,
     /// Whether it stopped because it was interrupted (SIGINT, SIGTERM, KeyboardInterrupt).
     pub interrupted: bool,
+    /// The run's warnings ([`crate::Session::warnings`]).
+    pub warnings: Vec<crate::warning::Warning>,
 }

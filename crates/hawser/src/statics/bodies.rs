@@ -12,7 +12,7 @@
 //! Start the bodies where their lines are taut: where a line is slack the residual has no
 //! slope along it and Newton cannot move the body (reported as not converged, with a hint).
 
-use super::newton::{StaticOptions, StaticSolution, evaluate, solve};
+use super::newton::{StaticOptions, StaticSolution, evaluate, solve_unchecked};
 use crate::error::StaticsError;
 use crate::math::{Quat, Real, Vec3};
 use crate::model::{PointKind, RigidKinematics};
@@ -20,20 +20,22 @@ use crate::system::System;
 use nalgebra::{DMatrix, DVector};
 
 /// Net static load [force; moment about the origin] on each free body with the lines solved
-/// for the bodies held at `poses`, and the twin's solution.
+/// for the bodies held at `poses`, the twin and its solution, and the sum of the magnitudes of
+/// the loads on the bodies [N] (their own load and each line's end force).
 fn residual(
     system: &System,
     poses: &[RigidKinematics],
     warm: Option<&[Real]>,
     options: &StaticOptions,
-) -> Result<(DVector<Real>, System, StaticSolution), StaticsError> {
+) -> Result<(DVector<Real>, System, StaticSolution, Real), StaticsError> {
     let twin = system.statics_twin_at(poses);
     // Warm start from a nearby twin state (same layout: the bodies are not in it); from the
     // catenary seed when that fails or there is none.
-    let sol = match warm.map(|y| solve(&twin, Some(y), options)) {
+    let sol = match warm.map(|y| solve_unchecked(&twin, Some(y), options)) {
         Some(Ok(s)) => s,
-        _ => solve(&twin, None, options)?,
+        _ => solve_unchecked(&twin, None, options)?,
     };
+    let mut loads = 0.0;
     let mut ws = twin.workspace();
     evaluate(&twin, &sol.state, &mut ws);
     let mut r = DVector::zeros(6 * system.free_bodies.len());
@@ -45,10 +47,12 @@ fn residual(
         };
         let own = system.bodies[b].body.loads(&k, &system.environment, 0.0);
         let (mut force, mut moment) = (own.force, own.moment);
+        loads += own.force.norm();
         for (li, l) in twin.lines.iter().enumerate() {
             for (end_b, p) in [(false, l.end_a), (true, l.end_b)] {
                 if matches!(twin.points[p].kind, PointKind::Body { body, .. } if body == b) {
                     let fl = twin.end_force(&ws, li, end_b);
+                    loads += fl.norm();
                     force += fl;
                     moment += (ws.points[p].position - k.position).cross(&fl);
                 }
@@ -59,7 +63,7 @@ fn residual(
             r[6 * f + 3 + i] = moment[i];
         }
     }
-    Ok((r, twin, sol))
+    Ok((r, twin, sol, loads))
 }
 
 /// Poses moved by `delta` (per free body: translation [m], rotation vector [rad]).
@@ -110,6 +114,7 @@ pub fn solve_with_bodies(
             let warm = twin_state(system, &twin, &y);
             let mut sol = newton_on_poses(system, poses, Some(warm), options)?;
             sol.method = "pseudo-dynamic relaxation, then newton on the bodies' poses";
+            sol.fallback = Some(format!("newton on the bodies' poses failed: {first}"));
             Ok(sol)
         }
     }
@@ -371,18 +376,26 @@ fn newton_on_poses(
     options: &StaticOptions,
 ) -> Result<StaticSolution, StaticsError> {
     let n = 6 * system.free_bodies.len();
-    // Scales: the bodies' weights [N] and sizes [m] (for moments).
-    let g = system.environment.gravity.max(1e-3);
+    let (group, rank, colours) = body_groups(system);
+    let nb = system.free_bodies.len();
+    let (mut r, mut twin, mut sol, loads) = residual(system, &poses, warm.as_deref(), options)?;
+    // The force scale [N]: the bodies' weights, or the loads on them at the start when those
+    // are larger (in zero gravity the weights vanish; thrust and line tensions do not).
+    let g = system.environment.gravity;
     let weight: Real = system
         .free_bodies
         .iter()
         .map(|&b| system.bodies[b].body.mass * g)
-        .sum::<Real>()
-        .max(1.0);
-    let tolerance = 1e-6 * weight;
-    let (group, rank, colours) = body_groups(system);
-    let nb = system.free_bodies.len();
-    let (mut r, mut twin, mut sol) = residual(system, &poses, warm.as_deref(), options)?;
+        .sum::<Real>();
+    let scale = if weight >= 1.0 {
+        weight
+    } else {
+        loads.max(weight).max(1e-9)
+    };
+    // Newton aims at 1e-6 of the scale and accepts 1e-3 of it (the lines' statics inside each
+    // residual converge to 1e-9 and the finite-difference Jacobian limits the bodies' own).
+    let tolerance = 1e-6 * scale;
+    let accepted = 1e3 * tolerance;
     let mut iterations = sol.iterations;
     for _ in 0..30 {
         if r.amax() <= tolerance {
@@ -400,7 +413,7 @@ fn newton_on_poses(
                         delta[6 * f + dof] = step;
                     }
                 }
-                let (rc, _, s) = residual(
+                let (rc, _, s, _) = residual(
                     system,
                     &moved(system, &poses, &delta),
                     Some(&sol.state),
@@ -438,7 +451,7 @@ fn newton_on_poses(
         let mut lambda = 1.0;
         loop {
             let trial = moved(system, &poses, &(&step * lambda));
-            let (rt, tt, st) = residual(system, &trial, Some(&sol.state), options)?;
+            let (rt, tt, st, _) = residual(system, &trial, Some(&sol.state), options)?;
             iterations += st.iterations;
             if rt.norm() < r.norm() || lambda < 1e-3 {
                 poses = trial;
@@ -448,26 +461,34 @@ fn newton_on_poses(
             lambda *= 0.5;
         }
     }
-    if r.amax() > tolerance * 1e3 {
-        let worst = r.iamax();
+    let worst = r
+        .iter()
+        .position(|x| !x.is_finite())
+        .unwrap_or_else(|| r.iamax());
+    let largest = r[worst].abs();
+    if !(largest <= accepted) {
         let body = &system.bodies[system.free_bodies[worst / 6]].body.name;
         return Err(StaticsError::NotConverged {
             iterations,
-            residual: r.amax(),
-            tolerance,
+            residual: largest,
+            tolerance: accepted,
             location: format!("body {body}"),
-            relaxation_residual: r.amax(),
+            relaxation_residual: largest,
             hint: "the body may have no static equilibrium (it floats away or sinks without a \
                    line to hold it): check its buoyancy and attachments, or start the run from \
                    the positions as given (initial_condition = \"as-defined\")"
                 .into(),
         });
     }
+    let state = system.state_from_twin_at(&twin, &sol.state, true, &poses);
     Ok(StaticSolution {
-        state: system.state_from_twin_at(&twin, &sol.state, true, &poses),
+        warnings: super::checks::twin_warnings(system, &state, &twin, &sol.state),
+        state,
         iterations,
-        residual: sol.residual.max(r.amax()),
+        residual: sol.residual.max(largest),
+        tolerance: sol.tolerance.max(accepted),
         method: "newton on the bodies' poses around the lines' statics",
         log: sol.log,
+        fallback: sol.fallback,
     })
 }

@@ -4,12 +4,18 @@
 //! its stiffness, m_i = 2 Σ k (Gershgorin bound for a unit step), so all nodes converge at
 //! similar rates; the velocities are reset whenever the kinetic energy peaks.
 
-use super::newton::{effective_tolerance, residual};
+use super::newton::{Tolerance, residual};
 use crate::math::{Real, get3, set3};
 use crate::system::{System, Workspace};
 
-/// Relaxes the positions in `y` toward equilibrium; returns the final largest imbalance [N].
-pub fn relax(system: &System, y: &mut [Real], tol: Real, ws: &mut Workspace) -> Real {
+/// Relaxes the positions in `y` toward equilibrium until the residual meets `tolerance`;
+/// returns the final largest imbalance [N] (infinite when the state stopped being finite).
+pub(super) fn relax(
+    system: &System,
+    y: &mut [Real],
+    tolerance: &Tolerance,
+    ws: &mut Workspace,
+) -> Real {
     let len = y.len();
     let mut r = vec![0.0; len];
     let mut vel = vec![0.0; len];
@@ -58,7 +64,7 @@ pub fn relax(system: &System, y: &mut [Real], tol: Real, ws: &mut Workspace) -> 
     for _ in 0..200_000 {
         let (n, _) = residual(system, y, 1.0, ws, &mut r);
         norm = n;
-        if !(norm > effective_tolerance(tol, ws)) {
+        if !norm.is_finite() || tolerance.met(norm, ws) {
             break;
         }
         let mut ke = 0.0;

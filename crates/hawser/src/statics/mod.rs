@@ -4,12 +4,15 @@
 
 mod bodies;
 pub mod catenary;
+mod checks;
 mod dynamic_relaxation;
 mod newton;
 mod release;
 
 pub use bodies::solve_with_bodies;
+pub use checks::state_warnings;
 pub use newton::{
-    StaticOptions, StaticSolution, catenary_seed, evaluate, residual, set_tow_velocities, solve,
+    StaticOptions, StaticSolution, as_defined_shape, catenary_seed, evaluate, residual,
+    set_tow_velocities, solve,
 };
 pub use release::solve_with_release;

@@ -123,6 +123,14 @@ pub struct Location {
     pub node: usize,
 }
 
+impl SystemPoint {
+    /// Whether the seabed holds this point: a free point with a volume, in water with a
+    /// seabed ([`crate::bodies`] and other points pass through it).
+    pub fn has_seabed_contact(&self) -> bool {
+        self.seabed_contact.is_some()
+    }
+}
+
 impl System {
     /// Assembles a validated model.
     pub fn new(model: &Model) -> Result<Self, ModelError> {

@@ -159,3 +159,24 @@ impl System {
         }
     }
 }
+
+impl Workspace {
+    /// Whether the last evaluation met a state that is not finite: a node, point or body
+    /// position or velocity, or a line force. A mass solve that fails on such a state is a
+    /// blow-up within the step, not a singular mass matrix.
+    pub fn holds_non_finite(&self) -> bool {
+        let finite = |v: &Vec3| v.iter().all(|x| x.is_finite());
+        self.lines.iter().any(|l| {
+            !(l.position.iter().all(finite)
+                && l.velocity.iter().all(finite)
+                && l.force.iter().all(finite))
+        }) || self
+            .points
+            .iter()
+            .any(|p| !(finite(&p.position) && finite(&p.velocity)))
+            || self
+                .bodies
+                .iter()
+                .any(|b| !(finite(&b.position) && finite(&b.velocity)))
+    }
+}

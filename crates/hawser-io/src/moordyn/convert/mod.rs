@@ -328,7 +328,14 @@ pub fn convert(
         Some(s) => convert_line_types(&mut c, s, dir),
         None => Vec::new(),
     };
-    let vessel = options.vessel_motion.as_deref().map(VesselFile::read);
+    let vessel = match options.vessel_motion.as_deref().map(VesselFile::read) {
+        Some(Err(d)) => {
+            c.errors.push(*d);
+            None
+        }
+        Some(Ok(v)) => Some(v),
+        None => None,
+    };
     let option_rows = deck
         .section(SectionKind::Options)
         .map(|s| s.rows.as_slice())
@@ -578,19 +585,36 @@ struct VesselFile {
 }
 
 impl VesselFile {
-    fn read(path: &Path) -> Self {
-        let path = if path.is_absolute() {
-            path.to_path_buf()
+    /// Reads the file given to `--vessel-motion` (a relative path is relative to the working
+    /// directory, as on any command line), or the error naming it, reported once.
+    fn read(given: &Path) -> Result<Self, Box<Diagnostic>> {
+        let cwd = std::env::current_dir().unwrap_or_default();
+        let path = if given.is_absolute() {
+            given.to_path_buf()
         } else {
-            std::env::current_dir().unwrap_or_default().join(path)
+            cwd.join(given)
         };
-        let rows = crate::scenario::tables::read_table::<7>(&path, "").unwrap_or_default();
+        let columns = "t, x, y, z, roll, pitch, yaw";
+        let rows = crate::scenario::tables::read_table::<7>(&path, columns).map_err(|e| {
+            let d = Diagnostic::new(&path, "", None, "--vessel-motion", e)
+                .expected("columns t [s], x, y, z [m], roll, pitch, yaw [deg]")
+                .hint(if given.is_absolute() {
+                    "check the path given to --vessel-motion".to_string()
+                } else {
+                    format!(
+                        "the path given to --vessel-motion is relative to the working \
+                         directory, {}",
+                        cwd.display()
+                    )
+                });
+            Box::new(d)
+        })?;
         let (first, last) = (rows.first().map(|r| r[0]), rows.last().map(|r| r[0]));
-        Self {
+        Ok(Self {
             time_offset: first.map(|t| -t).unwrap_or(0.0),
             duration: first.zip(last).map(|(a, b)| b - a),
             path,
-        }
+        })
     }
 }
 

@@ -244,7 +244,22 @@ fn span_of<T>(v: &Option<Spanned<T>>) -> Option<Range<usize>> {
 
 /// Reads and validates scenario `source` (the text of `file`).
 pub fn build(file: &Path, source: &str) -> Result<LoadedScenario, ScenarioError> {
-    let scenario: Scenario = toml::from_str(source).map_err(|e| schema_errors(file, source, &e))?;
+    build_with_duration(file, source, None)
+}
+
+/// [`build`] with `simulation.duration` replaced by `duration` [s] when given (the command
+/// line's `--duration`), validated as the key itself; the value is placed at the start of the
+/// file, where an error about it then points.
+pub fn build_with_duration(
+    file: &Path,
+    source: &str,
+    duration: Option<f64>,
+) -> Result<LoadedScenario, ScenarioError> {
+    let mut scenario: Scenario =
+        toml::from_str(source).map_err(|e| schema_errors(file, source, &e))?;
+    if let (Some(d), Some(sim)) = (duration, scenario.simulation.as_mut()) {
+        sim.duration = toml::Spanned::new(0..0, d);
+    }
     build_scenario(file, source, &scenario)
 }
 

@@ -193,7 +193,7 @@ pub(super) fn build_motion(
                             let d = b
                                 .diag(Some(f.span()), &k("file"), msg)
                                 .expected("a CSV file with columns t [s], x, y, z [m]")
-                                .hint("the path is relative to the scenario file");
+                                .hint(path_hint(f.get_ref()));
                             b.push(d);
                             None
                         }
@@ -503,7 +503,7 @@ pub(super) fn build_rigid_motion(
                     let d = b
                         .diag(Some(f.span()), &k("file"), msg)
                         .expected("columns t [s], x, y, z [m], roll, pitch, yaw [deg]")
-                        .hint("the path is relative to the scenario file");
+                        .hint(path_hint(f.get_ref()));
                     b.push(d);
                     return placeholder;
                 }
@@ -590,7 +590,10 @@ pub(super) fn build_rigid_motion(
                              `heading_deg`, then amplitude and phase of surge, sway, heave \
                              [m/m, deg], roll, pitch, yaw [deg/m, deg]: 14 columns",
                         )
-                        .hint("docs/motions.md describes the RAO file; the path is relative to the scenario file");
+                        .hint(format!(
+                            "docs/motions.md describes the RAO file; {}",
+                            path_hint(f.get_ref())
+                        ));
                     b.push(d);
                     return placeholder;
                 }
@@ -908,5 +911,14 @@ fn frequency_of(b: &mut Builder, m: &MotionSpec, key: &str) -> [f64; 3] {
             b.push(d);
             [0.0; 3]
         }
+    }
+}
+
+/// The hint of a motion file that cannot be read: where a relative path starts from.
+fn path_hint(file: &str) -> &'static str {
+    if Path::new(file).is_absolute() {
+        "check the path"
+    } else {
+        "the path is relative to the scenario file"
     }
 }
