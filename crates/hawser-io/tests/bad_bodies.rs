@@ -80,7 +80,7 @@ fn missing_mass() {
     let msg = error(&text);
     assert_located(
         &msg,
-        line_of(&text, "[[bodies]]"),
+        line_of(&text, "type = \"free\""),
         "bodies[0].mass",
         true,
         true,

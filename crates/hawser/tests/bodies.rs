@@ -796,3 +796,61 @@ fn validate_checks_the_physical_ranges_of_bodies() {
             .contains("another body")
     );
 }
+
+/// MoorDyn's body in hawser's terms (docs/moordyn.md): drag on the speed |u| of the relative
+/// velocity (`DragSpeed::Magnitude`) instead of each axis's |u_i|, and added mass and drag at a
+/// `hydrodynamic_centre` away from the centre of buoyancy, where the buoyancy still acts.
+/// Closed forms for a body moving obliquely; rounding only.
+#[test]
+fn drag_on_the_speed_and_a_separate_hydrodynamic_centre() {
+    let env = vacuum();
+    let mut b = neutral_submerged(&env);
+    b.quadratic_drag = Vec6::new(2.0, 3.0, 4.0, 0.0, 0.0, 0.0);
+    let v = Vec3::new(1.0, -2.0, 0.5);
+    let k = RigidKinematics {
+        velocity: v,
+        ..RigidKinematics::at_rest(Vec3::new(0.0, 0.0, -10.0), Quat::identity())
+    };
+    let rho = env.water_density;
+    let weight_and_buoyancy = b.loads(
+        &RigidKinematics::at_rest(k.position, k.orientation),
+        &env,
+        0.0,
+    );
+    let drag = |b: &Body| b.loads(&k, &env, 0.0).force - weight_and_buoyancy.force;
+    let per_axis = Vec3::new(
+        2.0 * v.x.abs() * v.x,
+        3.0 * v.y.abs() * v.y,
+        4.0 * v.z.abs() * v.z,
+    );
+    assert!((drag(&b) + 0.5 * rho * per_axis).norm() < 1e-12 * per_axis.norm() * rho);
+    b.drag_speed = hawser::model::DragSpeed::Magnitude;
+    let on_speed = Vec3::new(2.0 * v.x, 3.0 * v.y, 4.0 * v.z) * v.norm();
+    assert!((drag(&b) + 0.5 * rho * on_speed).norm() < 1e-12 * on_speed.norm() * rho);
+
+    // Buoyancy at the centre of buoyancy c_b, added mass at the hydrodynamic centre (the
+    // origin): the mass matrix is the rigid body's plus diag(A) unshifted, and the moment of
+    // the buoyancy is c_b × ρ g V.
+    let env = Environment::default();
+    let mut b = neutral_submerged(&env);
+    b.centre_of_buoyancy = Vec3::new(0.3, 0.0, -1.0);
+    b.added_mass = Vec6::new(100.0, 200.0, 300.0, 0.0, 0.0, 0.0);
+    b.hydrodynamic_centre = Some(Vec3::zeros());
+    let at_rest = RigidKinematics::at_rest(Vec3::new(0.0, 0.0, -10.0), Quat::identity());
+    let l = b.loads(&at_rest, &env, 0.0);
+    let mut rigid = b.clone();
+    rigid.added_mass = Vec6::zeros();
+    let m0 = rigid.loads(&at_rest, &env, 0.0).mass;
+    let added = l.mass - m0;
+    let expected =
+        hawser::math::Mat6::from_diagonal(&Vec6::new(100.0, 200.0, 300.0, 0.0, 0.0, 0.0));
+    assert!((added - expected).abs().max() < 1e-12 * 300.0);
+    let Displacement::Submerged { volume } = b.displacement else {
+        panic!("submerged")
+    };
+    let buoyancy = Vec3::new(0.0, 0.0, rho * env.gravity * volume);
+    let c = b.centre_of_gravity;
+    let gravity = Vec3::new(0.0, 0.0, -b.mass * env.gravity);
+    let moment = b.centre_of_buoyancy.cross(&buoyancy) + c.cross(&gravity);
+    assert!((l.moment - moment).norm() < 1e-9 * buoyancy.norm());
+}

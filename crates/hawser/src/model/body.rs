@@ -73,6 +73,19 @@ impl Displacement {
     }
 }
 
+/// Which speed scales a body's quadratic drag along each axis.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum DragSpeed {
+    /// Each axis by its own component: F_i = −½ ρ Q_i |u_i| u_i (OrcaFlex's 6D buoys, and
+    /// hawser's default).
+    #[default]
+    Component,
+    /// Each axis by the magnitude of the relative velocity: F_i = −½ ρ Q_i |u| u_i, and
+    /// M_i = −½ ρ Q_{3+i} |Ω| Ω_i for the rotations: MoorDyn's bodies (`Body::doRHS`, drag
+    /// R diag(CdA) Rᵀ v |v|). For equal coefficients this is drag along the relative velocity.
+    Magnitude,
+}
+
 /// A body's thrust or control force, in body axes.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Thrust {
@@ -180,6 +193,14 @@ pub struct Body {
     /// C_i·A_i [m²] for the translations and C_i·A_i·L_i³ [m⁵] for the rotations (moment
     /// −½ ρ C A L³ |Ω_i| Ω_i); scaled by the submerged fraction like `added_mass`.
     pub quadratic_drag: Vec6,
+    /// Which speed multiplies the quadratic drag: each axis's own (default) or the magnitude
+    /// of the relative velocity (MoorDyn's bodies).
+    pub drag_speed: DragSpeed,
+    /// Where added mass, fluid inertia and drag act, in body axes from the origin [m], when
+    /// it is not the centre of buoyancy: only for a `Submerged` displacement or none (a
+    /// `Cylinder` or `Box` takes the centroid of its wet volume). MoorDyn's bodies put their
+    /// added mass and drag at the body origin and their buoyancy at the centre of gravity.
+    pub hydrodynamic_centre: Option<Vec3>,
     /// Thrust or control force.
     pub thrust: Thrust,
     /// Wind force, for vessels.
@@ -205,6 +226,8 @@ impl Body {
             added_mass: Vec6::zeros(),
             linear_drag: Vec6::zeros(),
             quadratic_drag: Vec6::zeros(),
+            drag_speed: DragSpeed::Component,
+            hydrodynamic_centre: None,
             thrust: Thrust::None,
             wind: None,
         }
@@ -220,10 +243,17 @@ impl Body {
     /// why. [`super::Model::validate`] calls it.
     pub fn check(&self) -> Result<(), (&'static str, String)> {
         let finite3 = |v: &Vec3| v.iter().all(|x| x.is_finite());
-        if !(self.mass > 0.0) || !self.mass.is_finite() {
+        // Only a free body's mass and inertia enter its motion; a fixed, prescribed or
+        // coupled one may leave them zero (MoorDyn's coupled bodies do).
+        let free = self.kind == BodyKind::Free;
+        if !self.mass.is_finite() || !(self.mass > 0.0 || (!free && self.mass == 0.0)) {
             return Err((
                 "mass",
-                format!("must be > 0 kg and finite, not {}", self.mass),
+                format!(
+                    "must be {} kg and finite, not {}",
+                    if free { "> 0" } else { "≥ 0" },
+                    self.mass
+                ),
             ));
         }
         let i = &self.inertia;
@@ -234,11 +264,27 @@ impl Body {
         if (i - i.transpose()).abs().max() > 1e-9 * scale {
             return Err(("inertia", "must be symmetric (I_xy = I_yx, ...)".into()));
         }
-        if i.cholesky().is_none() || !(scale > 0.0) {
+        if free && (i.cholesky().is_none() || !(scale > 0.0)) {
             return Err((
                 "inertia",
                 "must be positive definite (every principal moment > 0 kg·m²)".into(),
             ));
+        }
+        if let Some(p) = &self.hydrodynamic_centre {
+            if !finite3(p) {
+                return Err(("hydrodynamic_centre", "must be finite".into()));
+            }
+            if matches!(
+                self.displacement,
+                Displacement::Cylinder { .. } | Displacement::Box { .. }
+            ) {
+                return Err((
+                    "hydrodynamic_centre",
+                    "is the centroid of the wet volume for a cylinder or box displacement; \
+                     give it only with a submerged displacement or none"
+                        .into(),
+                ));
+            }
         }
         let q = &self.orientation;
         if !(finite3(&self.position) && q.w.is_finite() && finite3(&q.imag())) {

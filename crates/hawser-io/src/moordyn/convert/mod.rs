@@ -26,10 +26,12 @@ use std::ops::Range;
 use std::path::{Path, PathBuf};
 use toml::Spanned;
 
+mod bodies;
 mod line_types;
 mod options;
 mod outputs;
 mod water;
+use bodies::{DeckBody, DeckBodyKind, body_name, convert_bodies, finish_bodies};
 use line_types::convert_line_types;
 use options::{environment_of, read_options, simulation_of};
 use outputs::convert_outputs;
@@ -319,7 +321,6 @@ pub fn convert(
         match s.kind {
             SectionKind::RodTypes => c.refuse_section(s, "rods need rigid-body support (planned)"),
             SectionKind::Rods => c.refuse_section(s, "rods need rigid-body support (planned)"),
-            SectionKind::Bodies => c.refuse_section(s, "rigid bodies are not available yet"),
             SectionKind::Unsupported => c.refuse_section(s, "hawser does not read this section"),
             _ => {}
         }
@@ -334,10 +335,28 @@ pub fn convert(
         .map(|s| s.rows.as_slice())
         .unwrap_or(&[]);
     let opts = read_options(&mut c, option_rows);
+    let rho = opts
+        .get(&["rho", "wtrdnsty"])
+        .and_then(|(t, _)| parse_number(&t.text))
+        .unwrap_or(1025.0);
+    let mut deck_bodies = match deck.section(SectionKind::Bodies) {
+        Some(s) if s.rows.is_empty() => {
+            let line = c.line_of(&s.title.span);
+            c.note(line, format!("section `{}` is empty", s.title.text));
+            Vec::new()
+        }
+        Some(s) => convert_bodies(&mut c, s, rho, vessel.as_ref()),
+        None => Vec::new(),
+    };
     let (points, coupled) = match deck.section(SectionKind::Points) {
-        Some(s) => convert_points(&mut c, s, vessel.as_ref()),
+        Some(s) => convert_points(&mut c, s, vessel.as_ref(), &mut deck_bodies),
         None => (Vec::new(), 0),
     };
+    let body_kinds: Vec<(String, bool)> = deck_bodies
+        .iter()
+        .map(|b| (body_name(&b.id), b.kind == DeckBodyKind::Free))
+        .collect();
+    let bodies = finish_bodies(&mut c, deck_bodies);
     let (lines, line_outputs) = match deck.section(SectionKind::Lines) {
         Some(s) => convert_lines(&mut c, s, &points),
         None => (Vec::new(), false),
@@ -350,7 +369,7 @@ pub fn convert(
         c.errors.push(d);
     }
     let channels = match deck.section(SectionKind::Outputs) {
-        Some(s) if !lines.is_empty() => convert_outputs(&mut c, s, &lines),
+        Some(s) if !lines.is_empty() => convert_outputs(&mut c, s, &lines, &body_kinds),
         _ => Vec::new(),
     };
     let environment = environment_of(&mut c, &opts, dir, &points);
@@ -376,7 +395,7 @@ pub fn convert(
             line_types,
             points,
             lines,
-            bodies: Vec::new(),
+            bodies,
             obstacles: Vec::new(),
         },
         notes: c.notes,
@@ -394,10 +413,48 @@ pub(super) fn line_name(id: &str) -> String {
     format!("L{id}")
 }
 
+/// The motion of a deck's coupled object run alone: held (`fixed`), or riding on the vessel
+/// of `--vessel-motion`; `word` is the deck word (type column) it comes from.
+fn rigid_motion_spec(word: &Token, vessel: Option<&VesselFile>) -> MotionSpec {
+    MotionSpec {
+        kind: spanned(
+            word,
+            if vessel.is_some() {
+                MotionKind::VesselMotion
+            } else {
+                MotionKind::Fixed
+            },
+        ),
+        velocity: None,
+        amplitude: None,
+        period: None,
+        frequency: None,
+        phase: None,
+        ramp_time: None,
+        radius: None,
+        plane: None,
+        table: None,
+        file: vessel.map(|v| spanned(word, v.path.display().to_string())),
+        time_offset: vessel.map(|v| spanned(word, v.time_offset)),
+        start: None,
+        heading: None,
+        speed: None,
+        speed_knots: None,
+        straight_before: None,
+        turn_radius: None,
+        turn_angle: None,
+        straight_after: None,
+        build_up_time: None,
+        transition_length: None,
+        mean: None,
+    }
+}
+
 fn convert_points(
     c: &mut Converter,
     s: &Section,
     vessel: Option<&VesselFile>,
+    bodies: &mut [DeckBody],
 ) -> (Vec<PointSpec>, usize) {
     const S: &str = "POINTS";
     let mut out = Vec::new();
@@ -452,19 +509,49 @@ fn convert_points(
             c.name_key(key(field), format!("{S} › {} › {col}", t[0].text));
         }
         let kind_word = t[1].text.to_lowercase();
+        let mut on_body: Option<usize> = None;
         let base = kind_word.trim_end_matches(|ch: char| ch.is_ascii_digit());
         let kind = match base {
             "fixed" | "fix" | "anchor" => Some(PointKindSpec::Fixed),
             "free" | "connect" | "con" | "point" => Some(PointKindSpec::Free),
             "coupled" | "vessel" | "ves" | "cpld" | "fairlead" => Some(PointKindSpec::Prescribed),
-            "body" | "turbine" => {
+            "body" => {
+                let number = &kind_word[base.len()..];
+                match bodies.iter().position(|b| b.id == number) {
+                    Some(b) => {
+                        on_body = Some(b);
+                        Some(PointKindSpec::Body)
+                    }
+                    None => {
+                        let ids: Vec<&str> = bodies.iter().map(|b| b.id.as_str()).collect();
+                        let d = c
+                            .diag(
+                                Some(t[1].span.clone()),
+                                &format!("{S} › {} › Type", t[0].text),
+                                format!(
+                                    "point {} is on body `{}`, which is not in the BODIES table",
+                                    t[0].text, t[1].text
+                                ),
+                            )
+                            .expected(if ids.is_empty() {
+                                "a BODIES section with the body".to_string()
+                            } else {
+                                format!("Body1 … with a body ID: {}", ids.join(", "))
+                            })
+                            .hint("points on a body are `Body#`, # the body's ID in BODIES");
+                        c.errors.push(d);
+                        None
+                    }
+                }
+            }
+            "turbine" => {
                 let d = c
                     .diag(
                         Some(t[1].span.clone()),
                         &format!("{S} › {} › Type", t[0].text),
-                        format!("point {} is attached to a body (`{}`)", t[0].text, t[1].text),
+                        format!("point {} is on a FAST.Farm turbine (`{}`)", t[0].text, t[1].text),
                     )
-                    .hint("rigid bodies are not available yet; make the point `Coupled` to drive it with a vessel motion, or `Fixed`");
+                    .hint("turbine points are moved by FAST.Farm; make the point `Coupled` to drive it with a vessel motion, or `Fixed`");
                 c.errors.push(d);
                 None
             }
@@ -496,6 +583,67 @@ fn convert_points(
             [x.unwrap_or(0.0), y.unwrap_or(0.0), z.unwrap_or(0.0)],
         );
         let Some(kind) = kind else { continue };
+        if let Some(b) = on_body {
+            // Its mass and buoyancy are the body's; drag, added mass and a force at a point
+            // have no place in a body's loads.
+            let body = &mut bodies[b];
+            let extra = [(cda, "CdA", &t[7]), (ca, "Ca", &t[8])]
+                .into_iter()
+                .chain(force.as_ref().map(|f| {
+                    let any = f.get_ref().iter().any(|x| *x != 0.0);
+                    (any.then_some(1.0), "FX FY FZ", &t[2])
+                }))
+                .find(|(v, _, _)| v.is_some_and(|x| x != 0.0));
+            if body.kind == DeckBodyKind::Free {
+                if let Some((_, col, tok)) = extra {
+                    let d = c
+                        .diag(
+                            Some(tok.span.clone()),
+                            &format!("{S} › {} › {col}", t[0].text),
+                            format!(
+                                "point {} on free body {} has {col}: a point's own drag, added \
+                                 mass or force on a body is not modelled",
+                                t[0].text, body.id
+                            ),
+                        )
+                        .expected(format!("{col} = 0"))
+                        .hint(
+                            "give the body its drag and added mass in BODIES (CdA, Ca), and set \
+                             the point's to 0",
+                        );
+                    c.errors.push(d);
+                }
+                body.fold_point(
+                    hawser::math::Vec3::new(x.unwrap_or(0.0), y.unwrap_or(0.0), z.unwrap_or(0.0)),
+                    mass.unwrap_or(0.0),
+                    volume.unwrap_or(0.0),
+                );
+            } else if extra.is_some() || [mass, volume].iter().any(|v| v.is_some_and(|x| x != 0.0))
+            {
+                c.note(
+                    row.line,
+                    format!(
+                        "point {}: Mass, Volume, CdA, Ca and force have no effect on a point of \
+                         a `{}` body",
+                        t[0].text,
+                        bodies[b].type_word()
+                    ),
+                );
+            }
+            out.push(PointSpec {
+                name: spanned(&t[0], name),
+                kind: spanned(&t[1], kind),
+                position: Some(position),
+                mass: None,
+                volume: None,
+                drag_area: None,
+                added_mass_coefficient: None,
+                force: None,
+                motion: None,
+                body: Some(spanned(&t[1], body_name(&bodies[b].id))),
+            });
+            continue;
+        }
         let free = kind == PointKindSpec::Free;
         let f = |v: Option<f64>, tok: &Token| v.filter(|_| free).map(|x| spanned(tok, x));
         if !free
@@ -517,38 +665,7 @@ fn convert_points(
                 text: String::new(),
                 span: t[1].span.clone(),
             };
-            MotionSpec {
-                kind: spanned(
-                    &word,
-                    if vessel.is_some() {
-                        MotionKind::VesselMotion
-                    } else {
-                        MotionKind::Fixed
-                    },
-                ),
-                velocity: None,
-                amplitude: None,
-                period: None,
-                frequency: None,
-                phase: None,
-                ramp_time: None,
-                radius: None,
-                plane: None,
-                table: None,
-                file: vessel.map(|v| spanned(&word, v.path.display().to_string())),
-                time_offset: vessel.map(|v| spanned(&word, v.time_offset)),
-                start: None,
-                heading: None,
-                speed: None,
-                speed_knots: None,
-                straight_before: None,
-                turn_radius: None,
-                turn_angle: None,
-                straight_after: None,
-                build_up_time: None,
-                transition_length: None,
-                mean: None,
-            }
+            rigid_motion_spec(&word, vessel)
         });
         out.push(PointSpec {
             name: spanned(&t[0], name),

@@ -194,6 +194,7 @@ pub(super) const RANGES: &[(&str, Range)] = &[
     ("bodies[].orientation", ANGLE),
     ("bodies[].centre_of_gravity", all(-1e4, 1e4, "m")),
     ("bodies[].centre_of_buoyancy", all(-1e4, 1e4, "m")),
+    ("bodies[].hydrodynamic_centre", all(-1e4, 1e4, "m")),
     ("bodies[].inertia", all(-1e16, 1e16, "kg·m²")),
     (
         "bodies[].added_mass",
