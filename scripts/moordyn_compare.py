@@ -50,6 +50,9 @@ What is compared
    moordyn.GetBodyState, FairTen/AnchTen of every line; hawser `statics --json`.  Then the
    vessel point in the OC3 surge (same samples and driving) for 300 s: FairTen of every line
    and the body's x, z, pitch every 0.1 s.
+5. A free rod: rod_hanging.txt (MoorDyn's RodHanging test deck with coupled rope ends and 20
+   segments per rope), the same statics and surge of both coupled points; the rod's end A
+   from moordyn.GetRodNodePos.
 
 Outputs: a markdown summary (stdout), the MoorDyn numbers as JSON
 (tests/data/moordyn_reference.json by default), CSV series and SVG plots in
@@ -450,19 +453,22 @@ def case_surge(moordyn, hawser, decks_dir, tmp, segments, dtm):
 
 
 BODY_DECK = "buoy_oc3"
+ROD_DECK = "rod_hanging"
 
 
-def case_body(moordyn, hawser, decks_dir, tmp):
-    """A free body: buoy_oc3.txt, statics (MoorDyn's legacy dynamic relaxation, as the deck
-    asks) and the vessel point surging 2 m / 10 s for 300 s (the same samples and driving as
-    the OC3 surge).  Body pose from moordyn.GetBodyState (x, y, z and MoorDyn's Euler angles,
-    R = R_x R_y R_z, in rad); FairTen of every line."""
-    deck = os.path.join(decks_dir, BODY_DECK + ".txt")
+def case_body(moordyn, hawser, decks_dir, tmp, deck_name=BODY_DECK, rod=False):
+    """A free body (buoy_oc3.txt: BODIES) or a free rod (rod_hanging.txt: RODS): statics
+    (MoorDyn's legacy dynamic relaxation, as the decks ask) and the coupled points surging
+    2 m / 10 s for 300 s (the same samples and driving as the OC3 surge).  Pose from
+    moordyn.GetBodyState (x, y, z and MoorDyn's Euler angles, R = R_x R_y R_z, in rad) or, for
+    the rod, the positions of its ends A and B (moordyn.GetRodNodePos); FairTen of every
+    line; the object's x, z (and the body's pitch) every 0.1 s."""
+    deck = os.path.join(decks_dir, deck_name + ".txt")
     if not os.path.exists(deck):
         return None
-    d = os.path.join(tmp, "body")
+    d = os.path.join(tmp, deck_name)
     os.makedirs(d, exist_ok=True)
-    copy = os.path.join(d, BODY_DECK + ".txt")
+    copy = os.path.join(d, deck_name + ".txt")
     changes = write_copy(mb.read_deck(deck), copy)
     ts, xs = surge_samples()
     motion = os.path.join(d, "surge_motion.txt")
@@ -472,13 +478,20 @@ def case_body(moordyn, hawser, decks_dir, tmp):
     proc = hawser_run(hawser, copy, os.path.join(d, "hawser"), SURGE_DURATION, motion)
     md = MD(moordyn, copy, os.path.join(d, "console.txt"))
     md.init()
-    body = moordyn.GetBody(md.s, 1)
+    if rod:
+        obj = moordyn.GetRod(md.s, 1)
+        n = moordyn.GetRodN(obj)
 
-    def pose():
-        r, _ = moordyn.GetBodyState(body)
-        return list(r)
+        def pose():
+            return list(moordyn.GetRodNodePos(obj, 0)) + list(moordyn.GetRodNodePos(obj, n))
+    else:
+        obj = moordyn.GetBody(md.s, 1)
 
-    static = {"body_pose": pose(),
+        def pose():
+            r, _ = moordyn.GetBodyState(obj)
+            return list(r)
+
+    static = {("rod_ends" if rod else "body_pose"): pose(),
               "lines": {str(lid): {"fairlead_tension_N": md.fair(j), "anchor_tension_N": md.anch(j)}
                         for j, lid in enumerate(md.ids)}}
     nl = len(md.lines)
@@ -503,7 +516,8 @@ def case_body(moordyn, hawser, decks_dir, tmp):
     hts = read_timeseries(os.path.join(d, "hawser", "timeseries.csv"))
     hmap = {key(t): i for i, t in enumerate(hts["time"])}
     idx = [hmap[key(t)] for t in times]
-    hb = hs["bodies"]["B1"]
+    name = "R1" if rod else "B1"
+    hb = hs["bodies"][name]
     res = {
         "deck": os.path.basename(deck), "deck_sha256": sha256(deck), "deck_copy_changes": changes,
         "moordyn_log": log_lines(os.path.splitext(copy)[0] + ".log"),
@@ -519,16 +533,18 @@ def case_body(moordyn, hawser, decks_dir, tmp):
         "lines": {}, "body": {},
     }
     for j in range(nl):
-        name = "FairTen%d" % md.ids[j]
-        hv = [hts[name][i] for i in idx]
-        res["lines"][name] = {
+        name_ = "FairTen%d" % md.ids[j]
+        hv = [hts[name_][i] for i in idx]
+        res["lines"][name_] = {
             "moordyn": {"all": mmm(window(times, ften[j], 0.0, SURGE_DURATION)),
                         "steady": mmm(window(times, ften[j], *STEADY_WINDOW))},
             "hawser": {"all": mmm(window(times, hv, 0.0, SURGE_DURATION)),
                        "steady": mmm(window(times, hv, *STEADY_WINDOW))},
         }
-    for q, col, k in (("x_m", "Body1PX", 0), ("z_m", "Body1PZ", 2), ("pitch_deg", "Body1RY", 4)):
-        mv = [p[k] * (180.0 / math.pi if k >= 3 else 1.0) for p in poses]
+    quantities = ((("x_m", name + ".x", 0), ("z_m", name + ".z", 2)) if rod else
+                  (("x_m", "Body1PX", 0), ("z_m", "Body1PZ", 2), ("pitch_deg", "Body1RY", 4)))
+    for q, col, k in quantities:
+        mv = [p[k] * (180.0 / math.pi if (k >= 3 and not rod) else 1.0) for p in poses]
         hv = [hts[col][i] for i in idx]
         res["body"][q] = {
             "moordyn": {"all": mmm(window(times, mv, 0.0, SURGE_DURATION)),
@@ -691,7 +707,7 @@ def pct(x):
     return "%+.3f %%" % (100.0 * x)
 
 
-def markdown(st, surge, chain, md_version, body=None):
+def markdown(st, surge, chain, md_version, body=None, rod=None):
     o = []
     o.append("## hawser vs MoorDyn %s\n" % md_version)
     o.append("### Statics (|end-node net force|, MoorDyn FairTen/AnchTen convention)\n")
@@ -722,13 +738,20 @@ def markdown(st, surge, chain, md_version, body=None):
                     cells += ["%.1f / %.1f" % (m[q] / 1e3, h[q] / 1e3), pct(rel(h[q], m[q]))]
                 o.append("| %s | %s | %s | %s | %s |" % (segs, dts, name, w, " | ".join(cells)))
     o.append("")
-    if body:
-        o.append("### A free body: %s, statics and the vessel point in a 2 m / 10 s surge\n" % body["deck"])
-        ms, hs_ = body["static"]["moordyn"], body["static"]["hawser"]
-        mp, hp = ms["body_pose"], hs_["position"] + [math.radians(a) for a in hs_["roll_pitch_yaw_deg"]]
-        o.append("| body pose | MoorDyn | hawser | diff |")
+    for case, title in ((body, "A free body"), (rod, "A free rod")):
+        if not case:
+            continue
+        o.append("### %s: %s, statics and the coupled points in a 2 m / 10 s surge\n" % (title, case["deck"]))
+        ms, hs_ = case["static"]["moordyn"], case["static"]["hawser"]
+        if "body_pose" in ms:
+            mp, hp = ms["body_pose"], hs_["position"] + [math.radians(a) for a in hs_["roll_pitch_yaw_deg"]]
+            names = ("x [m]", "y [m]", "z [m]", "roll [deg]", "pitch [deg]", "yaw [deg]")
+        else:
+            mp, hp = ms["rod_ends"][:3], hs_["position"]
+            names = ("end A x [m]", "end A y [m]", "end A z [m]")
+        o.append("| pose | MoorDyn | hawser | diff |")
         o.append("|---|---:|---:|---:|")
-        for k, q in enumerate(("x [m]", "y [m]", "z [m]", "roll [deg]", "pitch [deg]", "yaw [deg]")):
+        for k, q in enumerate(names):
             f = 180.0 / math.pi if k >= 3 else 1.0
             o.append("| %s | %.5f | %.5f | %+.5f |" % (q, mp[k] * f, hp[k] * f, (hp[k] - mp[k]) * f))
         o.append("")
@@ -744,7 +767,7 @@ def markdown(st, surge, chain, md_version, body=None):
         o.append("")
         o.append("| channel | window | min MD / hawser | diff | max MD / hawser | diff | mean MD / hawser | diff |")
         o.append("|---|---|---:|---:|---:|---:|---:|---:|")
-        for name, L in list(body["lines"].items()) + list(body["body"].items()):
+        for name, L in list(case["lines"].items()) + list(case["body"].items()):
             scale = 1e3 if name.startswith("FairTen") else 1.0
             for w in ("all", "steady"):
                 m, h = L["moordyn"][w], L["hawser"][w]
@@ -790,7 +813,7 @@ def markdown(st, surge, chain, md_version, body=None):
     return "\n".join(o)
 
 
-def write_outputs(a, st, surge, series20, chain, md_version, body=None):
+def write_outputs(a, st, surge, series20, chain, md_version, body=None, rod=None):
     os.makedirs(os.path.dirname(a.json), exist_ok=True)
     ref = {
         "generator": "scripts/moordyn_compare.py",
@@ -862,6 +885,21 @@ def write_outputs(a, st, surge, series20, chain, md_version, body=None):
             "static": body["static"]["moordyn"],
             "surge": {"fairleads": {n: L["moordyn"] for n, L in body["lines"].items()},
                       "body": {n: L["moordyn"] for n, L in body["body"].items()}},
+        },
+        "free_rod": None if not rod else {
+            "deck": rod["deck"], "deck_sha256": rod["deck_sha256"],
+            "what": "rod_hanging.txt: statics after moordyn.Init (MoorDyn's legacy dynamic "
+                    "relaxation, as the deck's options ask); rod_ends = moordyn.GetRodNodePos of "
+                    "end A then end B [m]. Surge: both coupled points at x = x0 + A sin(2 pi t / "
+                    "T), driven as oc3_surge; FairTen of every line and end A's x, z [m] every "
+                    "0.1 s",
+            "settings": {"amplitude_m": SURGE_AMPLITUDE, "period_s": SURGE_PERIOD,
+                         "duration_s": SURGE_DURATION, "coupling_step_s": SURGE_COUPLING,
+                         "sampled_every_s": SAMPLE, "dtM_s": rod["moordyn_dtM_s"],
+                         "windows": {"all": [0.0, SURGE_DURATION], "steady": list(STEADY_WINDOW)}},
+            "static": rod["static"]["moordyn"],
+            "surge": {"fairleads": {n: L["moordyn"] for n, L in rod["lines"].items()},
+                      "rod_end_a": {n: L["moordyn"] for n, L in rod["body"].items()}},
         },
         "chain_wd0200_zzp1_a1": {
             "files": chain["files"],
@@ -948,11 +986,13 @@ def main(argv=None):
         chain = case_chain(moordyn, a.hawser, a.decks, tmp)
         print("free body (%s) ..." % BODY_DECK, file=sys.stderr)
         body = case_body(moordyn, a.hawser, a.decks, tmp)
-        files = write_outputs(a, st, surge, series20, chain, md_version, body)
-        print(markdown(st, surge, chain, md_version, body))
+        print("free rod (%s) ..." % ROD_DECK, file=sys.stderr)
+        rod = case_body(moordyn, a.hawser, a.decks, tmp, ROD_DECK, rod=True)
+        files = write_outputs(a, st, surge, series20, chain, md_version, body, rod)
+        print(markdown(st, surge, chain, md_version, body, rod))
         full = os.path.join(tmp, "comparison_full.json")
         with open(full, "w") as fh:
-            json.dump({"statics": st, "surge": surge, "body": body,
+            json.dump({"statics": st, "surge": surge, "body": body, "rod": rod,
                        "chain": {k: v for k, v in chain.items() if k not in ("rows",)}}, fh, indent=1)
         print("\nwrote: %s" % ", ".join(os.path.relpath(f, ROOT) for f in files), file=sys.stderr)
         if a.keep_tmp:

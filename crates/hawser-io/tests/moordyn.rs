@@ -16,12 +16,13 @@ fn deck_text(name: &str) -> String {
     std::fs::read_to_string(deck_dir().join(name)).expect("deck present")
 }
 
-const DECKS: [&str; 5] = [
+const DECKS: [&str; 6] = [
     "oc3_lines.txt",
     "WD0050_Chain.txt",
     "WD0200_Chain.txt",
     "WD0600_Chain.txt",
     "buoy_oc3.txt",
+    "rod_hanging.txt",
 ];
 
 /// Parses deck text as if it were `deck.txt` beside the shared decks.
@@ -469,6 +470,63 @@ fn coupled_body_follows_a_vessel_motion() {
     assert!(e.to_string().contains("not at the vessel origin"), "{e}");
 }
 
+/// A free rod is a free body `R1` at end A with one member; its mass w·L sits at mid-length
+/// with a solid cylinder's inertia (MoorDyn's lumped nodes with its inertia correction); the
+/// lines attach to the points `R1A` and `R1B` at its ends. On a body (`Body1`) the same rod is
+/// a member of that body, its mass and inertia folded in.
+#[test]
+fn rods_are_members_of_bodies() {
+    let d = parse(&deck_text("rod_hanging.txt")).unwrap();
+    let m = &d.loaded.model;
+    let b = &m.bodies[0];
+    assert_eq!(b.name, "R1");
+    assert_eq!(b.kind, hawser::model::BodyKind::Free);
+    use hawser::math::{Mat3, Vec3};
+    assert_eq!(b.position, Vec3::new(-10.0, 0.0, -75.0));
+    let (mass, r, l) = (77.7066 * 20.0, 0.125, 20.0);
+    assert!((b.mass - mass).abs() < 1e-9);
+    assert_eq!(b.centre_of_gravity, Vec3::new(10.0, 0.0, 0.0));
+    let across = mass * (l * l / 12.0 + r * r / 4.0);
+    let expected = Mat3::from_diagonal(&Vec3::new(0.5 * mass * r * r, across, across));
+    assert!((b.inertia - expected).abs().max() < 1e-9 * across);
+    let member = &b.members[0];
+    assert_eq!(
+        (member.end_a, member.end_b),
+        (Vec3::zeros(), Vec3::new(20.0, 0.0, 0.0))
+    );
+    assert_eq!((member.diameter, member.segments), (0.25, 4));
+    assert_eq!(
+        [
+            member.normal_drag,
+            member.normal_added_mass,
+            member.end_drag,
+            member.end_added_mass
+        ],
+        [1.6, 1.0, 1.6, 1.0]
+    );
+    let names: Vec<&str> = m.points.iter().map(|p| p.name.as_str()).collect();
+    assert!(names.contains(&"R1A") && names.contains(&"R1B"));
+    let hawser::model::LineEnd::Point(end_b) = m.lines[1].end_b;
+    assert_eq!(m.points[end_b].name, "R1B");
+
+    // The same rod on a free body at (−10, 0, −75): a member from (0, 0, 0) to (20, 0, 0).
+    let text = mutate(
+        "rod_hanging.txt",
+        "---------------------- RODS",
+        "---------------------- BODIES ----\nID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG I Volume CdA Ca\n\
+         1 Free -10 0 -75 0 0 0 1000 0 10 0 0 0\n---------------------- RODS",
+    )
+    .replacen("1    rod       Free        -10   0     -75   10    0     -75", "1    rod       Body1        0   0       0   20    0       0", 1);
+    let d = parse(&text).unwrap();
+    let b = &d.loaded.model.bodies[0];
+    assert_eq!(b.name, "B1");
+    assert!((b.mass - (1000.0 + mass)).abs() < 1e-9);
+    let cg = Vec3::new(10.0, 0.0, 0.0) * mass / (1000.0 + mass);
+    assert!((b.centre_of_gravity - cg).norm() < 1e-12);
+    assert_eq!(b.members.len(), 1);
+    assert_eq!(d.loaded.model.bodies.len(), 1);
+}
+
 // ---- bad decks: every error names the file, line, column and the expected form ----------
 
 macro_rules! bad_deck {
@@ -536,10 +594,28 @@ bad_deck!(
     "5     Body1     -2.6    4.5     -10.0   0      0       2.5    0"
 );
 bad_deck!(
-    rod_attachment_refused,
+    attached_to_a_missing_rod,
     "oc3_lines.txt",
     "1     main       1        4",
     "1     main       1        R1B"
+);
+bad_deck!(
+    pinned_rod_refused,
+    "rod_hanging.txt",
+    "1    rod       Free  ",
+    "1    rod       Pinned"
+);
+bad_deck!(
+    zero_length_rod_refused,
+    "rod_hanging.txt",
+    "-75  4       -",
+    "-75  0       -"
+);
+bad_deck!(
+    unknown_rod_type,
+    "rod_hanging.txt",
+    "1    rod       Free",
+    "1    bar       Free"
 );
 bad_deck!(
     point_on_a_missing_body,

@@ -857,6 +857,43 @@ pub enum BodyKindSpec {
     Coupled,
 }
 
+/// `[[bodies.members]]`: a rigid cylinder on the body with side drag and added mass along it,
+/// drag and added mass at its wet ends, the buoyancy of its wet part and seabed contact
+/// (MoorDyn's rods); its mass is part of the body's.
+#[derive(Debug, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct MemberSpec {
+    /// End A in body axes from the body origin [m].
+    #[schemars(with = "[f64; 3]")]
+    pub end_a: Spanned<[f64; 3]>,
+    /// End B in body axes from the body origin [m].
+    #[schemars(with = "[f64; 3]")]
+    pub end_b: Spanned<[f64; 3]>,
+    /// Diameter [m].
+    #[schemars(with = "f64")]
+    pub diameter: Spanned<f64>,
+    /// Segments (lumped nodes at the ends and between them); default 1.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<i64>")]
+    pub segments: Option<Spanned<i64>>,
+    /// Normal drag coefficient on the diameter [-]; default 0.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub normal_drag: Option<Spanned<f64>>,
+    /// Normal added-mass coefficient [-]; default 0.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub normal_added_mass: Option<Spanned<f64>>,
+    /// Drag coefficient of each wet end on its area π d²/4 [-]; default 0.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub end_drag: Option<Spanned<f64>>,
+    /// Axial added-mass coefficient of each wet end on (2/3) π (d/2)³ [-]; default 0.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub end_added_mass: Option<Spanned<f64>>,
+}
+
 /// Which speed scales a body's quadratic drag.
 #[derive(Clone, Copy, Debug, Deserialize, Serialize, JsonSchema, PartialEq, Eq)]
 #[serde(rename_all = "kebab-case")]
@@ -1038,6 +1075,9 @@ pub struct BodySpec {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<[f64; 3]>")]
     pub hydrodynamic_centre: Option<Spanned<[f64; 3]>>,
+    /// Cylindrical members with their own lumped hydrodynamics (MoorDyn's rods).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub members: Vec<MemberSpec>,
     /// Thrust or control force; none by default.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub thrust: Option<ThrustSpec>,

@@ -91,6 +91,9 @@ impl Body {
     ///   the moving origin: the body's momentum is m (v_o + ω × c) and its angular momentum
     ///   about the origin m c × v_o + I_o ω.
     ///
+    /// Members (MoorDyn's rods) add their lumped loads and added mass
+    /// ([`super::member_loads`]).
+    ///
     /// Left out (docs/bodies.md): the velocity-dependent added-mass terms of Kirchhoff's
     /// equations (Munk moment), the rate of change of the added mass with submergence,
     /// radiation damping and memory, second-order wave loads, seabed contact.
@@ -189,11 +192,15 @@ impl Body {
             moment += cw.cross(&fw);
         }
 
-        BodyLoads {
+        let mut out = BodyLoads {
             force,
             moment,
             mass,
+        };
+        for member in &self.members {
+            super::members::member_loads(member, k, &r, env, t, &mut out);
         }
+        out
     }
 
     /// Submerged volume, fraction and hydrodynamic centre at pose `k` (rotation matrix `r`).

@@ -31,9 +31,11 @@
 
 mod hydrostatics;
 mod loads;
+mod members;
 
 pub use hydrostatics::{CYLINDER_SIDES, Section, Wetted, wetted_prism};
 pub use loads::BodyLoads;
+pub use members::member_loads;
 
 use crate::math::{Quat, Real, Vec3};
 use crate::model::RigidKinematics;

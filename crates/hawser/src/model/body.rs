@@ -86,6 +86,32 @@ pub enum DragSpeed {
     Magnitude,
 }
 
+/// A rigid cylindrical member of a body (MoorDyn's rod): side drag and added mass on its
+/// length, drag and added mass at its wet ends, buoyancy of its wet part, vertical seabed
+/// contact, lumped at N + 1 nodes along it ([`crate::bodies::member_loads`]). Its mass is the
+/// body's: give the body's `mass`, centre of gravity and inertia with the member in them.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Member {
+    /// End A in body axes from the body origin [m].
+    pub end_a: Vec3,
+    /// End B in body axes from the body origin [m].
+    pub end_b: Vec3,
+    /// Diameter d [m].
+    pub diameter: Real,
+    /// Segments N ≥ 1: nodes at the ends and N − 1 between, each standing for its share of
+    /// the length (half a segment at an end).
+    pub segments: usize,
+    /// Normal drag coefficient C_dn on d per unit length [-].
+    pub normal_drag: Real,
+    /// Normal added-mass coefficient C_an on π d²/4 per unit length [-].
+    pub normal_added_mass: Real,
+    /// Drag coefficient of each wet end on its area π d²/4 [-] (MoorDyn's `CdEnd`).
+    pub end_drag: Real,
+    /// Added-mass coefficient of each wet end along the axis on the half-sphere volume
+    /// (2/3) π (d/2)³ [-] (MoorDyn's `CaEnd`).
+    pub end_added_mass: Real,
+}
+
 /// A body's thrust or control force, in body axes.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Thrust {
@@ -201,6 +227,9 @@ pub struct Body {
     /// `Cylinder` or `Box` takes the centroid of its wet volume). MoorDyn's bodies put their
     /// added mass and drag at the body origin and their buoyancy at the centre of gravity.
     pub hydrodynamic_centre: Option<Vec3>,
+    /// Cylindrical members with their own hydrodynamics (MoorDyn's rods), beside the body's
+    /// displacement, added mass and drag above.
+    pub members: Vec<Member>,
     /// Thrust or control force.
     pub thrust: Thrust,
     /// Wind force, for vessels.
@@ -228,6 +257,7 @@ impl Body {
             quadratic_drag: Vec6::zeros(),
             drag_speed: DragSpeed::Component,
             hydrodynamic_centre: None,
+            members: Vec::new(),
             thrust: Thrust::None,
             wind: None,
         }
@@ -337,6 +367,30 @@ impl Body {
         }
         if !non_negative(&self.quadratic_drag) {
             return Err(("quadratic_drag", "must be ≥ 0 (m², m⁵) and finite".into()));
+        }
+        for m in &self.members {
+            let ok = finite3(&m.end_a)
+                && finite3(&m.end_b)
+                && (m.end_b - m.end_a).norm() > 0.0
+                && m.diameter > 0.0
+                && m.diameter.is_finite()
+                && m.segments >= 1
+                && [
+                    m.normal_drag,
+                    m.normal_added_mass,
+                    m.end_drag,
+                    m.end_added_mass,
+                ]
+                .iter()
+                .all(|c| *c >= 0.0 && c.is_finite());
+            if !ok {
+                return Err((
+                    "members",
+                    "a member needs distinct finite ends, a diameter > 0 m, at least one \
+                     segment and coefficients ≥ 0"
+                        .into(),
+                ));
+            }
         }
         match &self.thrust {
             Thrust::None => {}

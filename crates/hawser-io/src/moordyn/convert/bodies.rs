@@ -18,6 +18,7 @@ use crate::moordyn::deck::{Section, Token};
 use crate::scenario::schema::*;
 use crate::scenario::tables::parse_number;
 use hawser::math::{Mat3, Quat, Vec3};
+use std::ops::Range;
 use toml::Spanned;
 
 /// The columns of MoorDyn-C 2.7's BODIES table.
@@ -56,35 +57,48 @@ pub(super) fn body_name(id: &str) -> String {
     format!("B{id}")
 }
 
-/// A deck body, before the points on it are folded into it.
+/// A rigid part folded into a free body: a point's mass and volume, a rod's mass and
+/// inertia, or the body's own.
+pub(super) struct Part {
+    /// Its centre of gravity, and of its volume, in body axes [m].
+    pub centre: Vec3,
+    /// Mass [kg].
+    pub mass: f64,
+    /// Inertia about its centre of gravity in body axes [kg·m²].
+    pub inertia: Mat3,
+    /// Displaced volume [m³] (always submerged, as MoorDyn's bodies and points).
+    pub volume: f64,
+}
+
+/// A deck body (from BODIES, or a rod that is a body of its own), before the points and
+/// rods on it are folded into it.
 pub(super) struct DeckBody {
-    /// MoorDyn ID.
-    pub id: String,
+    /// Scenario name (`B1`, `R2`).
+    pub name: String,
     /// How it moves.
     pub kind: DeckBodyKind,
-    /// The scenario body (mass, inertia and displacement of a free body still its own).
-    spec: BodySpec,
-    /// The row's tokens, for spans.
-    tokens: Vec<Token>,
-    /// Own mass [kg], centre of gravity [m], principal inertia about it [kg·m²] and volume
-    /// [m³] (free bodies).
-    mass: f64,
-    cg: Vec3,
-    inertia: Vec3,
-    volume: f64,
-    /// Points folded in: position in body axes [m], mass [kg], volume [m³].
-    points: Vec<(Vec3, f64, f64)>,
+    /// The scenario body (mass, inertia and displacement of a free body filled in by
+    /// [`finish_bodies`]).
+    pub spec: BodySpec,
+    /// The deck's word for its type.
+    pub type_word: String,
+    /// Deck line of its row.
+    pub line: usize,
+    /// Spans of the deck words for its mass, centre of gravity, inertia and volume.
+    pub spans: [Range<usize>; 4],
+    /// Its own mass and volume, and those folded in.
+    pub parts: Vec<Part>,
 }
 
 impl DeckBody {
     /// The deck's word for its type (`Coupled`, `Fixed`, …).
     pub(super) fn type_word(&self) -> &str {
-        &self.tokens[1].text
+        &self.type_word
     }
 
-    /// Adds a point's mass and volume at `position` (body axes) to a free body.
-    pub(super) fn fold_point(&mut self, position: Vec3, mass: f64, volume: f64) {
-        self.points.push((position, mass, volume));
+    /// Adds a rigid part (a point's mass and volume, a rod's mass and inertia) to a free body.
+    pub(super) fn fold(&mut self, part: Part) {
+        self.parts.push(part);
     }
 }
 
@@ -163,7 +177,7 @@ pub(super) fn convert_bodies(
         ] {
             c.name_key(key(field), format!("{S} › {id} › {col}"));
         }
-        if out.iter().any(|b| b.id == id) {
+        if out.iter().any(|b| b.name == body_name(&id)) {
             let d = c
                 .diag(
                     Some(t[0].span.clone()),
@@ -347,19 +361,28 @@ pub(super) fn convert_bodies(
             drag_areas: None,
             drag_speed: None,
             hydrodynamic_centre: None,
+            members: Vec::new(),
             thrust: None,
             wind: None,
         };
         let mut body = DeckBody {
-            id,
+            name: body_name(&id),
             kind,
             spec,
-            tokens: t.clone(),
-            mass,
-            cg,
-            inertia,
-            volume,
-            points: Vec::new(),
+            type_word: t[1].text.clone(),
+            line: row.line,
+            spans: [
+                t[8].span.clone(),
+                t[9].span.clone(),
+                t[10].span.clone(),
+                t[11].span.clone(),
+            ],
+            parts: vec![Part {
+                centre: cg,
+                mass,
+                inertia: Mat3::from_diagonal(&inertia),
+                volume,
+            }],
         };
         if free {
             body.spec.quadratic_drag = Some(spanned(&t[12], cda));
@@ -381,9 +404,9 @@ pub(super) fn convert_bodies(
     out
 }
 
-/// The scenario bodies, with the mass and volume of the points on each free body folded in:
-/// total mass, centre of gravity, inertia about it (parallel axes; a full tensor when the
-/// points are off the principal axes), total volume and its centre.
+/// The scenario bodies, with the parts on each free body folded in: total mass, centre of
+/// gravity, inertia about it (parallel axes; a full tensor when the parts are off the principal
+/// axes), total volume and its centre.
 pub(super) fn finish_bodies(c: &mut Converter, bodies: Vec<DeckBody>) -> Vec<BodySpec> {
     let mut out = Vec::new();
     for b in bodies {
@@ -392,36 +415,35 @@ pub(super) fn finish_bodies(c: &mut Converter, bodies: Vec<DeckBody>) -> Vec<Bod
             out.push(spec);
             continue;
         }
-        let t = &b.tokens;
-        let mass = b.mass + b.points.iter().map(|p| p.1).sum::<f64>();
+        let parts = &b.parts;
+        let mass: f64 = parts.iter().map(|p| p.mass).sum();
         let cg = if mass > 0.0 {
-            (b.cg * b.mass + b.points.iter().map(|p| p.0 * p.1).sum::<Vec3>()) / mass
+            parts.iter().map(|p| p.centre * p.mass).sum::<Vec3>() / mass
         } else {
-            b.cg
+            parts[0].centre
         };
-        // Inertia about the combined centre of gravity: the body's own (principal, about its
-        // own centre of gravity) plus each mass's parallel-axis term m (|d|² 1 − d dᵀ).
-        let parallel =
-            |d: Vec3, m: f64| m * (Mat3::identity() * d.norm_squared() - d * d.transpose());
-        let mut inertia = Mat3::from_diagonal(&b.inertia) + parallel(b.cg - cg, b.mass);
-        for (r, m, _) in &b.points {
-            inertia += parallel(r - cg, *m);
-        }
-        let volume = b.volume + b.points.iter().map(|p| p.2).sum::<f64>();
+        // Each part's inertia about its own centre of gravity plus m (|d|² 1 − d dᵀ).
+        let inertia = parts
+            .iter()
+            .map(|p| {
+                let d = p.centre - cg;
+                p.inertia + p.mass * (Mat3::identity() * d.norm_squared() - d * d.transpose())
+            })
+            .sum::<Mat3>();
+        let volume: f64 = parts.iter().map(|p| p.volume).sum();
         let centre_of_buoyancy = if volume > 0.0 {
-            (b.cg * b.volume + b.points.iter().map(|p| p.0 * p.2).sum::<Vec3>()) / volume
+            parts.iter().map(|p| p.centre * p.volume).sum::<Vec3>() / volume
         } else {
-            b.cg
+            parts[0].centre
         };
-        let folded = b.points.iter().any(|p| p.1 != 0.0 || p.2 != 0.0);
-        if folded {
+        if parts[1..].iter().any(|p| p.mass != 0.0 || p.volume != 0.0) {
             c.note(
-                c.line_of(&t[0].span),
+                b.line,
                 format!(
-                    "body {}: the mass and volume of its points are part of the body: {mass} kg \
-                     with its centre of gravity at [{}, {}, {}] m, {volume} m³ centred at \
-                     [{}, {}, {}] m (MoorDyn adds them to the body's loads the same way)",
-                    b.id,
+                    "body {}: the mass and volume of the points and rods on it are part of the \
+                     body: {mass} kg with its centre of gravity at [{}, {}, {}] m, {volume} m³ \
+                     centred at [{}, {}, {}] m (MoorDyn adds them to the body's loads the same way)",
+                    b.name,
                     cg.x,
                     cg.y,
                     cg.z,
@@ -431,11 +453,13 @@ pub(super) fn finish_bodies(c: &mut Converter, bodies: Vec<DeckBody>) -> Vec<Bod
                 ),
             );
         }
+        let [mass_span, cg_span, inertia_span, volume_span] = b.spans;
         let off_diagonal = (0..3).any(|i| (0..3).any(|j| i != j && inertia[(i, j)] != 0.0));
-        spec.mass = Some(spanned(&t[8], mass));
-        spec.centre_of_gravity = (cg != Vec3::zeros()).then(|| spanned(&t[9], cg.into()));
-        spec.inertia = Some(spanned(
-            &t[10],
+        spec.mass = Some(Spanned::new(mass_span, mass));
+        spec.centre_of_gravity =
+            (cg != Vec3::zeros()).then(|| Spanned::new(cg_span.clone(), cg.into()));
+        spec.inertia = Some(Spanned::new(
+            inertia_span,
             if off_diagonal {
                 InertiaSpec::Matrix(std::array::from_fn(|i| {
                     std::array::from_fn(|j| inertia[(i, j)])
@@ -446,18 +470,18 @@ pub(super) fn finish_bodies(c: &mut Converter, bodies: Vec<DeckBody>) -> Vec<Bod
         ));
         if volume > 0.0 {
             spec.displacement = Some(DisplacementSpec {
-                kind: spanned(&t[11], DisplacementKind::Submerged),
-                volume: Some(spanned(&t[11], volume)),
+                kind: Spanned::new(volume_span.clone(), DisplacementKind::Submerged),
+                volume: Some(Spanned::new(volume_span.clone(), volume)),
                 radius: None,
                 height: None,
                 length: None,
                 breadth: None,
             });
             spec.centre_of_buoyancy = (centre_of_buoyancy != Vec3::zeros())
-                .then(|| spanned(&t[9], centre_of_buoyancy.into()));
+                .then(|| Spanned::new(cg_span.clone(), centre_of_buoyancy.into()));
             // Added mass and drag at the body origin, buoyancy at its centre.
             spec.hydrodynamic_centre =
-                (centre_of_buoyancy != Vec3::zeros()).then(|| spanned(&t[12], [0.0; 3]));
+                (centre_of_buoyancy != Vec3::zeros()).then(|| Spanned::new(volume_span, [0.0; 3]));
         }
         out.push(spec);
     }

@@ -30,12 +30,14 @@ mod bodies;
 mod line_types;
 mod options;
 mod outputs;
+mod rods;
 mod water;
 use bodies::{DeckBody, DeckBodyKind, body_name, convert_bodies, finish_bodies};
 use line_types::convert_line_types;
 use options::{environment_of, read_options, simulation_of};
 use outputs::convert_outputs;
 pub use outputs::output_channel;
+use rods::{convert_rod_types, convert_rods};
 
 /// Choices a deck does not make (a deck is driven by a host program that owns them).
 #[derive(Clone, Debug, Default)]
@@ -280,8 +282,8 @@ impl<'a> Converter<'a> {
             )
             .value(s.title.text.clone())
             .hint(format!(
-                "hawser cannot run this deck with its {} row{} yet; remove the section to run the \
-                 rest, or model it in a hawser scenario",
+                "hawser does not run this section's {} row{}; remove the section to run the rest \
+                 of the deck, or model it in a hawser scenario",
                 s.rows.len(),
                 if s.rows.len() == 1 { "" } else { "s" }
             ));
@@ -318,11 +320,8 @@ pub fn convert(
             c.errors.push(d);
         }
         seen.push(s.kind);
-        match s.kind {
-            SectionKind::RodTypes => c.refuse_section(s, "rods need rigid-body support (planned)"),
-            SectionKind::Rods => c.refuse_section(s, "rods need rigid-body support (planned)"),
-            SectionKind::Unsupported => c.refuse_section(s, "hawser does not read this section"),
-            _ => {}
+        if s.kind == SectionKind::Unsupported {
+            c.refuse_section(s, "hawser does not read this section");
         }
     }
     let line_types = match deck.section(SectionKind::LineTypes) {
@@ -348,17 +347,34 @@ pub fn convert(
         Some(s) => convert_bodies(&mut c, s, rho, vessel.as_ref()),
         None => Vec::new(),
     };
-    let (points, coupled) = match deck.section(SectionKind::Points) {
+    for kind in [SectionKind::RodTypes, SectionKind::Rods] {
+        if let Some(s) = deck.section(kind)
+            && s.rows.is_empty()
+        {
+            let line = c.line_of(&s.title.span);
+            c.note(line, format!("section `{}` is empty", s.title.text));
+        }
+    }
+    let rod_types = match deck.section(SectionKind::RodTypes) {
+        Some(s) => convert_rod_types(&mut c, s),
+        None => Default::default(),
+    };
+    let rod_ends = match deck.section(SectionKind::Rods) {
+        Some(s) => convert_rods(&mut c, s, &rod_types, &mut deck_bodies, vessel.as_ref()),
+        None => Default::default(),
+    };
+    let (mut points, coupled) = match deck.section(SectionKind::Points) {
         Some(s) => convert_points(&mut c, s, vessel.as_ref(), &mut deck_bodies),
         None => (Vec::new(), 0),
     };
+    points.extend(rod_ends.points);
     let body_kinds: Vec<(String, bool)> = deck_bodies
         .iter()
-        .map(|b| (body_name(&b.id), b.kind == DeckBodyKind::Free))
+        .map(|b| (b.name.clone(), b.kind == DeckBodyKind::Free))
         .collect();
     let bodies = finish_bodies(&mut c, deck_bodies);
     let (lines, line_outputs) = match deck.section(SectionKind::Lines) {
-        Some(s) => convert_lines(&mut c, s, &points),
+        Some(s) => convert_lines(&mut c, s, &points, &rod_ends.refused),
         None => (Vec::new(), false),
     };
     if deck.section(SectionKind::Lines).is_none() {
@@ -517,13 +533,16 @@ fn convert_points(
             "coupled" | "vessel" | "ves" | "cpld" | "fairlead" => Some(PointKindSpec::Prescribed),
             "body" => {
                 let number = &kind_word[base.len()..];
-                match bodies.iter().position(|b| b.id == number) {
+                match bodies.iter().position(|b| b.name == body_name(number)) {
                     Some(b) => {
                         on_body = Some(b);
                         Some(PointKindSpec::Body)
                     }
                     None => {
-                        let ids: Vec<&str> = bodies.iter().map(|b| b.id.as_str()).collect();
+                        let ids: Vec<&str> = bodies
+                            .iter()
+                            .filter_map(|b| b.name.strip_prefix('B'))
+                            .collect();
                         let d = c
                             .diag(
                                 Some(t[1].span.clone()),
@@ -603,7 +622,7 @@ fn convert_points(
                             format!(
                                 "point {} on free body {} has {col}: a point's own drag, added \
                                  mass or force on a body is not modelled",
-                                t[0].text, body.id
+                                t[0].text, body.name
                             ),
                         )
                         .expected(format!("{col} = 0"))
@@ -613,11 +632,16 @@ fn convert_points(
                         );
                     c.errors.push(d);
                 }
-                body.fold_point(
-                    hawser::math::Vec3::new(x.unwrap_or(0.0), y.unwrap_or(0.0), z.unwrap_or(0.0)),
-                    mass.unwrap_or(0.0),
-                    volume.unwrap_or(0.0),
-                );
+                body.fold(bodies::Part {
+                    centre: hawser::math::Vec3::new(
+                        x.unwrap_or(0.0),
+                        y.unwrap_or(0.0),
+                        z.unwrap_or(0.0),
+                    ),
+                    mass: mass.unwrap_or(0.0),
+                    inertia: hawser::math::Mat3::zeros(),
+                    volume: volume.unwrap_or(0.0),
+                });
             } else if extra.is_some() || [mass, volume].iter().any(|v| v.is_some_and(|x| x != 0.0))
             {
                 c.note(
@@ -640,7 +664,7 @@ fn convert_points(
                 added_mass_coefficient: None,
                 force: None,
                 motion: None,
-                body: Some(spanned(&t[1], body_name(&bodies[b].id))),
+                body: Some(spanned(&t[1], bodies[b].name.clone())),
             });
             continue;
         }
@@ -711,7 +735,12 @@ impl VesselFile {
     }
 }
 
-fn convert_lines(c: &mut Converter, s: &Section, points: &[PointSpec]) -> (Vec<LineSpec>, bool) {
+fn convert_lines(
+    c: &mut Converter,
+    s: &Section,
+    points: &[PointSpec],
+    refused_rod_ends: &[String],
+) -> (Vec<LineSpec>, bool) {
     const S: &str = "LINES";
     let mut out = Vec::new();
     let mut any_outputs = false;
@@ -739,26 +768,48 @@ fn convert_lines(c: &mut Converter, s: &Section, points: &[PointSpec]) -> (Vec<L
                 .iter()
                 .find_map(|p| w.strip_prefix(p).filter(|r| r.parse::<u64>().is_ok()))
                 .or_else(|| w.parse::<u64>().is_ok().then_some(w.as_str()));
-            match number {
-                Some(n) => spanned(tok, point_name(n)),
-                None => {
-                    let rod = w.starts_with('r');
+            // A rod end: R#A, R#B, Rod#A, Rod#B.
+            let rod_end = ["rod", "r"].iter().find_map(|p| {
+                let rest = w.strip_prefix(p)?;
+                let digits = rest.trim_end_matches(['a', 'b']);
+                let end = &rest[digits.len()..];
+                (digits.parse::<u64>().is_ok() && (end == "a" || end == "b"))
+                    .then(|| format!("R{digits}{}", end.to_uppercase()))
+            });
+            match (number, rod_end) {
+                (Some(n), _) => spanned(tok, point_name(n)),
+                (None, Some(end)) => {
+                    if !points.iter().any(|p| p.name.get_ref() == &end)
+                        && !refused_rod_ends.contains(&end)
+                    {
+                        let d = c
+                            .diag(
+                                Some(tok.span.clone()),
+                                &format!("{S} › {id} › {col}"),
+                                format!(
+                                    "line {id} is attached to `{}`, an end of a rod that is not \
+                                     in the RODS table",
+                                    tok.text
+                                ),
+                            )
+                            .expected("R#A or R#B with a rod ID of the RODS table")
+                            .hint("rod ends are R#A and R#B, # the rod's ID in RODS");
+                        c.errors.push(d);
+                    }
+                    spanned(tok, end)
+                }
+                (None, None) => {
                     let d = c
                         .diag(
                             Some(tok.span.clone()),
                             &format!("{S} › {id} › {col}"),
-                            if rod {
-                                format!("line {id} is attached to a rod end (`{}`); rods are not available yet", tok.text)
-                            } else {
-                                format!("`{}` is not a point", tok.text)
-                            },
+                            format!("`{}` is not a point or a rod end", tok.text),
                         )
-                        .expected("a point ID from the POINTS table: 3, P3, Point3, C3 or Con3")
-                        .hint(if rod {
-                            "attach the line to a Coupled or Fixed point instead of the rod"
-                        } else {
-                            "lines attach to points by their ID"
-                        });
+                        .expected(
+                            "a point ID from the POINTS table (3, P3, Point3, C3 or Con3) or a \
+                             rod end (R1A, R1B)",
+                        )
+                        .hint("lines attach to points by their ID and to rods by R#A or R#B");
                     c.errors.push(d);
                     spanned(tok, tok.text.clone())
                 }
@@ -789,10 +840,12 @@ fn convert_lines(c: &mut Converter, s: &Section, points: &[PointSpec]) -> (Vec<L
             && l < 0.0
         {
             // MoorDyn: a negative length is a multiple of the distance between the ends.
+            // Points on bodies are placed by their body: their positions are in its axes.
             let at = |name: &str| {
                 points
                     .iter()
                     .find(|p| p.name.get_ref() == name)
+                    .filter(|p| *p.kind.get_ref() != PointKindSpec::Body)
                     .and_then(|p| p.position.as_ref().map(|x| *x.get_ref()))
             };
             if let (Some(a), Some(b)) = (at(end_a.get_ref()), at(end_b.get_ref())) {
@@ -808,6 +861,22 @@ fn convert_lines(c: &mut Converter, s: &Section, points: &[PointSpec]) -> (Vec<L
                         -l * span
                     ),
                 );
+            } else {
+                let d = c
+                    .diag(
+                        Some(t[4].span.clone()),
+                        &format!("{S} › {id} › UnstrLen"),
+                        format!(
+                            "line {id}: UnstrLen {} < 0 is a multiple of the distance between \
+                             its ends, and an end on a body has no place before the body is \
+                             placed",
+                            t[4].text
+                        ),
+                    )
+                    .expected("the unstretched length in m, > 0")
+                    .hint("give the length in metres");
+                c.errors.push(d);
+                length = Some(1.0);
             }
         }
         let segments = c.count(&t[5], &format!("{S} › {id}"), "NumSegs");

@@ -3,7 +3,7 @@
 use super::{Builder, Check, NON_NEGATIVE, POSITIVE, build_rigid_motion, span_of};
 use crate::scenario::schema::*;
 use hawser::math::{Mat3, Quat, Vec3, Vec6};
-use hawser::model::{Body, BodyKind, Displacement, DragSpeed, RigidMotion, Thrust, Wind};
+use hawser::model::{Body, BodyKind, Displacement, DragSpeed, Member, RigidMotion, Thrust, Wind};
 use hawser::physics::environment::Environment;
 use std::collections::HashMap;
 use toml::Spanned;
@@ -189,6 +189,12 @@ pub(super) fn build_bodies(
             .hydrodynamic_centre
             .as_ref()
             .map(|p| b.vec3(p, &k("hydrodynamic_centre")));
+        let members = s
+            .members
+            .iter()
+            .enumerate()
+            .map(|(j, m)| build_member(b, m, &k(&format!("members[{j}]"))))
+            .collect();
         let drag_speed = match s.drag_speed.as_ref().map(|d| *d.get_ref()) {
             Some(DragSpeedSpec::Magnitude) => DragSpeed::Magnitude,
             _ => DragSpeed::Component,
@@ -358,11 +364,92 @@ pub(super) fn build_bodies(
             quadratic_drag,
             drag_speed,
             hydrodynamic_centre,
+            members,
             thrust,
             wind,
         });
     }
     out
+}
+
+/// A member: ends apart, a diameter > 0, at least one segment, coefficients ≥ 0.
+fn build_member(b: &mut Builder, m: &MemberSpec, key: &str) -> Member {
+    let k = |f: &str| format!("{key}.{f}");
+    let end_a = b.vec3(&m.end_a, &k("end_a"));
+    let end_b = b.vec3(&m.end_b, &k("end_b"));
+    if end_a == end_b {
+        let d = b
+            .diag(
+                Some(m.end_b.span()),
+                &k("end_b"),
+                "a member's ends are at the same place",
+            )
+            .expected("end_b ≠ end_a, in body axes [m]")
+            .hint("a member is a cylinder from end_a to end_b");
+        b.push(d);
+    }
+    let diameter = b.num(
+        &m.diameter,
+        &k("diameter"),
+        Check {
+            ok: POSITIVE,
+            expected: "m, > 0",
+        },
+        "the member's diameter",
+    );
+    let segments = match &m.segments {
+        Some(n) if *n.get_ref() >= 1 => *n.get_ref() as usize,
+        Some(n) => {
+            let d = b
+                .diag(
+                    Some(n.span()),
+                    &k("segments"),
+                    "a member needs at least one segment",
+                )
+                .expected("a whole number ≥ 1")
+                .hint("the member's loads are lumped at its segments' ends");
+            b.push(d);
+            1
+        }
+        None => 1,
+    };
+    let mut coefficient = |v: &Option<Spanned<f64>>, f: &str, what: &str| {
+        v.as_ref()
+            .map(|v| {
+                b.num(
+                    v,
+                    &k(f),
+                    Check {
+                        ok: NON_NEGATIVE,
+                        expected: "≥ 0, dimensionless",
+                    },
+                    what,
+                )
+            })
+            .unwrap_or(0.0)
+    };
+    Member {
+        end_a,
+        end_b,
+        diameter,
+        segments,
+        normal_drag: coefficient(
+            &m.normal_drag,
+            "normal_drag",
+            "drag coefficient across the member",
+        ),
+        normal_added_mass: coefficient(
+            &m.normal_added_mass,
+            "normal_added_mass",
+            "added-mass coefficient across the member",
+        ),
+        end_drag: coefficient(&m.end_drag, "end_drag", "drag coefficient of each wet end"),
+        end_added_mass: coefficient(
+            &m.end_added_mass,
+            "end_added_mass",
+            "axial added-mass coefficient of each wet end",
+        ),
+    }
 }
 
 /// [Ixx, Iyy, Izz] or a full tensor, symmetric; positive definite for a free body (`free`),
