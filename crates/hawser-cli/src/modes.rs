@@ -1,15 +1,17 @@
 //! `hawser modes`: natural frequencies and mode shapes about the static state, the stiffness
-//! the lines offer their fixed and prescribed points, and the resonance report.
+//! the lines offer their fixed and prescribed points and every body, and the resonance report.
 //!
 //! Files written into `--out DIR`: `modes.csv` (mode, frequency, period, label),
 //! `shapes_<line>.csv` per line (every mode's nodal displacements, scaled so that the largest
-//! nodal displacement of the mode over the whole system is 1), `shapes_points.csv` for free
-//! points, and `modes.json` (what `--json` prints).
+//! displacement of the mode over the whole system is 1), `shapes_points.csv` for free points,
+//! `shapes_bodies.csv` for free bodies (origin displacement and rotation), and `modes.json`
+//! (what `--json` prints). A model with `dg` lines is analysed through its hermite twin
+//! ([`hawser::analysis::modes::modal_twin`]), which the output says.
 
 use anyhow::{Context, Result};
 use hawser::analysis::modes::{ModalOptions, ModeOwner, Modes, natural_modes};
 use hawser::analysis::resonance::{ResonanceCheck, excitations, resonance_report};
-use hawser::linearise::{ConnectionStiffness, Linearisation, LinearisationOptions};
+use hawser::linearise::{BodyStiffness, ConnectionStiffness, Linearisation, LinearisationOptions};
 use hawser::math::{Real, Vec3};
 use hawser::model::PointKind;
 use hawser::statics::{StaticOptions, StaticSolution};
@@ -60,7 +62,21 @@ pub fn run(args: &ModesArgs) -> Result<ExitCode> {
     let Some(loaded) = super::load(&args.file) else {
         return Ok(ExitCode::from(2));
     };
-    let system = super::system_of(&loaded.model)?;
+    let twin = hawser::analysis::modes::modal_twin(&loaded.model);
+    if let Some(t) = &twin {
+        for (l, tl) in loaded.model.lines.iter().zip(&t.lines) {
+            if l.formulation != tl.formulation {
+                eprintln!(
+                    "note: line {} (dg, {} elements) is linearised through its hermite twin \
+                     ({} cubic elements over the same sections; docs/modes.md)",
+                    l.name,
+                    l.elements(),
+                    tl.elements()
+                );
+            }
+        }
+    }
+    let system = super::system_of(twin.as_ref().unwrap_or(&loaded.model))?;
     if let Err(e) = hawser::analysis::modes::supported(&system) {
         eprintln!("error: {e}");
         return Ok(ExitCode::from(1));
@@ -91,12 +107,15 @@ pub fn run(args: &ModesArgs) -> Result<ExitCode> {
     };
     let modes_time = t.elapsed().as_secs_f64();
     let t = Instant::now();
-    let stiffness = hawser::linearise::connection_stiffness(&system, &lin).map_err(|s| {
+    let singular = |s| {
         anyhow::anyhow!(
-            "the stiffness is singular at {:?}",
+            "the stiffness is singular at {}: a line or joint there has no stiffness (slack, \
+             or an unloaded free point); check the static state",
             system.singular_location(s)
         )
-    })?;
+    };
+    let stiffness = hawser::linearise::connection_stiffness(&system, &lin).map_err(singular)?;
+    let body_stiffness = hawser::linearise::body_stiffness(&system, &lin).map_err(singular)?;
     let timing = Timing {
         statics: statics_time,
         linearisation: linearisation_time,
@@ -106,7 +125,14 @@ pub fn run(args: &ModesArgs) -> Result<ExitCode> {
     let margin = args.margin / 100.0;
     let report = resonance_report(&excitations(&system), &modes, margin);
     let document = to_json(
-        &system, &sol, &lin, &modes, &stiffness, &report, margin, &timing,
+        &system,
+        &sol,
+        &lin,
+        &modes,
+        (&stiffness, &body_stiffness),
+        &report,
+        margin,
+        &timing,
     );
     if let Some(dir) = &args.out {
         write_files(dir, &system, &lin, &modes, &document)
@@ -115,7 +141,14 @@ pub fn run(args: &ModesArgs) -> Result<ExitCode> {
     if args.json {
         print(&serde_json::to_string_pretty(&document)?);
     } else {
-        print(&table(&system, &sol, &modes, &stiffness, &report, margin));
+        print(&table(
+            &system,
+            &sol,
+            &modes,
+            (&stiffness, &body_stiffness),
+            &report,
+            margin,
+        ));
     }
     eprintln!(
         "timing: statics {:.3} s, linearisation {:.3} s, modes {:.3} s ({}), stiffness {:.3} s",
@@ -162,6 +195,14 @@ fn method_name(modes: &Modes) -> String {
     }
 }
 
+fn body_kind(system: &System, b: usize) -> &'static str {
+    match system.bodies[b].body.kind {
+        hawser::model::BodyKind::Free => "free",
+        hawser::model::BodyKind::Prescribed(_) => "prescribed",
+        hawser::model::BodyKind::Coupled => "coupled",
+    }
+}
+
 fn point_kind(system: &System, p: usize) -> &'static str {
     match system.points[p].kind {
         PointKind::Fixed => "fixed",
@@ -176,7 +217,7 @@ fn table(
     system: &System,
     sol: &StaticSolution,
     modes: &Modes,
-    stiffness: &ConnectionStiffness,
+    (stiffness, bodies): (&ConnectionStiffness, &[BodyStiffness]),
     report: &[ResonanceCheck],
     margin: Real,
 ) -> String {
@@ -230,6 +271,20 @@ fn table(
             ));
         }
     }
+    for b in bodies {
+        line(format!(
+            "  body {} ({}): 6×6 mooring stiffness about its origin [N/m, N/rad; N·m/m, N·m/rad] \
+             over x, y, z, rotations about x, y, z (global axes), every body held:",
+            system.bodies[b.body].body.name,
+            body_kind(system, b.body)
+        ));
+        for r in 0..6 {
+            let row: Vec<String> = (0..6)
+                .map(|c| format!("{:>13.5e}", b.matrix[(r, c)]))
+                .collect();
+            line(format!("    [{} ]", row.join(" ")));
+        }
+    }
     line(String::new());
     if report.is_empty() {
         line("resonance: no periodic excitation in the scenario (prescribed sinusoids and orbits are checked)".into());
@@ -264,7 +319,7 @@ fn to_json(
     sol: &StaticSolution,
     lin: &Linearisation,
     modes: &Modes,
-    stiffness: &ConnectionStiffness,
+    (stiffness, bodies): (&ConnectionStiffness, &[BodyStiffness]),
     report: &[ResonanceCheck],
     margin: Real,
     timing: &Timing,
@@ -272,6 +327,7 @@ fn to_json(
     let owner_name = |o: &ModeOwner| match *o {
         ModeOwner::Line(l) => system.lines[l].name.clone(),
         ModeOwner::Point(p) => system.points[p].name.clone(),
+        ModeOwner::Body(b) => system.bodies[b].body.name.clone(),
     };
     let mode_list: Vec<Value> = modes
         .modes
@@ -289,6 +345,11 @@ fn to_json(
                 .iter()
                 .map(|&p| (system.points[p].name.clone(), json!(m.point_shares[p])))
                 .collect();
+            let body_shares: serde_json::Map<String, Value> = system
+                .free_bodies
+                .iter()
+                .map(|&b| (system.bodies[b].body.name.clone(), json!(m.body_shares[b])))
+                .collect();
             let directions: serde_json::Map<String, Value> = m
                 .direction_shares
                 .iter()
@@ -302,7 +363,7 @@ fn to_json(
                 "label": m.label.text,
                 "direction": m.label.direction.name(),
                 "owners": m.label.owners.iter().map(owner_name).collect::<Vec<_>>(),
-                "kinetic_energy_share": {"lines": lines, "points": points, "directions": directions},
+                "kinetic_energy_share": {"lines": lines, "points": points, "bodies": body_shares, "directions": directions},
             })
         })
         .collect();
@@ -318,6 +379,18 @@ fn to_json(
             (
                 system.points[p].name.clone(),
                 json!({"kind": point_kind(system, p), "matrix_n_per_m": rows}),
+            )
+        })
+        .collect();
+    let body_stiff: serde_json::Map<String, Value> = bodies
+        .iter()
+        .map(|b| {
+            let rows: Vec<Vec<Real>> = (0..6)
+                .map(|r| (0..6).map(|c| b.matrix[(r, c)]).collect())
+                .collect();
+            (
+                system.bodies[b.body].body.name.clone(),
+                json!({"kind": body_kind(system, b.body), "matrix_6x6": rows}),
             )
         })
         .collect();
@@ -343,6 +416,7 @@ fn to_json(
         "stiffness_asymmetry": modes.stiffness_asymmetry,
         "modes": mode_list,
         "stiffness": stiff,
+        "body_stiffness": body_stiff,
         "resonance": {"margin": margin, "checks": checks},
         "timing_s": {
             "statics": timing.statics,
@@ -387,7 +461,7 @@ fn write_files(
     let scale: Vec<Real> = modes
         .modes
         .iter()
-        .map(|m| 1.0 / m.largest_displacement().max(Real::MIN_POSITIVE))
+        .map(|m| 1.0 / m.largest_displacement(&lin.dofs).max(Real::MIN_POSITIVE))
         .collect();
     for (li, l) in system.lines.iter().enumerate() {
         let mut w = create(&format!("shapes_{}.csv", l.name))?;
@@ -414,6 +488,36 @@ fn write_files(
                 let u = m.point_displacement(&lin.dofs, p) * scale[k];
                 let at = format!("{},{}", k + 1, system.points[p].name);
                 shape_row(&mut w, &at, &r, &u)?;
+            }
+        }
+        w.flush()?;
+    }
+    if !system.free_bodies.is_empty() {
+        let mut w = create("shapes_bodies.csv")?;
+        writeln!(
+            w,
+            "mode,body,x [m],y [m],z [m],ux [-],uy [-],uz [-],rx [rad/m],ry [rad/m],rz [rad/m]"
+        )?;
+        for (k, m) in modes.modes.iter().enumerate() {
+            for &b in &system.free_bodies {
+                let r = ws.bodies[b].position;
+                let (u, th) = m.body_motion(&lin.dofs, b).unwrap_or_default();
+                let (u, th) = (u * scale[k], th * scale[k]);
+                writeln!(
+                    w,
+                    "{},{},{},{},{},{},{},{},{},{},{}",
+                    k + 1,
+                    system.bodies[b].body.name,
+                    r.x,
+                    r.y,
+                    r.z,
+                    u.x,
+                    u.y,
+                    u.z,
+                    th.x,
+                    th.y,
+                    th.z
+                )?;
             }
         }
         w.flush()?;
