@@ -9,6 +9,7 @@
 
 pub mod fuzzing;
 pub mod input;
+pub mod modes;
 pub mod moordyn;
 pub mod results;
 pub mod scenario;

@@ -13,21 +13,195 @@ use std::fs::File;
 use std::io::{BufWriter, Write};
 use std::path::{Path, PathBuf};
 
-/// Writes a dynamic run's results into a directory while it runs.
-pub struct RunWriter {
-    dir: PathBuf,
+/// What a run's results are computed from its samples, whatever keeps them: the row of
+/// channel values, the running statistics of every channel, the slack and snap detectors of
+/// every line, and the snapshot schedule. [`RunWriter`] writes it into files
+/// (`summary.json`); the Python package keeps it in memory.
+#[derive(Clone, Debug)]
+pub struct RunSummary {
     channels: Vec<Channel>,
     names: Vec<String>,
     stats: Vec<RunningStats>,
     detectors: Vec<SlackSnapDetector>,
-    timeseries: BufWriter<File>,
-    snapshots: Vec<BufWriter<File>>,
     snapshot_interval: Option<Real>,
-    scenario: String,
     next_snapshot: Real,
     last_time: Real,
     samples: u64,
     row: Vec<Real>,
+}
+
+impl RunSummary {
+    /// A summary of the run of `system` with output channels `outputs`, shape snapshots every
+    /// `snapshot_interval` [s] (none without it).
+    pub fn new(
+        system: &System,
+        outputs: &[OutputChannel],
+        snapshot_interval: Option<Real>,
+    ) -> Self {
+        Self {
+            names: outputs.iter().map(|c| c.name(system)).collect(),
+            channels: outputs.iter().map(|c| c.channel).collect(),
+            stats: vec![RunningStats::default(); outputs.len()],
+            detectors: vec![SlackSnapDetector::default(); system.lines.len()],
+            row: vec![0.0; outputs.len()],
+            snapshot_interval,
+            next_snapshot: 0.0,
+            last_time: 0.0,
+            samples: 0,
+        }
+    }
+
+    /// Takes one sample: the channel values ([`RunSummary::row`]) into the statistics, the
+    /// element tensions and strains into the slack and snap detectors. Returns whether a shape
+    /// snapshot is due at this sample.
+    pub fn sample(&mut self, view: &View<'_>) -> bool {
+        let (system, time, ws) = (view.system, view.time, view.workspace);
+        self.last_time = time;
+        self.samples += 1;
+        for (i, c) in self.channels.iter().enumerate() {
+            self.row[i] = view.value(c);
+        }
+        for (v, s) in self.row.iter().zip(self.stats.iter_mut()) {
+            s.push(*v);
+        }
+        for li in 0..system.lines.len() {
+            let lw = &ws.lines[li];
+            // The current mesh: a line on a winch changes its unstretched length.
+            let mesh = system.line_mesh(ws, li);
+            self.detectors[li].push(time, &lw.elements.tension, &lw.elements.strain, |e| {
+                0.5 * (mesh.arc_length(e) + mesh.arc_length(e + 1))
+            });
+        }
+        match self.snapshot_interval {
+            Some(interval) if time >= self.next_snapshot - 1e-9 * interval => {
+                while self.next_snapshot <= time + 1e-9 * interval {
+                    self.next_snapshot += interval;
+                }
+                true
+            }
+            _ => false,
+        }
+    }
+
+    /// The channel values of the last sample, in column order.
+    pub fn row(&self) -> &[Real] {
+        &self.row
+    }
+
+    /// Column names of the output channels.
+    pub fn names(&self) -> &[String] {
+        &self.names
+    }
+
+    /// The output channels, in column order.
+    pub fn channels(&self) -> &[Channel] {
+        &self.channels
+    }
+
+    /// Time of the last sample [s].
+    pub fn last_time(&self) -> Real {
+        self.last_time
+    }
+
+    /// Samples taken.
+    pub fn samples(&self) -> u64 {
+        self.samples
+    }
+
+    /// Closes the slack intervals and snap events still open at the last sample.
+    pub fn finish(&mut self) {
+        for d in &mut self.detectors {
+            d.finish(self.last_time);
+        }
+    }
+
+    /// The summary as `summary.json` holds it: per channel its unit, min, max, mean and
+    /// standard deviation; per line its slack intervals and snap events; `error` (the reason
+    /// the run stopped early) marks it incomplete.
+    pub fn to_json(&self, system: &System, error: Option<&str>) -> Value {
+        let channels: serde_json::Map<String, Value> = self
+            .names
+            .iter()
+            .zip(&self.stats)
+            .zip(&self.channels)
+            .map(|((n, s), c)| {
+                (n.clone(), json!({"unit": c.unit(), "min": s.min, "max": s.max, "mean": s.mean(), "std": s.std()}))
+            })
+            .collect();
+        let lines: serde_json::Map<String, Value> = system
+            .lines
+            .iter()
+            .zip(&self.detectors)
+            .map(|(l, d)| {
+                (
+                    l.name.clone(),
+                    json!({
+                        "slack_intervals": d.intervals.iter().map(|s| json!({"start": s.start, "end": s.end, "min_strain": s.min_strain})).collect::<Vec<_>>(),
+                        "snap_events": d.snaps.iter().map(|s| json!({
+                            "time": s.time, "peak_time": s.peak_time, "peak_tension": s.peak_tension,
+                            "location": s.location, "rise_rate": s.rise_rate})).collect::<Vec<_>>(),
+                    }),
+                )
+            })
+            .collect();
+        json!({
+            "complete": error.is_none(),
+            "error": error,
+            "end_time": self.last_time,
+            "samples": self.samples,
+            "channels": channels,
+            "lines": lines,
+            "definitions": {
+                "slack": "some element of the line has strain ≤ 0",
+                "snap": "a slack → taut transition; peak is the largest element tension until the tension falls again",
+                "location": "unstretched arc length from end A [m] of the element carrying the peak",
+            },
+        })
+    }
+
+    /// Saves the summary exactly (statistics, detectors, snapshot schedule), for a checkpoint.
+    pub fn encode(&self, e: &mut hawser::session::Encoder) {
+        e.u64(self.stats.len() as u64);
+        self.stats.iter().for_each(|s| s.encode(e));
+        e.u64(self.detectors.len() as u64);
+        self.detectors.iter().for_each(|d| d.encode(e));
+        e.f64(self.next_snapshot);
+        e.f64(self.last_time);
+        e.u64(self.samples);
+    }
+
+    /// Restores a summary saved by [`RunSummary::encode`] into this new one (of the same
+    /// system and channels); the error says what does not fit.
+    pub fn decode(&mut self, d: &mut hawser::session::Decoder) -> Result<(), &'static str> {
+        const TRUNCATED: &str = "is truncated";
+        let n = d.u64().map_err(|_| TRUNCATED)? as usize;
+        if n != self.channels.len() {
+            return Err("has another number of channels");
+        }
+        self.stats = (0..n)
+            .map(|_| RunningStats::decode(d).map_err(|_| TRUNCATED))
+            .collect::<Result<Vec<_>, _>>()?;
+        let n = d.u64().map_err(|_| TRUNCATED)? as usize;
+        if n != self.detectors.len() {
+            return Err("has another number of lines");
+        }
+        self.detectors = (0..n)
+            .map(|_| SlackSnapDetector::decode(d).map_err(|_| TRUNCATED))
+            .collect::<Result<Vec<_>, _>>()?;
+        self.next_snapshot = d.f64().map_err(|_| TRUNCATED)?;
+        self.last_time = d.f64().map_err(|_| TRUNCATED)?;
+        self.samples = d.u64().map_err(|_| TRUNCATED)?;
+        Ok(())
+    }
+}
+
+/// Writes a dynamic run's results into a directory while it runs.
+pub struct RunWriter {
+    dir: PathBuf,
+    summary: RunSummary,
+    timeseries: BufWriter<File>,
+    snapshots: Vec<BufWriter<File>>,
+    scenario: String,
 }
 
 fn io_context(path: &Path, e: std::io::Error) -> std::io::Error {
@@ -118,12 +292,11 @@ impl RunWriter {
             &dir.join("status.json"),
             &json!({"complete": false, "state": "running", "scenario": scenario.display().to_string()}),
         )?;
+        let summary = RunSummary::new(system, outputs, snapshot_interval);
         let path = dir.join("timeseries.csv");
         let mut ts = BufWriter::new(File::create(&path).map_err(|e| io_context(&path, e))?);
-        let names: Vec<String> = outputs.iter().map(|c| c.name(system)).collect();
-        let channels: Vec<Channel> = outputs.iter().map(|c| c.channel).collect();
         write!(ts, "time [s]")?;
-        for (c, n) in channels.iter().zip(&names) {
+        for (c, n) in summary.channels.iter().zip(&summary.names) {
             write!(ts, ",{n} [{}]", c.unit())?;
         }
         writeln!(ts)?;
@@ -143,24 +316,21 @@ impl RunWriter {
         }
         Ok(Self {
             dir: dir.to_path_buf(),
-            stats: vec![RunningStats::default(); channels.len()],
-            row: vec![0.0; channels.len()],
-            names,
-            channels,
-            detectors: vec![SlackSnapDetector::default(); system.lines.len()],
+            summary,
             timeseries: ts,
             snapshots,
-            snapshot_interval,
             scenario: scenario.display().to_string(),
-            next_snapshot: 0.0,
-            last_time: 0.0,
-            samples: 0,
         })
     }
 
     /// Time of the last sample written [s].
     pub fn last_time(&self) -> Real {
-        self.last_time
+        self.summary.last_time
+    }
+
+    /// The statistics, slack intervals and snap events so far.
+    pub fn summary(&self) -> &RunSummary {
+        &self.summary
     }
 
     /// What [`RunWriter::resume`] needs to go on from here: the length of every file written,
@@ -174,13 +344,7 @@ impl RunWriter {
             w.flush()?;
             e.u64(w.get_ref().metadata()?.len());
         }
-        e.u64(self.stats.len() as u64);
-        self.stats.iter().for_each(|s| s.encode(&mut e));
-        e.u64(self.detectors.len() as u64);
-        self.detectors.iter().for_each(|d| d.encode(&mut e));
-        e.f64(self.next_snapshot);
-        e.f64(self.last_time);
-        e.u64(self.samples);
+        self.summary.encode(&mut e);
         Ok(e.bytes)
     }
 
@@ -221,8 +385,6 @@ impl RunWriter {
         };
         let timeseries = open(dir.join("timeseries.csv"), get(&mut d)?)?;
         let count = get(&mut d)? as usize;
-        let names: Vec<String> = outputs.iter().map(|c| c.name(system)).collect();
-        let channels: Vec<Channel> = outputs.iter().map(|c| c.channel).collect();
         if count
             != if snapshot_interval.is_some() {
                 system.lines.len()
@@ -236,85 +398,46 @@ impl RunWriter {
         for l in &system.lines[..count] {
             let len = get(&mut d)?;
             snapshots.push(open(
-                dir.join("snapshots").join(format!("{}.csv", l.name)),
+                dir.join("snapshots")
+                    .join(format!("{}.csv", safe_file_name(&l.name))),
                 len,
             )?);
         }
-        let n = get(&mut d)? as usize;
-        if n != channels.len() {
-            return Err(bad("has another number of channels"));
-        }
-        let stats = (0..n)
-            .map(|_| RunningStats::decode(&mut d).map_err(|_| bad("is truncated")))
-            .collect::<Result<Vec<_>, _>>()?;
-        let n = get(&mut d)? as usize;
-        if n != system.lines.len() {
-            return Err(bad("has another number of lines"));
-        }
-        let detectors = (0..n)
-            .map(|_| SlackSnapDetector::decode(&mut d).map_err(|_| bad("is truncated")))
-            .collect::<Result<Vec<_>, _>>()?;
-        let next_snapshot = d.f64().map_err(|_| bad("is truncated"))?;
-        let last_time = d.f64().map_err(|_| bad("is truncated"))?;
-        let samples = get(&mut d)?;
+        let mut summary = RunSummary::new(system, outputs, snapshot_interval);
+        summary.decode(&mut d).map_err(bad)?;
         write_json(
             &dir.join("status.json"),
-            &json!({"complete": false, "state": "running", "scenario": scenario.display().to_string(), "resumed_at": last_time}),
+            &json!({"complete": false, "state": "running", "scenario": scenario.display().to_string(), "resumed_at": summary.last_time}),
         )?;
         Ok(Self {
             dir: dir.to_path_buf(),
-            row: vec![0.0; channels.len()],
-            stats,
-            names,
-            channels,
-            detectors,
+            summary,
             timeseries,
             snapshots,
-            snapshot_interval,
             scenario: scenario.display().to_string(),
-            next_snapshot,
-            last_time,
-            samples,
         })
     }
 
     fn write_sample(&mut self, view: &View<'_>) -> std::io::Result<()> {
-        let (system, time, ws) = (view.system, view.time, view.workspace);
-        for (i, c) in self.channels.iter().enumerate() {
-            self.row[i] = view.value(c);
-        }
-        write!(self.timeseries, "{time}")?;
-        for (v, s) in self.row.iter().zip(self.stats.iter_mut()) {
-            s.push(*v);
+        let snapshot = self.summary.sample(view);
+        write!(self.timeseries, "{}", view.time)?;
+        for v in self.summary.row() {
             write!(self.timeseries, ",{v}")?;
         }
         writeln!(self.timeseries)?;
         self.timeseries.flush()?;
-        for li in 0..system.lines.len() {
-            let lw = &ws.lines[li];
-            // The current mesh: a line on a winch changes its unstretched length.
-            let mesh = system.line_mesh(ws, li);
-            self.detectors[li].push(time, &lw.elements.tension, &lw.elements.strain, |e| {
-                0.5 * (mesh.arc_length(e) + mesh.arc_length(e + 1))
-            });
-        }
-        if let Some(interval) = self.snapshot_interval
-            && time >= self.next_snapshot - 1e-9 * interval
-        {
-            for li in 0..system.lines.len() {
+        if snapshot {
+            for li in 0..view.system.lines.len() {
                 let w = &mut self.snapshots[li];
                 for n in view.line_samples(li) {
                     let p = n.position;
                     writeln!(
                         w,
-                        "{time},{},{},{},{},{},{}",
-                        n.node, n.arc_length, p.x, p.y, p.z, n.tension
+                        "{},{},{},{},{},{},{}",
+                        view.time, n.node, n.arc_length, p.x, p.y, p.z, n.tension
                     )?;
                 }
                 w.flush()?;
-            }
-            while self.next_snapshot <= time + 1e-9 * interval {
-                self.next_snapshot += interval;
             }
         }
         Ok(())
@@ -329,59 +452,20 @@ impl RunWriter {
         error: Option<&str>,
         interrupted: bool,
     ) -> std::io::Result<()> {
-        let system = view.system;
         self.timeseries.flush()?;
         for s in &mut self.snapshots {
             s.flush()?;
         }
-        for d in &mut self.detectors {
-            d.finish(self.last_time);
-        }
+        self.summary.finish();
         let complete = error.is_none();
-        let channels: serde_json::Map<String, Value> = self
-            .names
-            .iter()
-            .zip(&self.stats)
-            .zip(&self.channels)
-            .map(|((n, s), c)| {
-                (n.clone(), json!({"unit": c.unit(), "min": s.min, "max": s.max, "mean": s.mean(), "std": s.std()}))
-            })
-            .collect();
-        let lines: serde_json::Map<String, Value> = system
-            .lines
-            .iter()
-            .zip(&self.detectors)
-            .map(|(l, d)| {
-                (
-                    l.name.clone(),
-                    json!({
-                        "slack_intervals": d.intervals.iter().map(|s| json!({"start": s.start, "end": s.end, "min_strain": s.min_strain})).collect::<Vec<_>>(),
-                        "snap_events": d.snaps.iter().map(|s| json!({
-                            "time": s.time, "peak_time": s.peak_time, "peak_tension": s.peak_tension,
-                            "location": s.location, "rise_rate": s.rise_rate})).collect::<Vec<_>>(),
-                    }),
-                )
-            })
-            .collect();
+        let last_time = self.summary.last_time;
         write_json(
             &self.dir.join("summary.json"),
-            &json!({
-                "complete": complete,
-                "error": error,
-                "end_time": self.last_time,
-                "samples": self.samples,
-                "channels": channels,
-                "lines": lines,
-                "definitions": {
-                    "slack": "some element of the line has strain ≤ 0",
-                    "snap": "a slack → taut transition; peak is the largest element tension until the tension falls again",
-                    "location": "unstretched arc length from end A [m] of the element carrying the peak",
-                },
-            }),
+            &self.summary.to_json(view.system, error),
         )?;
         write_json(
             &self.dir.join("final_state.json"),
-            &state_json(view, self.last_time),
+            &state_json(view, last_time),
         )?;
         write_json(
             &self.dir.join("status.json"),
@@ -389,7 +473,7 @@ impl RunWriter {
                 "complete": complete,
                 "state": if complete { "finished" } else if interrupted { "interrupted" } else { "stopped" },
                 "error": error,
-                "end_time": self.last_time,
+                "end_time": last_time,
                 "scenario": self.scenario,
             }),
         )
@@ -398,8 +482,6 @@ impl RunWriter {
 
 impl Observer for RunWriter {
     fn sample(&mut self, view: &View<'_>) -> Result<(), ObserverError> {
-        self.last_time = view.time;
-        self.samples += 1;
         self.write_sample(view).map_err(|e| {
             ObserverError(format!(
                 "cannot write the results in {}: {e}",
@@ -430,7 +512,10 @@ fn line_json(view: &View<'_>, li: usize, velocities: bool) -> Value {
         "end_a": end(false),
         "end_b": end(true),
     });
-    if matches!(line.kind, hawser::formulation::LineKind::Hermite(_)) {
+    if matches!(
+        line.discretisation,
+        hawser::formulation::Discretisation::Hermite(_)
+    ) {
         let n = line.mesh.elements();
         v["tangents"] = json!(
             (0..=n)

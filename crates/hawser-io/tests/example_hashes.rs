@@ -69,7 +69,10 @@ fn every_example_writes_the_recorded_results() {
     let mut lines = Vec::new();
     for path in &examples {
         let name = path.file_stem().unwrap().to_string_lossy().to_string();
-        let dir = std::env::temp_dir().join(format!("hawser_example_hashes_{name}"));
+        let dir = std::env::temp_dir().join(format!(
+            "hawser_example_hashes_{name}_{}",
+            std::process::id()
+        ));
         let _ = std::fs::remove_dir_all(&dir);
         common::run_example_briefly(path, &dir, 20, 5);
         for (file, h) in hashes_of(&dir) {

@@ -2,6 +2,7 @@
 
 pub mod build;
 pub mod diagnostics;
+pub mod overrides;
 pub mod schema;
 pub mod tables;
 

@@ -245,10 +245,10 @@ pub struct Modes {
 /// are modal coefficients, not linearised; compute the modes of [`modal_twin`] instead). `fe`
 /// and `hermite` lines, free points and free bodies are. Call it before linearising.
 pub fn supported(system: &System) -> Result<(), ModalError> {
-    match system.lines.iter().find(|l| l.dg.is_some()) {
+    match system.lines.iter().find(|l| l.dg().is_some()) {
         Some(l) => Err(ModalError::Unsupported {
             line: l.name.clone(),
-            formulation: l.kind.name(),
+            formulation: l.discretisation.name(),
         }),
         None => Ok(()),
     }

@@ -116,7 +116,7 @@ pub(crate) fn line_forces_at_rest(
         let lw = &mut ws.lines[li];
         line_forces(
             &l.mesh,
-            &l.kind,
+            &l.discretisation,
             &system.environment,
             0.0,
             &lw.position,
@@ -167,7 +167,7 @@ pub fn force_jacobian(
         let evaluate = |lw: &mut crate::system::LineWork, out: &mut Vec<Vec3>| {
             line_forces(
                 &l.mesh,
-                &l.kind,
+                &l.discretisation,
                 env,
                 0.0,
                 &lw.position,
