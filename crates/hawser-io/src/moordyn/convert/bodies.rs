@@ -52,6 +52,39 @@ pub(super) enum DeckBodyKind {
     Coupled,
 }
 
+/// A body of the scenario with its name, kind, motion and pose, and no mass, hydrodynamics or
+/// members yet (the deck's body and rod rows fill them in).
+pub(super) fn bare_body(
+    name: Spanned<String>,
+    kind: Spanned<BodyKindSpec>,
+    motion: Option<MotionSpec>,
+    position: Option<Spanned<[f64; 3]>>,
+    orientation: Option<Spanned<[f64; 3]>>,
+) -> BodySpec {
+    BodySpec {
+        name,
+        kind,
+        motion,
+        position,
+        orientation,
+        mass: None,
+        centre_of_gravity: None,
+        inertia: None,
+        displacement: None,
+        centre_of_buoyancy: None,
+        added_mass: None,
+        linear_drag: None,
+        quadratic_drag: None,
+        drag_coefficients: None,
+        drag_areas: None,
+        drag_speed: None,
+        hydrodynamic_centre: None,
+        members: Vec::new(),
+        thrust: None,
+        wind: None,
+    }
+}
+
 /// A body's name in the scenario: `B` and its MoorDyn ID.
 pub(super) fn body_name(id: &str) -> String {
     format!("B{id}")
@@ -343,28 +376,13 @@ pub(super) fn convert_bodies(
             },
         };
         let prescribed = spec_kind == BodyKindSpec::Prescribed;
-        let spec = BodySpec {
-            name: spanned(&t[0], body_name(&id)),
-            kind: spanned(&t[1], spec_kind),
+        let spec = bare_body(
+            spanned(&t[0], body_name(&id)),
+            spanned(&t[1], spec_kind),
             motion,
-            position: (!prescribed).then_some(position),
-            orientation: (!prescribed && rotated != [0.0; 3]).then_some(orientation),
-            mass: None,
-            centre_of_gravity: None,
-            inertia: None,
-            displacement: None,
-            centre_of_buoyancy: None,
-            added_mass: None,
-            linear_drag: None,
-            quadratic_drag: None,
-            drag_coefficients: None,
-            drag_areas: None,
-            drag_speed: None,
-            hydrodynamic_centre: None,
-            members: Vec::new(),
-            thrust: None,
-            wind: None,
-        };
+            (!prescribed).then_some(position),
+            (!prescribed && rotated != [0.0; 3]).then_some(orientation),
+        );
         let mut body = DeckBody {
             name: body_name(&id),
             kind,

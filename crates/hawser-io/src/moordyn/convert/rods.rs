@@ -18,7 +18,7 @@
 //!
 //! Lines attach to `R#A` and `R#B`: points of those names on the rod's body at its ends.
 
-use super::bodies::{DeckBody, DeckBodyKind, Part, body_name};
+use super::bodies::{DeckBody, DeckBodyKind, Part, bare_body, body_name};
 use super::{Converter, VesselFile, rigid_motion_spec, spanned};
 use crate::moordyn::deck::{Section, Token};
 use crate::scenario::schema::*;
@@ -338,28 +338,13 @@ fn convert_rod(
                 let prescribed = spec_kind == BodyKindSpec::Prescribed;
                 let name = rod_name(&id);
                 let pose = Spanned::new(t[3].span.start..t[5].span.end, a.into());
-                let mut spec = BodySpec {
-                    name: spanned(&t[0], name.clone()),
-                    kind: spanned(&t[2], spec_kind),
+                let mut spec = bare_body(
+                    spanned(&t[0], name.clone()),
+                    spanned(&t[2], spec_kind),
                     motion,
-                    position: (!prescribed).then_some(pose),
-                    orientation: None,
-                    mass: None,
-                    centre_of_gravity: None,
-                    inertia: None,
-                    displacement: None,
-                    centre_of_buoyancy: None,
-                    added_mass: None,
-                    linear_drag: None,
-                    quadratic_drag: None,
-                    drag_coefficients: None,
-                    drag_areas: None,
-                    drag_speed: None,
-                    hydrodynamic_centre: None,
-                    members: Vec::new(),
-                    thrust: None,
-                    wind: None,
-                };
+                    (!prescribed).then_some(pose),
+                    None,
+                );
                 spec.members.push(member(Vec3::zeros(), b - a));
                 let span = |k: usize| t[k].span.clone();
                 bodies.push(DeckBody {
