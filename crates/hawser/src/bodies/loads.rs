@@ -124,9 +124,15 @@ impl Body {
         let p = wet.centre;
         let rho = env.water_density;
         let buoyancy = rho * g * wet.volume * z;
-        force += buoyancy;
-        moment += wet.buoyancy_centre.cross(&buoyancy);
-        let mut at_p = Vec3::zeros();
+        // Buoyancy joins the loads at P when it acts there (the sum keeps the results of
+        // runs bit for bit as before hydrodynamic centres existed), else acts on its own.
+        let mut at_p = if wet.buoyancy_centre == p {
+            buoyancy
+        } else {
+            force += buoyancy;
+            moment += wet.buoyancy_centre.cross(&buoyancy);
+            Vec3::zeros()
+        };
         let f = wet.fraction;
         if f > 0.0 {
             let a = &self.added_mass;
