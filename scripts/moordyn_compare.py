@@ -43,6 +43,17 @@ What is compared
    the reference series WD0200_Chain_ZZP1_A1.txt (rows at simulation time
    t_ref + 10 s), are compared for simulation times >= 10 s.
 
+4. A free body: buoy_oc3.txt (a submerged buoy, MoorDyn's BODIES, on OC3's lines, pulled
+   by a fourth line from a coupled vessel point).  Statics after moordyn.Init with the deck's
+   legacy dynamic relaxation (ICgenDynamic 1, dtIC 100 s, threshIC 1e-6: MoorDyn's default
+   stationary solver leaves a free body where the deck puts it): body pose from
+   moordyn.GetBodyState, FairTen/AnchTen of every line; hawser `statics --json`.  Then the
+   vessel point in the OC3 surge (same samples and driving) for 300 s: FairTen of every line
+   and the body's x, z, pitch every 0.1 s.
+5. A free rod: rod_hanging.txt (MoorDyn's RodHanging test deck with coupled rope ends and 20
+   segments per rope), the same statics and surge of both coupled points; the rod's end A
+   from moordyn.GetRodNodePos.
+
 Outputs: a markdown summary (stdout), the MoorDyn numbers as JSON
 (tests/data/moordyn_reference.json by default), CSV series and SVG plots in
 docs/data and docs/img.
@@ -441,6 +452,109 @@ def case_surge(moordyn, hawser, decks_dir, tmp, segments, dtm):
     return cases, series20
 
 
+BODY_DECK = "buoy_oc3"
+ROD_DECK = "rod_hanging"
+
+
+def case_body(moordyn, hawser, decks_dir, tmp, deck_name=BODY_DECK, rod=False):
+    """A free body (buoy_oc3.txt: BODIES) or a free rod (rod_hanging.txt: RODS): statics
+    (MoorDyn's legacy dynamic relaxation, as the decks ask) and the coupled points surging
+    2 m / 10 s for 300 s (the same samples and driving as the OC3 surge).  Pose from
+    moordyn.GetBodyState (x, y, z and MoorDyn's Euler angles, R = R_x R_y R_z, in rad) or, for
+    the rod, the positions of its ends A and B (moordyn.GetRodNodePos); FairTen of every
+    line; the object's x, z (and the body's pitch) every 0.1 s."""
+    deck = os.path.join(decks_dir, deck_name + ".txt")
+    if not os.path.exists(deck):
+        return None
+    d = os.path.join(tmp, deck_name)
+    os.makedirs(d, exist_ok=True)
+    copy = os.path.join(d, deck_name + ".txt")
+    changes = write_copy(mb.read_deck(deck), copy)
+    ts, xs = surge_samples()
+    motion = os.path.join(d, "surge_motion.txt")
+    with open(motion, "w") as fh:
+        for t, x in zip(ts, xs):
+            fh.write("%.2f %.12g 0 0 0 0 0\n" % (t, x))
+    proc = hawser_run(hawser, copy, os.path.join(d, "hawser"), SURGE_DURATION, motion)
+    md = MD(moordyn, copy, os.path.join(d, "console.txt"))
+    md.init()
+    if rod:
+        obj = moordyn.GetRod(md.s, 1)
+        n = moordyn.GetRodN(obj)
+
+        def pose():
+            return list(moordyn.GetRodNodePos(obj, 0)) + list(moordyn.GetRodNodePos(obj, n))
+    else:
+        obj = moordyn.GetBody(md.s, 1)
+
+        def pose():
+            r, _ = moordyn.GetBodyState(obj)
+            return list(r)
+
+    static = {("rod_ends" if rod else "body_pose"): pose(),
+              "lines": {str(lid): {"fairlead_tension_N": md.fair(j), "anchor_tension_N": md.anch(j)}
+                        for j, lid in enumerate(md.ids)}}
+    nl = len(md.lines)
+    every = int(round(SAMPLE / SURGE_COUPLING))
+    times, ften, poses = [0.0], [[md.fair(j)] for j in range(nl)], [pose()]
+    for i in range(len(ts) - 1):
+        x = list(md.x0)
+        xd = [0.0] * len(x)
+        v = (xs[i + 1] - xs[i]) / SURGE_COUPLING
+        for k in range(len(md.cpl)):
+            x[3 * k] += xs[i]
+            xd[3 * k] = v
+        md.step(x, xd, ts[i], SURGE_COUPLING)
+        if (i + 1) % every == 0:
+            times.append(round((i + 1) * SURGE_COUPLING, 9))
+            for j in range(nl):
+                ften[j].append(md.fair(j))
+            poses.append(pose())
+    md.close()
+    hinfo = hawser_finish(*proc)
+    hs = hawser_statics(hawser, copy)
+    hts = read_timeseries(os.path.join(d, "hawser", "timeseries.csv"))
+    hmap = {key(t): i for i, t in enumerate(hts["time"])}
+    idx = [hmap[key(t)] for t in times]
+    name = "R1" if rod else "B1"
+    hb = hs["bodies"][name]
+    res = {
+        "deck": os.path.basename(deck), "deck_sha256": sha256(deck), "deck_copy_changes": changes,
+        "moordyn_log": log_lines(os.path.splitext(copy)[0] + ".log"),
+        # The deck writes no log: its dtM is the one MoorDyn steps with.
+        "moordyn_dtM_s": float(next(l.split()[0] for l in mb.read_deck(copy)
+                                    if len(l.split()) > 1 and l.split()[1].lower() == "dtm")),
+        "hawser": hinfo,
+        "static": {"moordyn": static,
+                   "hawser": {"position": hb["position"], "roll_pitch_yaw_deg": hb["roll_pitch_yaw_deg"],
+                              "lines": {lid: {"fairlead_tension_N": hs["lines"]["L" + lid]["end_b"]["tension"],
+                                              "anchor_tension_N": hs["lines"]["L" + lid]["end_a"]["tension"]}
+                                        for lid in static["lines"]}}},
+        "lines": {}, "body": {},
+    }
+    for j in range(nl):
+        name_ = "FairTen%d" % md.ids[j]
+        hv = [hts[name_][i] for i in idx]
+        res["lines"][name_] = {
+            "moordyn": {"all": mmm(window(times, ften[j], 0.0, SURGE_DURATION)),
+                        "steady": mmm(window(times, ften[j], *STEADY_WINDOW))},
+            "hawser": {"all": mmm(window(times, hv, 0.0, SURGE_DURATION)),
+                       "steady": mmm(window(times, hv, *STEADY_WINDOW))},
+        }
+    quantities = ((("x_m", name + ".x", 0), ("z_m", name + ".z", 2)) if rod else
+                  (("x_m", "Body1PX", 0), ("z_m", "Body1PZ", 2), ("pitch_deg", "Body1RY", 4)))
+    for q, col, k in quantities:
+        mv = [p[k] * (180.0 / math.pi if (k >= 3 and not rod) else 1.0) for p in poses]
+        hv = [hts[col][i] for i in idx]
+        res["body"][q] = {
+            "moordyn": {"all": mmm(window(times, mv, 0.0, SURGE_DURATION)),
+                        "steady": mmm(window(times, mv, *STEADY_WINDOW))},
+            "hawser": {"all": mmm(window(times, hv, 0.0, SURGE_DURATION)),
+                       "steady": mmm(window(times, hv, *STEADY_WINDOW))},
+        }
+    return res
+
+
 def case_chain(moordyn, hawser, decks_dir, tmp):
     deck = os.path.join(decks_dir, "WD0200_Chain.txt")
     motion = os.path.join(decks_dir, "ZZP1_A1.txt")
@@ -593,7 +707,7 @@ def pct(x):
     return "%+.3f %%" % (100.0 * x)
 
 
-def markdown(st, surge, chain, md_version):
+def markdown(st, surge, chain, md_version, body=None, rod=None):
     o = []
     o.append("## hawser vs MoorDyn %s\n" % md_version)
     o.append("### Statics (|end-node net force|, MoorDyn FairTen/AnchTen convention)\n")
@@ -624,6 +738,44 @@ def markdown(st, surge, chain, md_version):
                     cells += ["%.1f / %.1f" % (m[q] / 1e3, h[q] / 1e3), pct(rel(h[q], m[q]))]
                 o.append("| %s | %s | %s | %s | %s |" % (segs, dts, name, w, " | ".join(cells)))
     o.append("")
+    for case, title in ((body, "A free body"), (rod, "A free rod")):
+        if not case:
+            continue
+        o.append("### %s: %s, statics and the coupled points in a 2 m / 10 s surge\n" % (title, case["deck"]))
+        ms, hs_ = case["static"]["moordyn"], case["static"]["hawser"]
+        if "body_pose" in ms:
+            mp, hp = ms["body_pose"], hs_["position"] + [math.radians(a) for a in hs_["roll_pitch_yaw_deg"]]
+            names = ("x [m]", "y [m]", "z [m]", "roll [deg]", "pitch [deg]", "yaw [deg]")
+        else:
+            mp, hp = ms["rod_ends"][:3], hs_["position"]
+            names = ("end A x [m]", "end A y [m]", "end A z [m]")
+        o.append("| pose | MoorDyn | hawser | diff |")
+        o.append("|---|---:|---:|---:|")
+        for k, q in enumerate(names):
+            f = 180.0 / math.pi if k >= 3 else 1.0
+            o.append("| %s | %.5f | %.5f | %+.5f |" % (q, mp[k] * f, hp[k] * f, (hp[k] - mp[k]) * f))
+        o.append("")
+        o.append("| line | fairlead MoorDyn / hawser [kN] | diff | anchor MoorDyn / hawser [kN] | diff |")
+        o.append("|---|---|---:|---|---:|")
+        for lid, m in ms["lines"].items():
+            h = hs_["lines"][lid]
+            o.append("| %s | %.2f / %.2f | %s | %.2f / %.2f | %s |" % (
+                lid, m["fairlead_tension_N"] / 1e3, h["fairlead_tension_N"] / 1e3,
+                pct(rel(h["fairlead_tension_N"], m["fairlead_tension_N"])),
+                m["anchor_tension_N"] / 1e3, h["anchor_tension_N"] / 1e3,
+                pct(rel(h["anchor_tension_N"], m["anchor_tension_N"]))))
+        o.append("")
+        o.append("| channel | window | min MD / hawser | diff | max MD / hawser | diff | mean MD / hawser | diff |")
+        o.append("|---|---|---:|---:|---:|---:|---:|---:|")
+        for name, L in list(case["lines"].items()) + list(case["body"].items()):
+            scale = 1e3 if name.startswith("FairTen") else 1.0
+            for w in ("all", "steady"):
+                m, h = L["moordyn"][w], L["hawser"][w]
+                cells = []
+                for q in ("min_N", "max_N", "mean_N"):
+                    cells += ["%.3f / %.3f" % (m[q] / scale, h[q] / scale), pct(rel(h[q], m[q]))]
+                o.append("| %s | %s | %s |" % (name, w, " | ".join(cells)))
+        o.append("")
     o.append("### WD0200 chain, ZZP1_A1 heave, simulation times 10-30 s "
              "(reference = WD0200_Chain_ZZP1_A1.txt)\n")
     o.append("| tension | pair | RMS [kN] | max abs [kN] | mean [kN] | RMS / ref range | max / ref range |")
@@ -661,7 +813,7 @@ def markdown(st, surge, chain, md_version):
     return "\n".join(o)
 
 
-def write_outputs(a, st, surge, series20, chain, md_version):
+def write_outputs(a, st, surge, series20, chain, md_version, body=None, rod=None):
     os.makedirs(os.path.dirname(a.json), exist_ok=True)
     ref = {
         "generator": "scripts/moordyn_compare.py",
@@ -717,6 +869,37 @@ def write_outputs(a, st, surge, series20, chain, md_version):
                                  c["moordyn_fairten_channel_vs_api_max_rel_diff"],
                              "fairleads": {n: L["moordyn"] for n, L in c["lines"].items()}}
                       for segs, c in surge.items()},
+        },
+        "free_body": None if not body else {
+            "deck": body["deck"], "deck_sha256": body["deck_sha256"],
+            "what": "buoy_oc3.txt: statics after moordyn.Init (MoorDyn's legacy dynamic "
+                    "relaxation, as the deck's options ask); body_pose = moordyn.GetBodyState: "
+                    "x, y, z [m] and MoorDyn's Euler angles (R = R_x R_y R_z) [rad]. Surge: the "
+                    "coupled vessel point at x = x0 + A sin(2 pi t / T), driven as oc3_surge; "
+                    "FairTen of every line and the body's x, z [m] and pitch [deg] every 0.1 s",
+            "settings": {"amplitude_m": SURGE_AMPLITUDE, "period_s": SURGE_PERIOD,
+                         "duration_s": SURGE_DURATION, "coupling_step_s": SURGE_COUPLING,
+                         "sampled_every_s": SAMPLE, "dtM_s": body["moordyn_dtM_s"],
+                         "windows": {"all": [0.0, SURGE_DURATION], "steady": list(STEADY_WINDOW)}},
+            "moordyn_log": body["moordyn_log"],
+            "static": body["static"]["moordyn"],
+            "surge": {"fairleads": {n: L["moordyn"] for n, L in body["lines"].items()},
+                      "body": {n: L["moordyn"] for n, L in body["body"].items()}},
+        },
+        "free_rod": None if not rod else {
+            "deck": rod["deck"], "deck_sha256": rod["deck_sha256"],
+            "what": "rod_hanging.txt: statics after moordyn.Init (MoorDyn's legacy dynamic "
+                    "relaxation, as the deck's options ask); rod_ends = moordyn.GetRodNodePos of "
+                    "end A then end B [m]. Surge: both coupled points at x = x0 + A sin(2 pi t / "
+                    "T), driven as oc3_surge; FairTen of every line and end A's x, z [m] every "
+                    "0.1 s",
+            "settings": {"amplitude_m": SURGE_AMPLITUDE, "period_s": SURGE_PERIOD,
+                         "duration_s": SURGE_DURATION, "coupling_step_s": SURGE_COUPLING,
+                         "sampled_every_s": SAMPLE, "dtM_s": rod["moordyn_dtM_s"],
+                         "windows": {"all": [0.0, SURGE_DURATION], "steady": list(STEADY_WINDOW)}},
+            "static": rod["static"]["moordyn"],
+            "surge": {"fairleads": {n: L["moordyn"] for n, L in rod["lines"].items()},
+                      "rod_end_a": {n: L["moordyn"] for n, L in rod["body"].items()}},
         },
         "chain_wd0200_zzp1_a1": {
             "files": chain["files"],
@@ -801,11 +984,15 @@ def main(argv=None):
         surge, series20 = case_surge(moordyn, a.hawser, a.decks, tmp, segments, dtm)
         print("WD0200 chain, ZZP1_A1 ...", file=sys.stderr)
         chain = case_chain(moordyn, a.hawser, a.decks, tmp)
-        files = write_outputs(a, st, surge, series20, chain, md_version)
-        print(markdown(st, surge, chain, md_version))
+        print("free body (%s) ..." % BODY_DECK, file=sys.stderr)
+        body = case_body(moordyn, a.hawser, a.decks, tmp)
+        print("free rod (%s) ..." % ROD_DECK, file=sys.stderr)
+        rod = case_body(moordyn, a.hawser, a.decks, tmp, ROD_DECK, rod=True)
+        files = write_outputs(a, st, surge, series20, chain, md_version, body, rod)
+        print(markdown(st, surge, chain, md_version, body, rod))
         full = os.path.join(tmp, "comparison_full.json")
         with open(full, "w") as fh:
-            json.dump({"statics": st, "surge": surge,
+            json.dump({"statics": st, "surge": surge, "body": body, "rod": rod,
                        "chain": {k: v for k, v in chain.items() if k not in ("rows",)}}, fh, indent=1)
         print("\nwrote: %s" % ", ".join(os.path.relpath(f, ROOT) for f in files), file=sys.stderr)
         if a.keep_tmp:

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # hawser vs MoorDyn (MoorDyn-C Python bindings) on the public MoorDyn decks:
 # statics of every deck, OC3 surge at 20/40/80 segments, WD0200 chain under
-# the ZZP1_A1 heave against MoorDyn and the reference series.
+# the ZZP1_A1 heave against MoorDyn and the reference series, a free body
+# (buoy_oc3.txt) in statics and in a surge of its vessel point.
 #
 # Usage: scripts/moordyn_compare.sh [moordyn_compare.py options...]
 #   e.g. --segments 20 (skip the refined OC3 runs), --keep-tmp

@@ -1,16 +1,18 @@
 //! `hawser modes`: natural frequencies and mode shapes about the static state, the stiffness
-//! the lines offer their fixed and prescribed points, and the resonance report.
+//! the lines offer their fixed and prescribed points and every body, and the resonance report.
 //!
 //! Files written into `--out DIR`: `modes.csv` (mode, frequency, period, label),
 //! `shapes_<line>.csv` per line (every mode's nodal displacements, scaled so that the largest
-//! nodal displacement of the mode over the whole system is 1), `shapes_points.csv` for free
-//! points, and `modes.json` (what `--json` prints).
+//! displacement of the mode over the whole system is 1), `shapes_points.csv` for free points,
+//! `shapes_bodies.csv` for free bodies (origin displacement and rotation), and `modes.json`
+//! (what `--json` prints). A model with `dg` lines is analysed through its hermite twin
+//! ([`hawser_io::modes::modal_model`]), which the command says.
 
 use anyhow::{Context, Result};
 use hawser::analysis::resonance::ResonanceCheck;
 use hawser::math::{Real, Vec3};
 use hawser::system::System;
-use hawser_io::modes::{ModalAnalysis, point_kind};
+use hawser_io::modes::{ModalAnalysis, body_kind, point_kind};
 use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -48,7 +50,11 @@ pub fn run(args: &ModesArgs) -> Result<ExitCode> {
     let Some(loaded) = super::load(&args.file) else {
         return Ok(ExitCode::from(2));
     };
-    let system = super::system_of(&loaded.model)?;
+    let (model, notes) = hawser_io::modes::modal_model(&loaded.model);
+    for n in &notes {
+        eprintln!("note: {n}");
+    }
+    let system = super::system_of(&model)?;
     let analysis = match ModalAnalysis::compute(&system, args.count, args.margin / 100.0) {
         Ok(a) => a,
         Err(e) => {
@@ -85,6 +91,20 @@ pub fn run(args: &ModesArgs) -> Result<ExitCode> {
             r.nearest_mode + 1,
             r.natural_frequency,
             modes.modes[r.nearest_mode].label.text
+        );
+    }
+    if let Some(c) = analysis.spectrum.as_ref().filter(|c| c.warning()) {
+        eprintln!(
+            "warning: {} mode(s) inside the band holding {} % of the wave energy ({:.4}–{:.4} Hz): {}",
+            c.inside.len(),
+            100.0 * c.band.fraction,
+            c.band.low,
+            c.band.high,
+            c.inside
+                .iter()
+                .map(|&i| format!("{} ({})", i + 1, modes.modes[i].label.text))
+                .collect::<Vec<_>>()
+                .join(", ")
         );
     }
     Ok(ExitCode::SUCCESS)
@@ -153,9 +173,23 @@ fn table(system: &System, analysis: &ModalAnalysis) -> String {
             ));
         }
     }
+    for b in &analysis.body_stiffness {
+        line(format!(
+            "  body {} ({}): 6×6 mooring stiffness about its origin [N/m, N/rad; N·m/m, N·m/rad] \
+             over x, y, z, rotations about x, y, z (global axes), lines relaxed:",
+            system.bodies[b.body].body.name,
+            body_kind(system, b.body)
+        ));
+        for r in 0..6 {
+            let row: Vec<String> = (0..6)
+                .map(|c| format!("{:>13.5e}", b.matrix[(r, c)]))
+                .collect();
+            line(format!("    [{} ]", row.join(" ")));
+        }
+    }
     line(String::new());
     if report.is_empty() {
-        line("resonance: no periodic excitation in the scenario (prescribed sinusoids and orbits are checked)".into());
+        line("resonance: no periodic excitation in the scenario (prescribed sinusoids, orbits and waves are checked)".into());
     } else {
         line(format!("resonance (margin {:.3} %):", margin * 100.0));
         for r in report {
@@ -177,6 +211,24 @@ fn table(system: &System, analysis: &ModalAnalysis) -> String {
                 verdict
             ));
         }
+    }
+    if let Some(c) = &analysis.spectrum {
+        let verdict = if c.warning() {
+            let list: Vec<String> = c.inside.iter().map(|i| (i + 1).to_string()).collect();
+            format!("WARNING: modes {} inside", list.join(", "))
+        } else if !c.covered {
+            "not covered: the band reaches above the computed modes, ask for more with --count"
+                .to_string()
+        } else {
+            "clear: no computed mode inside".to_string()
+        };
+        line(format!(
+            "  sea band holding {} % of the wave energy: {:.4}–{:.4} Hz — {}",
+            100.0 * c.band.fraction,
+            c.band.low,
+            c.band.high,
+            verdict
+        ));
     }
     s.trim_end().to_string()
 }
@@ -231,6 +283,26 @@ fn write_files(
             for (i, &p) in shapes.points.iter().enumerate() {
                 let at = format!("{},{}", k + 1, system.points[p].name);
                 shape_row(&mut w, &at, &shapes.point_positions[i], &u[i])?;
+            }
+        }
+        w.flush()?;
+    }
+    if !shapes.bodies.is_empty() {
+        let mut w = create("shapes_bodies.csv")?;
+        writeln!(
+            w,
+            "mode,body,x [m],y [m],z [m],ux [-],uy [-],uz [-],rx [rad/m],ry [rad/m],rz [rad/m]"
+        )?;
+        for (k, u) in shapes.body_motions.iter().enumerate() {
+            for (i, &b) in shapes.bodies.iter().enumerate() {
+                let at = format!("{},{}", k + 1, system.bodies[b].body.name);
+                let (d, th) = u[i];
+                let r = shapes.body_positions[i];
+                writeln!(
+                    w,
+                    "{at},{},{},{},{},{},{},{},{},{}",
+                    r.x, r.y, r.z, d.x, d.y, d.z, th.x, th.y, th.z
+                )?;
             }
         }
         w.flush()?;

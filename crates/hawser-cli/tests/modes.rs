@@ -11,17 +11,18 @@ fn hawser(args: &[&str]) -> std::process::Output {
         .expect("run hawser")
 }
 
-#[test]
-fn modes_reports_frequencies_stiffness_and_resonance_and_writes_shapes() {
+/// `hawser modes FILE --count N --json --out DIR` (FILE relative to the repository root, DIR a
+/// fresh temporary folder named after `tag`): the JSON document and the folder.
+fn modes_json(file: &str, count: usize, tag: &str) -> (serde_json::Value, PathBuf) {
     let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../..");
-    let scenario = root.join("examples/oc3_surge.toml");
-    let dir = std::env::temp_dir().join(format!("hawser-modes-{}", std::process::id()));
+    let scenario = root.join(file);
+    let dir = std::env::temp_dir().join(format!("hawser-{tag}-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     let out = hawser(&[
         "modes",
         scenario.to_str().unwrap(),
         "--count",
-        "12",
+        &count.to_string(),
         "--json",
         "--out",
         dir.to_str().unwrap(),
@@ -31,7 +32,16 @@ fn modes_reports_frequencies_stiffness_and_resonance_and_writes_shapes() {
         "{}",
         String::from_utf8_lossy(&out.stderr)
     );
-    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    (serde_json::from_slice(&out.stdout).unwrap(), dir)
+}
+
+#[test]
+fn modes_reports_frequencies_stiffness_and_resonance_and_writes_shapes() {
+    let file = "examples/oc3_surge.toml";
+    let (v, dir) = modes_json(file, 12, "modes");
+    let scenario = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("../..")
+        .join(file);
     // 3 lines × 19 interior nodes × 3 translations.
     assert_eq!(v["degrees_of_freedom"], 171);
     let modes = v["modes"].as_array().unwrap();
@@ -107,5 +117,42 @@ fn modes_reports_frequencies_stiffness_and_resonance_and_writes_shapes() {
     // Bad option: exit code 2.
     let out = hawser(&["modes", scenario.to_str().unwrap(), "--margin", "150"]);
     assert_eq!(out.status.code(), Some(2));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// A free body on four lines (the MoorDyn test deck `buoy_oc3.txt`): the body's six degrees of
+/// freedom join the modes (labels name it, its energy share is reported), its 6×6 mooring
+/// stiffness is in the JSON, and `--out` writes `shapes_bodies.csv`.
+#[test]
+fn modes_of_a_free_body_give_its_stiffness_and_shapes() {
+    let (v, dir) = modes_json("tests/data/moordyn/buoy_oc3.txt", 8, "body-modes");
+    // 4 lines × 19 interior nodes × 3, and the body's 6.
+    assert_eq!(v["degrees_of_freedom"], 4 * 19 * 3 + 6);
+    let modes = v["modes"].as_array().unwrap();
+    // The lowest modes are the body's on its mooring (surge, sway, yaw: tens of seconds).
+    assert!(
+        modes
+            .iter()
+            .any(|m| m["label"].as_str().unwrap().contains("mode of body B1")),
+        "{modes:#?}"
+    );
+    for m in modes {
+        let share = &m["kinetic_energy_share"];
+        let total: f64 = ["lines", "points", "bodies"]
+            .iter()
+            .flat_map(|k| share[k].as_object().unwrap().values())
+            .map(|s| s.as_f64().unwrap())
+            .sum();
+        assert!((total - 1.0).abs() < 1e-9, "energy shares sum to {total}");
+    }
+    let k = &v["body_stiffness"]["B1"];
+    assert_eq!(k["kind"], "free");
+    let k = k["matrix_6x6"].as_array().unwrap();
+    let entry = |i: usize, j: usize| k[i][j].as_f64().unwrap();
+    // A moored body resists translation in every direction.
+    assert!(entry(0, 0) > 0.0 && entry(1, 1) > 0.0 && entry(2, 2) > 0.0);
+    let csv = std::fs::read_to_string(dir.join("shapes_bodies.csv")).unwrap();
+    assert!(csv.starts_with("mode,body,x [m]"));
+    assert_eq!(csv.lines().count(), 1 + 8);
     let _ = std::fs::remove_dir_all(&dir);
 }

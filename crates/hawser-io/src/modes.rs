@@ -1,13 +1,15 @@
 //! The modal analysis of `hawser modes` and of the Python package's `Scenario.modes()`: the
 //! static equilibrium, the linearisation about it, the natural modes, the stiffness the lines
-//! offer their fixed and prescribed points, and the resonance report; as data and as the JSON
-//! document `modes.json` holds.
+//! offer their fixed and prescribed points and every body, and the resonance report (with the
+//! modes inside the sea's band); as data and as the JSON document `modes.json` holds.
 
 use hawser::analysis::modes::{EigenMethod, ModalOptions, ModeOwner, Modes, natural_modes};
-use hawser::analysis::resonance::{ResonanceCheck, excitations, resonance_report};
-use hawser::linearise::{ConnectionStiffness, Linearisation, LinearisationOptions};
+use hawser::analysis::resonance::{
+    ResonanceCheck, SpectrumCheck, excitations, resonance_report, spectrum_report, wave_band,
+};
+use hawser::linearise::{BodyStiffness, ConnectionStiffness, Linearisation, LinearisationOptions};
 use hawser::math::{Real, Vec3};
-use hawser::model::PointKind;
+use hawser::model::{BodyKind, Model, PointKind};
 use hawser::statics::{StaticOptions, StaticSolution};
 use hawser::system::System;
 use serde_json::{Value, json};
@@ -36,8 +38,12 @@ pub struct ModalAnalysis {
     pub modes: Modes,
     /// The stiffness at the fixed and prescribed points, free points and nodes relaxed.
     pub stiffness: ConnectionStiffness,
+    /// The 6×6 mooring stiffness of every body with lines, everything else relaxed.
+    pub body_stiffness: Vec<BodyStiffness>,
     /// The scenario's periodic excitations against the natural frequencies.
     pub resonance: Vec<ResonanceCheck>,
+    /// The modes inside the band holding 90 % of the wave energy (`None` in calm water).
+    pub spectrum: Option<SpectrumCheck>,
     /// Resonance warning margin [-] (a fraction of the natural frequency).
     pub margin: Real,
     /// Wall times of the stages.
@@ -58,7 +64,44 @@ pub struct ModeShapes {
     pub point_positions: Vec<Vec3>,
     /// Per mode, the displacement [-] of each free point, scaled as the lines'.
     pub point_displacements: Vec<Vec<Vec3>>,
+    /// The free bodies (indices into the model's bodies).
+    pub bodies: Vec<usize>,
+    /// Static position [m] of each free body's origin.
+    pub body_positions: Vec<Vec3>,
+    /// Per mode, each free body's origin displacement [-] (scaled as the lines') and small
+    /// rotation about the global axes [rad per the scale's metre].
+    pub body_motions: Vec<Vec<(Vec3, Vec3)>>,
 }
+
+/// The model whose modes `hawser modes` computes for `model`: `model` itself, or, when it has
+/// `dg` lines, its hermite twin ([`hawser::analysis::modes::modal_twin`]), with a note per
+/// replaced line saying so.
+pub fn modal_model(model: &Model) -> (std::borrow::Cow<'_, Model>, Vec<String>) {
+    match hawser::analysis::modes::modal_twin(model) {
+        None => (std::borrow::Cow::Borrowed(model), Vec::new()),
+        Some(twin) => {
+            let notes = model
+                .lines
+                .iter()
+                .zip(&twin.lines)
+                .filter(|(l, t)| l.formulation != t.formulation)
+                .map(|(l, t)| {
+                    format!(
+                        "line {} (dg, {} elements) is linearised through its hermite twin ({} \
+                         cubic elements over the same sections; docs/modes.md)",
+                        l.name,
+                        l.elements(),
+                        t.elements()
+                    )
+                })
+                .collect();
+            (std::borrow::Cow::Owned(twin), notes)
+        }
+    }
+}
+
+/// The fraction of the wave variance inside the band the resonance report checks [-].
+pub const WAVE_ENERGY_FRACTION: Real = 0.9;
 
 impl ModalAnalysis {
     /// Solves the statics of `system`, linearises about them, finds the lowest `count`
@@ -89,13 +132,17 @@ impl ModalAnalysis {
         let modes = natural_modes(system, &linearisation, &options).map_err(|e| e.to_string())?;
         let modes_time = t.elapsed().as_secs_f64();
         let t = Instant::now();
+        let singular = |s| {
+            format!(
+                "the stiffness is singular at {}: a line or joint there has no stiffness (slack, \
+                 or an unloaded free point); check the static state",
+                system.singular_location(s)
+            )
+        };
         let stiffness =
-            hawser::linearise::connection_stiffness(system, &linearisation).map_err(|s| {
-                format!(
-                    "the stiffness is singular at {:?}",
-                    system.singular_location(s)
-                )
-            })?;
+            hawser::linearise::connection_stiffness(system, &linearisation).map_err(singular)?;
+        let body_stiffness =
+            hawser::linearise::body_stiffness(system, &linearisation).map_err(singular)?;
         let timing = ModalTiming {
             statics: statics_time,
             linearisation: linearisation_time,
@@ -103,12 +150,16 @@ impl ModalAnalysis {
             stiffness: t.elapsed().as_secs_f64(),
         };
         let resonance = resonance_report(&excitations(system), &modes, margin);
+        let spectrum = wave_band(&system.environment.waves, WAVE_ENERGY_FRACTION)
+            .map(|band| spectrum_report(&band, &modes));
         Ok(Self {
             statics,
             linearisation,
             modes,
             stiffness,
+            body_stiffness,
             resonance,
+            spectrum,
             margin,
             timing,
         })
@@ -137,7 +188,7 @@ impl ModalAnalysis {
         system.gather_lines(&lin.state, &mut ws);
         let scale: Vec<Real> = modes
             .iter()
-            .map(|m| 1.0 / m.largest_displacement().max(Real::MIN_POSITIVE))
+            .map(|m| 1.0 / m.largest_displacement(&lin.dofs).max(Real::MIN_POSITIVE))
             .collect();
         let line_positions = system
             .lines
@@ -163,7 +214,23 @@ impl ModalAnalysis {
             })
             .collect();
         let points = system.free_points.clone();
+        let bodies = system.free_bodies.clone();
         ModeShapes {
+            body_positions: bodies.iter().map(|&b| ws.bodies[b].position).collect(),
+            body_motions: modes
+                .iter()
+                .zip(&scale)
+                .map(|(m, s)| {
+                    bodies
+                        .iter()
+                        .map(|&b| {
+                            let (u, th) = m.body_motion(&lin.dofs, b).unwrap_or_default();
+                            (u * *s, th * *s)
+                        })
+                        .collect()
+                })
+                .collect(),
+            bodies,
             point_positions: points.iter().map(|&p| ws.points[p].position).collect(),
             point_displacements: modes
                 .iter()
@@ -187,6 +254,7 @@ impl ModalAnalysis {
         let owner_name = |o: &ModeOwner| match *o {
             ModeOwner::Line(l) => system.lines[l].name.clone(),
             ModeOwner::Point(p) => system.points[p].name.clone(),
+            ModeOwner::Body(b) => system.bodies[b].body.name.clone(),
         };
         let mode_list: Vec<Value> = modes
             .modes
@@ -204,6 +272,11 @@ impl ModalAnalysis {
                     .iter()
                     .map(|&p| (system.points[p].name.clone(), json!(m.point_shares[p])))
                     .collect();
+                let bodies: serde_json::Map<String, Value> = system
+                    .free_bodies
+                    .iter()
+                    .map(|&b| (system.bodies[b].body.name.clone(), json!(m.body_shares[b])))
+                    .collect();
                 let directions: serde_json::Map<String, Value> = m
                     .direction_shares
                     .iter()
@@ -217,7 +290,7 @@ impl ModalAnalysis {
                     "label": m.label.text,
                     "direction": m.label.direction.name(),
                     "owners": m.label.owners.iter().map(owner_name).collect::<Vec<_>>(),
-                    "kinetic_energy_share": {"lines": lines, "points": points, "directions": directions},
+                    "kinetic_energy_share": {"lines": lines, "points": points, "bodies": bodies, "directions": directions},
                 })
             })
             .collect();
@@ -237,6 +310,30 @@ impl ModalAnalysis {
                 )
             })
             .collect();
+        let body_stiffness: serde_json::Map<String, Value> = self
+            .body_stiffness
+            .iter()
+            .map(|b| {
+                let rows: Vec<Vec<Real>> = (0..6)
+                    .map(|r| (0..6).map(|c| b.matrix[(r, c)]).collect())
+                    .collect();
+                (
+                    system.bodies[b.body].body.name.clone(),
+                    json!({"kind": body_kind(system, b.body), "matrix_6x6": rows}),
+                )
+            })
+            .collect();
+        let spectrum = self.spectrum.as_ref().map(|c| {
+            json!({
+                "energy_fraction": c.band.fraction,
+                "low_hz": c.band.low,
+                "high_hz": c.band.high,
+                "peak_hz": c.band.peak,
+                "modes_inside": c.inside.iter().map(|i| i + 1).collect::<Vec<_>>(),
+                "warning": c.warning(),
+                "covered": c.covered,
+            })
+        });
         let checks: Vec<Value> = self
             .resonance
             .iter()
@@ -261,7 +358,8 @@ impl ModalAnalysis {
             "stiffness_asymmetry": modes.stiffness_asymmetry,
             "modes": mode_list,
             "stiffness": stiff,
-            "resonance": {"margin": self.margin, "checks": checks},
+            "body_stiffness": body_stiffness,
+            "resonance": {"margin": self.margin, "checks": checks, "wave_band": spectrum},
             "timing_s": {
                 "statics": timing.statics,
                 "linearisation": timing.linearisation,
@@ -269,6 +367,15 @@ impl ModalAnalysis {
                 "stiffness": timing.stiffness,
             },
         })
+    }
+}
+
+/// What body `b` is, in words: free, prescribed or coupled.
+pub fn body_kind(system: &System, b: usize) -> &'static str {
+    match system.bodies[b].body.kind {
+        BodyKind::Free => "free",
+        BodyKind::Prescribed(_) => "prescribed",
+        BodyKind::Coupled => "coupled",
     }
 }
 

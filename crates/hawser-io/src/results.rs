@@ -789,7 +789,9 @@ pub fn state_json(view: &View<'_>, time: Real) -> Value {
 }
 
 /// The static solution as JSON: per line node positions, node tensions and the force each end
-/// exerts on its attachment; per point its position.
+/// exerts on its attachment; per point its position; per body (when there are any) the
+/// position of its origin, its roll, pitch and yaw [deg] (R = R_z R_y R_x) and the lines' load
+/// on it [N, N·m about its origin].
 /// A steady tow adds `tow_velocity` [m/s], the velocity of the frame it was solved in.
 pub fn statics_json(system: &System, ws: &Workspace) -> Value {
     let view = View {
@@ -802,6 +804,27 @@ pub fn statics_json(system: &System, ws: &Workspace) -> Value {
     };
     let mut v =
         json!({"lines": lines_json(&view, false), "points": points_json(system, ws, false)});
+    if !system.bodies.is_empty() {
+        let bodies: serde_json::Map<String, Value> = system
+            .bodies
+            .iter()
+            .enumerate()
+            .map(|(b, body)| {
+                let k = &ws.bodies[b];
+                let (roll, pitch, yaw) = k.orientation.euler_angles();
+                let x = k.position;
+                (
+                    body.body.name.clone(),
+                    json!({
+                        "position": [x.x, x.y, x.z],
+                        "roll_pitch_yaw_deg": [roll.to_degrees(), pitch.to_degrees(), yaw.to_degrees()],
+                        "line_load": view.body_line_load(b),
+                    }),
+                )
+            })
+            .collect();
+        v["bodies"] = Value::Object(bodies);
+    }
     if system.tow_velocity != hawser::math::Vec3::zeros() {
         let t = system.tow_velocity;
         v["tow_velocity"] = json!([t.x, t.y, t.z]);

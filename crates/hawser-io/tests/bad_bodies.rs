@@ -80,7 +80,7 @@ fn missing_mass() {
     let msg = error(&text);
     assert_located(
         &msg,
-        line_of(&text, "[[bodies]]"),
+        line_of(&text, "type = \"free\""),
         "bodies[0].mass",
         true,
         true,
@@ -623,4 +623,38 @@ fn documented_prescribed_example_is_valid() {
         k => panic!("{k:?}"),
     };
     assert!((k.velocity.norm() - 12.0 * 1852.0 / 3600.0).abs() < 1e-9);
+}
+
+/// The `[[bodies.members]]` example of docs/scenario.md is valid and reaches the model.
+#[test]
+fn documented_member_example_is_valid() {
+    let doc = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../../docs/scenario.md"),
+    )
+    .expect("docs/scenario.md");
+    let start = doc.find("# A rod of 20 m").expect("the member example");
+    let example = &doc[start..start + doc[start..].find("```").unwrap()];
+    let lines_only = &BASE[..BASE.find("[[bodies]]").unwrap()];
+    let text = format!("{lines_only}\n{example}");
+    let s = scenario::parse(Path::new(FILE), &text).unwrap_or_else(|e| panic!("{e}"));
+    let m = &s.model.bodies[0].members[0];
+    assert_eq!((m.diameter, m.segments, m.end_added_mass), (0.25, 4, 1.0));
+}
+
+/// A member with its ends at one place, no segment or a negative coefficient is refused at
+/// its key.
+#[test]
+fn bad_members() {
+    let base = BASE.replace(
+        "[[bodies]]",
+        "[[bodies]]\nmembers = [{ end_a = [0.0, 0.0, 0.0], end_b = [0.0, 0.0, 0.0], diameter = 0.2, segments = 0, end_drag = -1.0 }]",
+    );
+    let msg = error(&base);
+    for needle in [
+        "a member's ends are at the same place",
+        "a member needs at least one segment",
+        "bodies[0].members[0].end_drag",
+    ] {
+        assert!(msg.contains(needle), "{needle}:\n{msg}");
+    }
 }

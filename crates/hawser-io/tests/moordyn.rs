@@ -16,11 +16,13 @@ fn deck_text(name: &str) -> String {
     std::fs::read_to_string(deck_dir().join(name)).expect("deck present")
 }
 
-const DECKS: [&str; 4] = [
+const DECKS: [&str; 6] = [
     "oc3_lines.txt",
     "WD0050_Chain.txt",
     "WD0200_Chain.txt",
     "WD0600_Chain.txt",
+    "buoy_oc3.txt",
+    "rod_hanging.txt",
 ];
 
 /// Parses deck text as if it were `deck.txt` beside the shared decks.
@@ -220,7 +222,13 @@ fn unknown_option_is_reported_not_fatal() {
 fn output_channel_names() {
     use hawser_io::moordyn::convert::output_channel;
     let seg = |l: &str| (l == "L1").then_some(20);
-    let ok = |n: &str| output_channel(n, seg).unwrap();
+    // B1 free, B2 coupled.
+    let body = |b: &str| match b {
+        "B1" => Some(true),
+        "B2" => Some(false),
+        _ => None,
+    };
+    let ok = |n: &str| output_channel(n, seg, body).unwrap();
     assert_eq!(ok("FairTen1"), "L1.end_b.node_force");
     assert_eq!(ok("anchten1"), "L1.end_a.node_force");
     assert_eq!(ok("L1N5PX"), "L1.node5.x");
@@ -231,10 +239,15 @@ fn output_channel_names() {
     assert_eq!(ok("L1NAPZ"), "L1.node0.z");
     assert_eq!(ok("P4FX"), "P4.fx");
     assert_eq!(ok("Point4PZ"), "P4.z");
+    assert_eq!(ok("Body1PX"), "B1.x");
+    assert_eq!(ok("B1RY"), "B1.pitch");
+    assert_eq!(ok("b1rvz"), "B1.wz");
+    assert_eq!(ok("Body2FX"), "B2.fx");
+    assert_eq!(ok("B2MZ"), "B2.mz");
     for bad in [
-        "L2N1T", "L1N21T", "L1N5AX", "Con3FX", "R1PX", "FairTen", "Foo",
+        "L2N1T", "L1N21T", "L1N5AX", "Con3FX", "R1PX", "FairTen", "Foo", "B1FX", "B3PX", "B1AX",
     ] {
-        assert!(output_channel(bad, seg).is_err(), "{bad}");
+        assert!(output_channel(bad, seg, body).is_err(), "{bad}");
     }
 }
 
@@ -260,6 +273,258 @@ fn coupled_points_follow_a_vessel_motion() {
     let (r, _, _) = motion.kinematics(12.5);
     assert!((r.z - 2.0).abs() < 1e-9, "{r}");
     assert!(r.x.abs() < 1e-12 && r.y.abs() < 1e-12);
+}
+
+// ---- bodies ---------------------------------------------------------------------------------
+
+/// OC3 with its fairleads as the points of a coupled body (MoorDyn's own `example/body.txt`
+/// form), the body at `pose` (X0 Y0 Z0 r0 p0 y0) and the points at `points` in its axes.
+fn oc3_on_a_body(pose: &str, points: [[f64; 3]; 3]) -> String {
+    let mut t = mutate(
+        "oc3_lines.txt",
+        "---------------------- POINT PROPERTIES",
+        &format!(
+            "---------------------- BODIES ----\nID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG* I* Volume CdA* Ca*\n\
+             (#) (-) (m) (m) (m) (deg) (deg) (deg) (kg) (m) (kg-m^2) (m^3) (m^2) (-)\n\
+             1 Coupled {pose} 0 0 0 0 0 0\n---------------------- POINT PROPERTIES"
+        ),
+    );
+    for (id, [x, y, z]) in [4, 5, 6].into_iter().zip(points) {
+        let row = t
+            .lines()
+            .find(|l| l.starts_with(&format!("{id}     Coupled")))
+            .unwrap()
+            .to_string();
+        t = t.replacen(&row, &format!("{id} Body1 {x} {y} {z} 0 0 0 0"), 1);
+    }
+    t
+}
+
+fn static_fairlead_tensions(d: &moordyn::LoadedDeck) -> Vec<f64> {
+    let system = hawser::system::System::new(&d.loaded.model).unwrap();
+    let sol = hawser::statics::solve(&system, None, &Default::default()).unwrap();
+    let mut ws = system.workspace();
+    hawser::statics::evaluate(&system, &sol.state, &mut ws);
+    (0..3)
+        .map(|l| system.end_force(&ws, l, true).norm())
+        .collect()
+}
+
+/// A coupled body carrying OC3's fairleads gives OC3's tensions: at z = −70 with its points at
+/// z = 0 (MoorDyn's example), and turned 120° in yaw with the points turned back, which
+/// permutes nothing (the same global fairleads).
+#[test]
+fn coupled_body_carries_its_points() {
+    let oc3 = static_fairlead_tensions(&parse(&deck_text("oc3_lines.txt")).unwrap());
+    let fair = [[5.2, 0.0, -70.0], [-2.6, 4.5, -70.0], [-2.6, -4.5, -70.0]];
+    let lifted = fair.map(|[x, y, _]| [x, y, 0.0]);
+    let d = parse(&oc3_on_a_body("0 0 -70 0 0 0", lifted)).unwrap();
+    let b = &d.loaded.model.bodies[0];
+    assert_eq!(b.name, "B1");
+    assert_eq!(b.kind, hawser::model::BodyKind::Coupled);
+    assert!(
+        d.loaded.model.points[3..6]
+            .iter()
+            .all(|p| matches!(p.kind, PointKind::Body { body: 0, .. }))
+    );
+    // The points in the axes of a body yawed by 120°: R_z(−120°) applied to the fairleads.
+    let (s, c) = (-120f64).to_radians().sin_cos();
+    let turned = fair.map(|[x, y, z]| [c * x - s * y, s * x + c * y, z]);
+    let yawed = parse(&oc3_on_a_body("0 0 0 0 0 120", turned)).unwrap();
+    for d in [d, yawed] {
+        let t = static_fairlead_tensions(&d);
+        for (a, b) in t.iter().zip(&oc3) {
+            // The same fairleads to round-off of the turned coordinates.
+            assert!(((a - b) / b).abs() < 1e-9, "{a} vs {b}");
+        }
+    }
+}
+
+/// MoorDyn turns a body by R = R_x(r0) R_y(p0) R_z(y0); the converted body has the same
+/// rotation.
+#[test]
+fn body_orientation_is_moordyns_rotation() {
+    let text = mutate(
+        "buoy_oc3.txt",
+        "-60    0     0     0 ",
+        "-60    10    20    30",
+    );
+    let d = parse(&text).unwrap();
+    let q = d.loaded.model.bodies[0].orientation;
+    use hawser::math::{Quat, Vec3};
+    let [r, p, y] = [10f64, 20.0, 30.0].map(f64::to_radians);
+    let moordyn = Quat::from_axis_angle(&Vec3::x_axis(), r)
+        * Quat::from_axis_angle(&Vec3::y_axis(), p)
+        * Quat::from_axis_angle(&Vec3::z_axis(), y);
+    assert!(q.angle_to(&moordyn) < 1e-12, "{}", q.angle_to(&moordyn));
+    assert!(
+        d.notes
+            .iter()
+            .any(|n| n.message.contains("R = R_x R_y R_z"))
+    );
+}
+
+/// The buoy's MoorDyn values in hawser's keys, and the mass and volume of points on a free
+/// body folded into it: two points of 1000 kg and 2 m³ at (4, 0, −10) and (0, 3, 0) in body
+/// axes, checked against the hand sums.
+#[test]
+fn free_body_physics_and_point_masses() {
+    let d = parse(&deck_text("buoy_oc3.txt")).unwrap();
+    let b = &d.loaded.model.bodies[0];
+    assert_eq!(b.kind, hawser::model::BodyKind::Free);
+    assert_eq!(b.mass, 180e3);
+    assert_eq!(b.centre_of_gravity, hawser::math::Vec3::new(0.0, 0.0, -2.0));
+    assert_eq!(b.centre_of_buoyancy, b.centre_of_gravity);
+    assert_eq!(b.hydrodynamic_centre, Some(hawser::math::Vec3::zeros()));
+    assert_eq!(b.drag_speed, hawser::model::DragSpeed::Magnitude);
+    assert_eq!(
+        b.displacement,
+        hawser::model::Displacement::Submerged { volume: 339.3 }
+    );
+    let rho_v = 1025.0 * 339.3;
+    assert_eq!(
+        b.added_mass.as_slice(),
+        &[rho_v, rho_v, 0.5 * rho_v, 0.0, 0.0, 0.0]
+    );
+    assert_eq!(
+        b.quadratic_drag.as_slice(),
+        &[72.0, 72.0, 72.0, 3888.0, 3888.0, 3888.0]
+    );
+    let text = mutate(
+        "buoy_oc3.txt",
+        "4     Body1     5.2     0.0     -10.0   0      0",
+        "4     Body1     5.2     0.0     -10.0   0      0       0      0\n\
+         9     Body1     4.0     0.0     -10.0   1000   2",
+    );
+    let text = text.replacen(
+        "8     Coupled   -400.0  0.0      0.0    0      0       0      0",
+        "8     Coupled   -400.0  0.0      0.0    0      0       0      0\n\
+         10    Body1     0.0     3.0      0.0   1000   2       0      0",
+        1,
+    );
+    // Renumber: MoorDyn needs sequential IDs, hawser does not; the lines name points 1–8.
+    let d = parse(&text).unwrap();
+    let b = &d.loaded.model.bodies[0];
+    let m = 180e3 + 2000.0;
+    assert_eq!(b.mass, m);
+    use hawser::math::Vec3;
+    let cg = (Vec3::new(0.0, 0.0, -2.0) * 180e3
+        + Vec3::new(4.0, 0.0, -10.0) * 1000.0
+        + Vec3::new(0.0, 3.0, 0.0) * 1000.0)
+        / m;
+    assert!((b.centre_of_gravity - cg).norm() < 1e-12);
+    // Inertia about the combined centre of gravity by parallel axes.
+    let parallel = |r: Vec3, mass: f64| {
+        let d = r - cg;
+        (hawser::math::Mat3::identity() * d.norm_squared() - d * d.transpose()) * mass
+    };
+    let expected = hawser::math::Mat3::from_diagonal(&Vec3::new(2.565e6, 2.565e6, 8.1e5))
+        + parallel(Vec3::new(0.0, 0.0, -2.0), 180e3)
+        + parallel(Vec3::new(4.0, 0.0, -10.0), 1000.0)
+        + parallel(Vec3::new(0.0, 3.0, 0.0), 1000.0);
+    assert!((b.inertia - expected).abs().max() < 1e-6 * expected.abs().max());
+    let v = 339.3 + 4.0;
+    assert_eq!(
+        b.displacement,
+        hawser::model::Displacement::Submerged { volume: v }
+    );
+    let cb = (Vec3::new(0.0, 0.0, -2.0) * 339.3
+        + Vec3::new(4.0, 0.0, -10.0) * 2.0
+        + Vec3::new(0.0, 3.0, 0.0) * 2.0)
+        / v;
+    assert!((b.centre_of_buoyancy - cb).norm() < 1e-12);
+    // The added mass stays the body's own ρ V Ca, at the origin.
+    assert_eq!(b.added_mass[0], rho_v);
+    assert!(
+        d.notes
+            .iter()
+            .any(|n| n.message.contains("folded") || n.message.contains("part of the body"))
+    );
+}
+
+/// A coupled body at the vessel origin rides on `--vessel-motion`: a prescribed body whose
+/// pose is the file's.
+#[test]
+fn coupled_body_follows_a_vessel_motion() {
+    let text = oc3_on_a_body(
+        "0 0 0 0 0 0",
+        [[5.2, 0.0, -70.0], [-2.6, 4.5, -70.0], [-2.6, -4.5, -70.0]],
+    );
+    let options = ConvertOptions {
+        duration: None,
+        vessel_motion: Some(deck_dir().join("ZZP1_A1.txt")),
+    };
+    let d = moordyn::parse(&deck_dir().join("deck.txt"), &text, &options).unwrap();
+    let hawser::model::BodyKind::Prescribed(motion) = &d.loaded.model.bodies[0].kind else {
+        panic!("the coupled body rides on the vessel motion");
+    };
+    // ZZP1: z = 2 sin(2π t/10) on the file's clock, shifted by 10 s.
+    let k = motion.kinematics(12.5);
+    assert!((k.position.z - 2.0).abs() < 1e-9, "{}", k.position);
+    // Away from the vessel origin it is refused.
+    let moved = oc3_on_a_body(
+        "0 0 -70 0 0 0",
+        [[5.2, 0.0, 0.0], [-2.6, 4.5, 0.0], [-2.6, -4.5, 0.0]],
+    );
+    let e = moordyn::parse(&deck_dir().join("deck.txt"), &moved, &options).unwrap_err();
+    assert!(e.to_string().contains("not at the vessel origin"), "{e}");
+}
+
+/// A free rod is a free body `R1` at end A with one member; its mass w·L sits at mid-length
+/// with a solid cylinder's inertia (MoorDyn's lumped nodes with its inertia correction); the
+/// lines attach to the points `R1A` and `R1B` at its ends. On a body (`Body1`) the same rod is
+/// a member of that body, its mass and inertia folded in.
+#[test]
+fn rods_are_members_of_bodies() {
+    let d = parse(&deck_text("rod_hanging.txt")).unwrap();
+    let m = &d.loaded.model;
+    let b = &m.bodies[0];
+    assert_eq!(b.name, "R1");
+    assert_eq!(b.kind, hawser::model::BodyKind::Free);
+    use hawser::math::{Mat3, Vec3};
+    assert_eq!(b.position, Vec3::new(-10.0, 0.0, -75.0));
+    let (mass, r, l) = (77.7066 * 20.0, 0.125, 20.0);
+    assert!((b.mass - mass).abs() < 1e-9);
+    assert_eq!(b.centre_of_gravity, Vec3::new(10.0, 0.0, 0.0));
+    let across = mass * (l * l / 12.0 + r * r / 4.0);
+    let expected = Mat3::from_diagonal(&Vec3::new(0.5 * mass * r * r, across, across));
+    assert!((b.inertia - expected).abs().max() < 1e-9 * across);
+    let member = &b.members[0];
+    assert_eq!(
+        (member.end_a, member.end_b),
+        (Vec3::zeros(), Vec3::new(20.0, 0.0, 0.0))
+    );
+    assert_eq!((member.diameter, member.segments), (0.25, 4));
+    assert_eq!(
+        [
+            member.normal_drag,
+            member.normal_added_mass,
+            member.end_drag,
+            member.end_added_mass
+        ],
+        [1.6, 1.0, 1.6, 1.0]
+    );
+    let names: Vec<&str> = m.points.iter().map(|p| p.name.as_str()).collect();
+    assert!(names.contains(&"R1A") && names.contains(&"R1B"));
+    let hawser::model::LineEnd::Point(end_b) = m.lines[1].end_b;
+    assert_eq!(m.points[end_b].name, "R1B");
+
+    // The same rod on a free body at (−10, 0, −75): a member from (0, 0, 0) to (20, 0, 0).
+    let text = mutate(
+        "rod_hanging.txt",
+        "---------------------- RODS",
+        "---------------------- BODIES ----\nID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG I Volume CdA Ca\n\
+         1 Free -10 0 -75 0 0 0 1000 0 10 0 0 0\n---------------------- RODS",
+    )
+    .replacen("1    rod       Free        -10   0     -75   10    0     -75", "1    rod       Body1        0   0       0   20    0       0", 1);
+    let d = parse(&text).unwrap();
+    let b = &d.loaded.model.bodies[0];
+    assert_eq!(b.name, "B1");
+    assert!((b.mass - (1000.0 + mass)).abs() < 1e-9);
+    let cg = Vec3::new(10.0, 0.0, 0.0) * mass / (1000.0 + mass);
+    assert!((b.centre_of_gravity - cg).norm() < 1e-12);
+    assert_eq!(b.members.len(), 1);
+    assert_eq!(d.loaded.model.bodies.len(), 1);
 }
 
 // ---- bad decks: every error names the file, line, column and the expected form ----------
@@ -310,19 +575,50 @@ bad_deck!(
     ""
 );
 bad_deck!(
-    bodies_refused,
+    coupled_pinned_body_refused,
     "oc3_lines.txt",
     "---------------------- POINT PROPERTIES",
-    "---------------------- BODIES ----\nID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG* I* Volume CdA* Ca*\n(#) (-) (m) (m) (m) (deg) (deg) (deg) (kg) (m) (kg-m^2) (m^3) (m^2) (-)\n1 coupled 0 0 0 0 0 0 0 0 0 0 0 0\n---------------------- POINT PROPERTIES"
+    "---------------------- BODIES ----\nID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG* I* Volume CdA* Ca*\n(#) (-) (m) (m) (m) (deg) (deg) (deg) (kg) (m) (kg-m^2) (m^3) (m^2) (-)\n1 CoupledPinned 0 0 0 0 0 0 0 0 0 0 0 0\n---------------------- POINT PROPERTIES"
 );
 bad_deck!(
-    rod_attachment_refused,
+    body_cda_of_four_values,
+    "buoy_oc3.txt",
+    "72|3888",
+    "72|3888|1|2"
+);
+bad_deck!(free_body_without_mass, "buoy_oc3.txt", "180e3 ", "0     ");
+bad_deck!(
+    drag_on_a_point_of_a_free_body,
+    "buoy_oc3.txt",
+    "5     Body1     -2.6    4.5     -10.0   0      0       0      0",
+    "5     Body1     -2.6    4.5     -10.0   0      0       2.5    0"
+);
+bad_deck!(
+    attached_to_a_missing_rod,
     "oc3_lines.txt",
     "1     main       1        4",
     "1     main       1        R1B"
 );
 bad_deck!(
-    body_point_refused,
+    pinned_rod_refused,
+    "rod_hanging.txt",
+    "1    rod       Free  ",
+    "1    rod       Pinned"
+);
+bad_deck!(
+    zero_length_rod_refused,
+    "rod_hanging.txt",
+    "-75  4       -",
+    "-75  0       -"
+);
+bad_deck!(
+    unknown_rod_type,
+    "rod_hanging.txt",
+    "1    rod       Free",
+    "1    bar       Free"
+);
+bad_deck!(
+    point_on_a_missing_body,
     "oc3_lines.txt",
     "4     Coupled",
     "4     Body1  "

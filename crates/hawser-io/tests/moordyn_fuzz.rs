@@ -52,6 +52,7 @@ fn deck() -> impl Strategy<Value = String> {
     prop_oneof![
         Just(std::fs::read_to_string(data().join("oc3_lines.txt")).unwrap()),
         Just(std::fs::read_to_string(data().join("WD0050_Chain.txt")).unwrap()),
+        Just(std::fs::read_to_string(data().join("buoy_oc3.txt")).unwrap()),
     ]
 }
 
@@ -72,6 +73,11 @@ fn word() -> impl Strategy<Value = String> {
         Just("NaN".to_string()),
         Just("R1A".to_string()),
         Just("Body2".to_string()),
+        Just("Body1".to_string()),
+        Just("0|0|-2".to_string()),
+        Just("|".to_string()),
+        Just("CoupledPinned".to_string()),
+        Just("B1RY".to_string()),
         Just("FairTen9".to_string()),
         Just("L1N99T".to_string()),
         Just("Currents".to_string()),

@@ -8,7 +8,9 @@
 //!   velocity through it ([`hawser::Session::set_coupled_constant_velocity`]); `*t` becomes
 //!   t + dt; `dt` ≤ 0 only returns the forces.
 //! - Forces: the net force of the lines' end nodes on each coupled point, without the nodes'
-//!   inertia (MoorDyn's `Fnet`).
+//!   inertia (MoorDyn's `Fnet`); on each coupled body their force and moment about its origin.
+//! - A coupled body's angles in `x` are MoorDyn's, R = R_x(r) R_y(p) R_z(y), turned into
+//!   hawser's roll, pitch, yaw of the same rotation.
 //! - Lines numbered from 1 in `MoorDyn_GetLine`; nodes from 0 (end A) to N (end B).
 //! - Status codes `MOORDYN_SUCCESS` (0) and the negative `MOORDYN_*` errors; errors printed on
 //!   standard error, as MoorDyn prints them.
@@ -16,6 +18,7 @@
 // `!(x > 0.0)` is deliberate: it rejects NaN.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
+use hawser::math::{Quat, Vec3};
 use hawser_capi::guard;
 use hawser_capi::host::{Convention, ErrorKind, Host, HostError};
 use std::ffi::{CStr, c_char, c_int, c_uint};
@@ -35,6 +38,29 @@ pub struct System {
     host: Host,
     /// One handle per line, 1-based in `MoorDyn_GetLine`; each points back to the system.
     lines: Vec<Line>,
+    /// The host's positions with every coupled body's angles in hawser's convention (sized
+    /// at creation; the coupled bodies come first, 6 entries each).
+    x: Vec<f64>,
+    /// Number of coupled bodies.
+    bodies: usize,
+}
+
+impl System {
+    /// The host's positions `x` with each coupled body's MoorDyn angles (R = R_x(r) R_y(p)
+    /// R_z(y), MoorDyn's `Euler2Quat`) turned into hawser's roll, pitch, yaw of the same
+    /// rotation (R = R_z R_y R_x). Angular velocities pass as they are (both global).
+    fn hawser_positions(&mut self, x: &[f64]) -> &[f64] {
+        self.x.copy_from_slice(x);
+        for k in 0..self.bodies {
+            let a = &mut self.x[6 * k + 3..6 * k + 6];
+            let q = Quat::from_axis_angle(&Vec3::x_axis(), a[0])
+                * Quat::from_axis_angle(&Vec3::y_axis(), a[1])
+                * Quat::from_axis_angle(&Vec3::z_axis(), a[2]);
+            let (roll, pitch, yaw) = q.euler_angles();
+            a.copy_from_slice(&[roll, pitch, yaw]);
+        }
+        &self.x
+    }
 }
 
 /// The line behind a `MoorDynLine` handle.
@@ -143,7 +169,15 @@ pub unsafe extern "C" fn MoorDyn_Create(infilename: *const c_char) -> *mut Syste
         let file = unsafe { path(infilename, "Mooring/lines.txt") }?;
         let host = Host::open(Path::new(file))?;
         let n = host.lines();
+        let bodies = host
+            .model()
+            .bodies
+            .iter()
+            .filter(|b| b.kind == hawser::model::BodyKind::Coupled)
+            .count();
         let s = Box::into_raw(Box::new(System {
+            x: vec![0.0; host.coupled_dofs()],
+            bodies,
             host,
             lines: Vec::with_capacity(n),
         }));
@@ -185,7 +219,8 @@ pub unsafe extern "C" fn MoorDyn_Init(system: *mut System, x: *const f64, xd: *c
         let n = s.host.coupled_dofs();
         // SAFETY: the caller's contract.
         let (x, xd) = unsafe { (slice(x, n, "x")?, slice(xd, n, "xd")?) };
-        s.host.init(x, xd)
+        let x = s.hawser_positions(x).to_vec();
+        s.host.init(&x, xd)
     })
 }
 
@@ -224,7 +259,13 @@ pub unsafe extern "C" fn MoorDyn_Step(
         }
         // SAFETY: the caller's contract.
         let (x, xd) = unsafe { (slice(x, n, "x")?, slice(xd, n, "xd")?) };
-        t[0] = s.host.step(Convention::Start, t[0], dt, x, xd, None, f)?;
+        s.hawser_positions(x);
+        let positions = std::mem::take(&mut s.x);
+        let result = s
+            .host
+            .step(Convention::Start, t[0], dt, &positions, xd, None, f);
+        s.x = positions;
+        t[0] = result?;
         Ok(())
     })
 }
@@ -521,4 +562,79 @@ pub unsafe extern "C" fn MoorDyn_LoadState(system: *mut System, filepath: *const
         })?;
         s.host.restore(&bytes)
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// OC3's lines on the points of a coupled body at the origin (MoorDyn's `Body1` points).
+    const BODY_DECK: &str = "\
+--- LINE TYPES ---
+TypeName Diam Mass/m EA BA/-zeta EI Cd Ca CdAx CaAx
+main 0.09 77.7066 384.243E6 -0.8 0 1.6 1.0 0.1 0.0
+--- BODIES ---
+ID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG I Volume CdA Ca
+1 Coupled 0 0 0 0 0 0 0 0 0 0 0 0
+--- POINTS ---
+ID Type X Y Z Mass Volume CdA Ca
+1 Fixed 853.87 0 -320.0 0 0 0 0
+2 Fixed -426.94 739.47 -320.0 0 0 0 0
+3 Fixed -426.94 -739.47 -320.0 0 0 0 0
+4 Body1 5.2 0.0 -70.0 0 0 0 0
+5 Body1 -2.6 4.5 -70.0 0 0 0 0
+6 Body1 -2.6 -4.5 -70.0 0 0 0 0
+--- LINES ---
+ID LineType AttachA AttachB UnstrLen NumSegs LineOutputs
+1 main 1 4 902.2 20 -
+2 main 2 5 902.2 20 -
+3 main 3 6 902.2 20 -
+--- OPTIONS ---
+0.002 dtM
+320 WtrDpth
+--- need this line ---
+";
+
+    /// A coupled body's angles from the host are MoorDyn's, R = R_x(r) R_y(p) R_z(y): after
+    /// `MoorDyn_Init` and a step the body has that rotation (round-off), and six coupled
+    /// degrees of freedom come first.
+    #[test]
+    fn coupled_body_angles_are_moordyns() {
+        let dir = std::env::temp_dir().join(format!("hawser-moordyn-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let deck = dir.join("body.txt");
+        std::fs::write(&deck, BODY_DECK).unwrap();
+        let name = std::ffi::CString::new(deck.to_str().unwrap()).unwrap();
+        let (r, p, y) = (0.05, -0.03, 0.4);
+        let x = [1.0, -2.0, 0.5, r, p, y];
+        let xd = [0.0; 6];
+        let expected = Quat::from_axis_angle(&Vec3::x_axis(), r)
+            * Quat::from_axis_angle(&Vec3::y_axis(), p)
+            * Quat::from_axis_angle(&Vec3::z_axis(), y);
+        // SAFETY: the handles come from MoorDyn_Create and live until MoorDyn_Close; the
+        // arrays have NCoupledDOF = 6 entries.
+        unsafe {
+            let s = MoorDyn_Create(name.as_ptr());
+            assert!(!s.is_null());
+            let mut n: c_uint = 0;
+            assert_eq!(MoorDyn_NCoupledDOF(s, &mut n), MOORDYN_SUCCESS);
+            assert_eq!(n, 6);
+            assert_eq!(MoorDyn_Init(s, x.as_ptr(), xd.as_ptr()), MOORDYN_SUCCESS);
+            let (mut t, mut dt, mut f) = (0.0, 0.01, [0.0; 6]);
+            assert_eq!(
+                MoorDyn_Step(s, x.as_ptr(), xd.as_ptr(), f.as_mut_ptr(), &mut t, &mut dt),
+                MOORDYN_SUCCESS
+            );
+            let session = (*s).host.session().unwrap();
+            let b = session.coupled_bodies()[0];
+            let k = &session.workspace().bodies[b];
+            assert!(k.orientation.angle_to(&expected) < 1e-12);
+            assert!((k.position - Vec3::new(1.0, -2.0, 0.5)).norm() < 1e-12);
+            // The lines pull the body down and hold it: a vertical force of about three
+            // fairleads' weight.
+            assert!(f[2] < -1e6, "{f:?}");
+            assert_eq!(MoorDyn_Close(s), MOORDYN_SUCCESS);
+        }
+        std::fs::remove_dir_all(&dir).ok();
+    }
 }

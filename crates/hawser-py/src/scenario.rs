@@ -381,7 +381,9 @@ impl Scenario {
     fn statics<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         let model = &self.loaded.model;
         let computed = py.detach(|| {
-            let system = hawser::system::System::new(model).map_err(|e| e.to_string())?;
+            // dg lines are analysed through their hermite twin, as `hawser modes` does.
+            let (model, _) = hawser_io::modes::modal_model(model);
+            let system = hawser::system::System::new(&model).map_err(|e| e.to_string())?;
             let sol = hawser::statics::solve(&system, None, &Default::default())
                 .map_err(|e| e.to_string())?;
             let mut ws = system.workspace();
@@ -452,7 +454,9 @@ impl Scenario {
     ) -> PyResult<Bound<'py, PyAny>> {
         let model = &self.loaded.model;
         let computed = py.detach(|| {
-            let system = hawser::system::System::new(model).map_err(|e| e.to_string())?;
+            // dg lines are analysed through their hermite twin, as `hawser modes` does.
+            let (model, _) = hawser_io::modes::modal_model(model);
+            let system = hawser::system::System::new(&model).map_err(|e| e.to_string())?;
             let analysis = hawser_io::modes::ModalAnalysis::compute(&system, count, margin)?;
             Ok::<_, String>((system, analysis))
         });

@@ -27,7 +27,7 @@ pub enum ModelError {
     },
     /// A free rigid body in a run whose scheme does not integrate rigid bodies.
     #[error(
-        "body {body}: is free: the {scheme} scheme does not integrate rigid bodies yet; use \
+        "body {body}: is free: the {scheme} scheme does not integrate rigid bodies; use \
          scheme = \"rk4\" or \"ssp-rk3\""
     )]
     SchemeCannotStepBodies {
@@ -183,12 +183,12 @@ pub enum StaticsError {
 /// A modal analysis that failed.
 #[derive(Debug, thiserror::Error, Clone, PartialEq)]
 pub enum ModalError {
-    /// A line uses a formulation whose modes are not labelled yet.
+    /// A line's unknowns are not linearised (`dg`: modal coefficients).
     #[error(
-        "line `{line}` uses the `{formulation}` formulation; natural modes are available for \
-         `fe` lines only in this version; hint: run `modes` on the same scenario with \
-         `formulation = \"fe\"` (the static state and frequencies agree within their \
-         discretisation errors)"
+        "line `{line}` uses the `{formulation}` formulation, whose modal coefficients are not \
+         linearised; hint: compute the modes of the model's hermite twin \
+         (hawser::analysis::modes::modal_twin: the same sections in cubic elements, as `hawser \
+         modes` does), or give the line `formulation = \"hermite\"`, which keeps its bending"
     )]
     Unsupported {
         /// Line name.
@@ -196,20 +196,10 @@ pub enum ModalError {
         /// Formulation name.
         formulation: &'static str,
     },
-    /// A free rigid body (its six degrees of freedom are not linearised yet).
-    #[error(
-        "body `{body}` is free; natural modes with free rigid bodies are not available in this \
-         version; hint: make the body prescribed (type = \"fixed\") to get the lines' modes \
-         with the body held"
-    )]
-    FreeBody {
-        /// Body name.
-        body: String,
-    },
     /// Nothing can move: every line end is fixed or prescribed and no line has interior nodes.
     #[error(
-        "the system has no degrees of freedom (no interior line nodes and no free points); \
-         hint: give the lines more than one element"
+        "the system has no degrees of freedom (no interior line nodes, free points or free \
+         bodies); hint: give the lines more than one element"
     )]
     NoDegreesOfFreedom,
     /// The mass matrix is not positive definite (a massless free point outside the water
@@ -239,4 +229,15 @@ pub enum ModalError {
         /// Largest relative residual of the wanted modes.
         residual: Real,
     },
+}
+
+impl std::fmt::Display for crate::system::Location {
+    /// `line L1, node 12`, or the name of a point or body (node 0).
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        if self.node == 0 {
+            write!(f, "`{}`", self.object)
+        } else {
+            write!(f, "`{}` node {}", self.object, self.node)
+        }
+    }
 }

@@ -796,3 +796,158 @@ fn validate_checks_the_physical_ranges_of_bodies() {
             .contains("another body")
     );
 }
+
+/// MoorDyn's body in hawser's terms (docs/moordyn.md): drag on the speed |u| of the relative
+/// velocity (`DragSpeed::Magnitude`) instead of each axis's |u_i|, and added mass and drag at a
+/// `hydrodynamic_centre` away from the centre of buoyancy, where the buoyancy still acts.
+/// Closed forms for a body moving obliquely; rounding only.
+#[test]
+fn drag_on_the_speed_and_a_separate_hydrodynamic_centre() {
+    let env = vacuum();
+    let mut b = neutral_submerged(&env);
+    b.quadratic_drag = Vec6::new(2.0, 3.0, 4.0, 0.0, 0.0, 0.0);
+    let v = Vec3::new(1.0, -2.0, 0.5);
+    let k = RigidKinematics {
+        velocity: v,
+        ..RigidKinematics::at_rest(Vec3::new(0.0, 0.0, -10.0), Quat::identity())
+    };
+    let rho = env.water_density;
+    let weight_and_buoyancy = b.loads(
+        &RigidKinematics::at_rest(k.position, k.orientation),
+        &env,
+        0.0,
+    );
+    let drag = |b: &Body| b.loads(&k, &env, 0.0).force - weight_and_buoyancy.force;
+    let per_axis = Vec3::new(
+        2.0 * v.x.abs() * v.x,
+        3.0 * v.y.abs() * v.y,
+        4.0 * v.z.abs() * v.z,
+    );
+    assert!((drag(&b) + 0.5 * rho * per_axis).norm() < 1e-12 * per_axis.norm() * rho);
+    b.drag_speed = hawser::model::DragSpeed::Magnitude;
+    let on_speed = Vec3::new(2.0 * v.x, 3.0 * v.y, 4.0 * v.z) * v.norm();
+    assert!((drag(&b) + 0.5 * rho * on_speed).norm() < 1e-12 * on_speed.norm() * rho);
+
+    // Buoyancy at the centre of buoyancy c_b, added mass at the hydrodynamic centre (the
+    // origin): the mass matrix is the rigid body's plus diag(A) unshifted, and the moment of
+    // the buoyancy is c_b × ρ g V.
+    let env = Environment::default();
+    let mut b = neutral_submerged(&env);
+    b.centre_of_buoyancy = Vec3::new(0.3, 0.0, -1.0);
+    b.added_mass = Vec6::new(100.0, 200.0, 300.0, 0.0, 0.0, 0.0);
+    b.hydrodynamic_centre = Some(Vec3::zeros());
+    let at_rest = RigidKinematics::at_rest(Vec3::new(0.0, 0.0, -10.0), Quat::identity());
+    let l = b.loads(&at_rest, &env, 0.0);
+    let mut rigid = b.clone();
+    rigid.added_mass = Vec6::zeros();
+    let m0 = rigid.loads(&at_rest, &env, 0.0).mass;
+    let added = l.mass - m0;
+    let expected =
+        hawser::math::Mat6::from_diagonal(&Vec6::new(100.0, 200.0, 300.0, 0.0, 0.0, 0.0));
+    assert!((added - expected).abs().max() < 1e-12 * 300.0);
+    let Displacement::Submerged { volume } = b.displacement else {
+        panic!("submerged")
+    };
+    let buoyancy = Vec3::new(0.0, 0.0, rho * env.gravity * volume);
+    let c = b.centre_of_gravity;
+    let gravity = Vec3::new(0.0, 0.0, -b.mass * env.gravity);
+    let moment = b.centre_of_buoyancy.cross(&buoyancy) + c.cross(&gravity);
+    assert!((l.moment - moment).norm() < 1e-9 * buoyancy.norm());
+}
+
+/// A member (MoorDyn's rod), d = 0.4 m from (−3, 0, 0) to (3, 0, 0), 6 segments, on a
+/// massless-displacement body at `depth`.
+fn member_body(depth: Real, turn: Quat) -> (Body, RigidKinematics) {
+    let mut b = body(500.0, Mat3::identity() * 100.0);
+    b.members.push(hawser::model::Member {
+        end_a: Vec3::new(-3.0, 0.0, 0.0),
+        end_b: Vec3::new(3.0, 0.0, 0.0),
+        diameter: 0.4,
+        segments: 6,
+        normal_drag: 1.2,
+        normal_added_mass: 1.0,
+        end_drag: 0.8,
+        end_added_mass: 0.6,
+    });
+    (
+        b,
+        RigidKinematics::at_rest(Vec3::new(0.0, 0.0, depth), turn),
+    )
+}
+
+/// A member under water, turned arbitrarily: buoyancy ρ g V at its centre; added mass ρ V C_an
+/// across the axis, 2 C_aEnd ρ (2/3)π r³ along it, and ρ C_an Σ v_i s_i² = ρ V C_an (L²/12 +
+/// h²/6) in rotation about an axis across it (the lumped nodes' second moment: trapezoidal
+/// weights); side drag ½ ρ C_dn d L |u| u across the axis and ½ ρ C_dEnd A |u| u at each of
+/// the two ends along it. Closed forms; rounding only.
+#[test]
+fn member_under_water() {
+    let env = Environment::default();
+    let turn = Quat::from_euler_angles(0.3, -0.7, 1.1);
+    let (b, k) = member_body(-20.0, turn);
+    let rho = env.water_density;
+    let (l, d, n) = (6.0, 0.4, 6.0);
+    let area = PI * d * d / 4.0;
+    let v = area * l;
+    let q = turn * Vec3::x();
+    let at_rest = b.loads(&k, &env, 0.0);
+    let weight = Vec3::new(0.0, 0.0, -500.0 * env.gravity);
+    let buoyancy = Vec3::new(0.0, 0.0, rho * env.gravity * v);
+    assert!((at_rest.force - weight - buoyancy).norm() < 1e-9 * buoyancy.norm());
+    // Both act at the origin, the member's centre: no moment.
+    assert!(at_rest.moment.norm() < 1e-9 * buoyancy.norm());
+    let rigid = body(500.0, Mat3::identity() * 100.0)
+        .loads(&k, &env, 0.0)
+        .mass;
+    let added = at_rest.mass - rigid;
+    let t = added.fixed_view::<3, 3>(0, 0).into_owned();
+    let across = Vec3::new(-q.y, q.x, 0.0).normalize();
+    let end = 2.0 * 0.6 * rho * 2.0 / 3.0 * PI * (d / 2.0).powi(3);
+    assert!((q.dot(&(t * q)) - end).abs() < 1e-9 * end);
+    assert!((across.dot(&(t * across)) - rho * v).abs() < 1e-9 * rho * v);
+    let rot = added.fixed_view::<3, 3>(3, 3).into_owned();
+    let h = l / n;
+    let expected = rho * v * (l * l / 12.0 + h * h / 6.0);
+    assert!((across.dot(&(rot * across)) - expected).abs() < 1e-9 * expected);
+    assert!(q.dot(&(rot * q)).abs() < 1e-9 * expected);
+
+    let drag = |velocity: Vec3| {
+        let moving = RigidKinematics { velocity, ..k };
+        b.loads(&moving, &env, 0.0).force - at_rest.force
+    };
+    let u = 1.5;
+    let side = drag(across * u);
+    let expected = -0.5 * rho * 1.2 * d * l * u * u * across;
+    assert!((side - expected).norm() < 1e-9 * expected.norm());
+    let axial = drag(q * u);
+    let expected = -2.0 * 0.5 * rho * 0.8 * area * u * u * q;
+    assert!((axial - expected).norm() < 1e-9 * expected.norm());
+}
+
+/// An upright member cut by the still surface: buoyancy ρ g A T for a draft T, acting at
+/// T/2 below the surface (the clipped cylinder), as MoorDyn's end pressure ρ g A T gives;
+/// only the wet nodes carry added mass (MoorDyn's wet fraction: 2 m under water of a 6 m
+/// member on 6 segments is the end node and two full nodes: ½ + 1 + ½ segment lengths).
+#[test]
+fn upright_member_cut_by_the_surface() {
+    let env = Environment::default();
+    let turn = Quat::from_axis_angle(&Vec3::y_axis(), -PI / 2.0);
+    // Body x turned to global +z: the member from z = centre − 3 to centre + 3.
+    let (b, k) = member_body(1.0, turn);
+    let rho = env.water_density;
+    let area = PI * 0.2 * 0.2;
+    let draft = 2.0;
+    let l = b.loads(&k, &env, 0.0);
+    let buoyancy = rho * env.gravity * area * draft;
+    let weight = 500.0 * env.gravity;
+    assert!((l.force.z - (buoyancy - weight)).abs() < 1e-9 * buoyancy);
+    // Moment about the origin (z = 1) of a vertical force: zero; the centroid is on the axis.
+    assert!(l.moment.norm() < 1e-9 * buoyancy);
+    let rigid = body(500.0, Mat3::identity() * 100.0)
+        .loads(&k, &env, 0.0)
+        .mass;
+    let across = (l.mass - rigid)[(0, 0)];
+    // Wet nodes: z = −2 (end A, half a segment), −1 (full), 0 (half below the surface).
+    let wet_length = 0.5 + 1.0 + 0.5;
+    assert!((across - rho * area * wet_length).abs() < 1e-9 * across);
+}

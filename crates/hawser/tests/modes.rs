@@ -2,9 +2,8 @@
 //! connection stiffness against the elastic catenary and against finite differences of
 //! static solutions, and the sparse shift-invert solver against the dense one.
 //!
-//! The references are formulation-independent (closed forms, statics): when the `dg` and
-//! `hermite` formulations arrive, each test's model builder takes the formulation and the same
-//! assertions run for all three; the cantilever frequencies (bending) join then.
+//! The references are formulation-independent (closed forms, statics); the bending string
+//! runs the same closed form for `hermite` lines and `dg` lines (through their hermite twin).
 
 mod common;
 use common::*;
@@ -508,4 +507,140 @@ fn resonance_report_compares_excitations_with_natural_frequencies() {
             assert_eq!(r.warning(), !r.within_margin.is_empty());
         }
     }
+}
+
+/// A taut string with bending stiffness, pinned at both ends, in zero gravity: its transverse
+/// modes are those of a beam under tension, ω_j = k √((EI k² + T)/γ0), k = jπ/L, each twice
+/// (y and z). `hermite` lines are linearised directly (positions and tangents); a `dg` line
+/// through its hermite twin (`modal_twin`: the same sections in ⌈P/2⌉ cubic elements per dg
+/// element). Labelled modes (the tangents' energy counted with the line; in-plane and
+/// out-of-plane of the vertical plane through the chord). Measured −4.5e-5 (hermite) and
+/// −4.5e-5 (dg twin) on the first mode, −4.8e-6 and −3.4e-5 on the second: the closed form
+/// takes k = jπ/L0 on the unstretched length, 1e-4 shorter than the span (up to 2e-4 in ω),
+/// and 10 cubic elements err by O(h⁴); tolerance 2e-4.
+#[test]
+fn bending_string_modes_for_hermite_and_dg() {
+    use hawser::model::Formulation;
+    let (l0, gamma, ea, strain, ei) = (10.0, 1.0, 1.0e6, 1.0e-4, 100.0);
+    let tension = ea * strain;
+    for f in [Formulation::Hermite, Formulation::Dg] {
+        let mut model = hawser::verification::taut_string_model(
+            f,
+            MassMatrix::Consistent,
+            (l0, gamma, ea, strain),
+            10,
+        );
+        model.line_types[0].bending_stiffness = ei;
+        let twin = hawser::analysis::modes::modal_twin(&model);
+        assert_eq!(twin.is_some(), f == Formulation::Dg);
+        let model = twin.unwrap_or(model);
+        let (system, lin, modes) = modes_of(&model, 6, EigenMethod::Auto);
+        assert!(hawser::analysis::modes::supported(&system).is_ok());
+        for j in 1..=2usize {
+            let k = j as Real * PI / l0;
+            let exact = k * ((ei * k * k + tension) / gamma).sqrt() / TAU;
+            for m in &modes.modes[2 * (j - 1)..2 * j] {
+                let err = (m.frequency - exact) / exact;
+                eprintln!(
+                    "{f:?} mode {j}: {} Hz vs {exact} Hz ({err:+.2e}), {}",
+                    m.frequency, m.label.text
+                );
+                assert!(err.abs() < 2e-4, "{f:?} mode {j}: {err:.2e}");
+                // A straight horizontal line has the vertical plane through its chord.
+                assert!(
+                    matches!(
+                        m.label.direction,
+                        ModeDirection::InPlane | ModeDirection::OutOfPlane
+                    ),
+                    "{}",
+                    m.label.text
+                );
+                assert!(m.largest_displacement(&lin.dofs) > 0.0);
+            }
+        }
+    }
+}
+
+/// The band holding 90 % of a Pierson–Moskowitz sea's variance against its closed form: the
+/// cumulative moment is m₀(ω)/m₀ = exp(−5/4 (ωp/ω)⁴), so the q-quantile is
+/// ω_q = ωp (5/4 / −ln q)^¼ (0.8037 ωp at 5 %, 2.222 ωp at 95 %). Tolerance 1e-4 relative:
+/// the band truncates the spectrum at 20 ωp (tail 7.8e-6 of m₀, which moves the upper end by
+/// 7.8e-6 / (d F / d ln ω = 0.195) = 4e-5) and interpolates linearly on a 10⁻³ ωp grid.
+/// A JONSWAP sea (γ = 3.3) is narrower about the same peak; a regular wave's band is its
+/// frequency; given components put their quantiles at the components that cross them.
+#[test]
+fn wave_band_holds_ninety_percent_of_the_energy() {
+    use hawser::analysis::resonance::wave_band;
+    use hawser::physics::waves::{
+        ComponentSpec, IrregularSea, RegularWave, SeaState, Spectrum, WaveSpec, Waves,
+    };
+    let build = |sea: SeaState| {
+        let spec = WaveSpec {
+            sea,
+            ramp_time: 0.0,
+            stretching: Default::default(),
+        };
+        Waves::new(&spec, 200.0, 9.80665).unwrap()
+    };
+    let tp = 10.0;
+    let irregular = |spectrum| {
+        SeaState::Irregular(IrregularSea {
+            spectrum,
+            direction: 0.0,
+            spreading: None,
+            seed: 1,
+            components: 200,
+            frequency_range: (0.2, 3.0),
+        })
+    };
+    let pm = wave_band(
+        &build(irregular(Spectrum::PiersonMoskowitz {
+            significant_height: 4.0,
+            peak_period: tp,
+        })),
+        0.9,
+    )
+    .unwrap();
+    let quantile = |q: Real| (1.25 / -q.ln()).powf(0.25) / tp;
+    let (lo, hi) = (quantile(0.05), quantile(0.95));
+    eprintln!(
+        "PM band {} – {} Hz, closed form {lo} – {hi} Hz",
+        pm.low, pm.high
+    );
+    assert!(((pm.low - lo) / lo).abs() < 1e-4, "{} vs {lo}", pm.low);
+    assert!(((pm.high - hi) / hi).abs() < 1e-4, "{} vs {hi}", pm.high);
+    assert!((pm.peak - 1.0 / tp).abs() < 1e-12);
+    let js = wave_band(
+        &build(irregular(Spectrum::Jonswap {
+            significant_height: 4.0,
+            peak_period: tp,
+            peak_enhancement: 3.3,
+        })),
+        0.9,
+    )
+    .unwrap();
+    assert!(js.low > pm.low && js.high < pm.high && js.low < 1.0 / tp && js.high > 1.0 / tp);
+    let regular = wave_band(
+        &build(SeaState::Regular(RegularWave {
+            height: 2.0,
+            period: 8.0,
+            direction: 0.0,
+        })),
+        0.9,
+    )
+    .unwrap();
+    assert_eq!((regular.low, regular.high), (0.125, 0.125));
+    // Variances ½a²: 1, 8, 1 of 10: the 5 % quantile (0.5) falls in the first component, the
+    // 95 % one (9.5) in the last.
+    let components = [(0.1_f64, 2.0_f64.sqrt()), (0.2, 4.0), (0.3, 2.0_f64.sqrt())]
+        .map(|(f, a)| ComponentSpec {
+            amplitude: a,
+            angular_frequency: TAU * f,
+            direction: 0.0,
+            phase: 0.0,
+        })
+        .to_vec();
+    let record = wave_band(&build(SeaState::Components(components)), 0.9).unwrap();
+    assert!((record.low - 0.1).abs() < 1e-12 && (record.high - 0.3).abs() < 1e-12);
+    assert!((record.peak - 0.2).abs() < 1e-12);
 }

@@ -907,6 +907,54 @@ pub enum BodyKindSpec {
     Coupled,
 }
 
+/// `[[bodies.members]]`: a rigid cylinder on the body with side drag and added mass along it,
+/// drag and added mass at its wet ends, the buoyancy of its wet part and seabed contact
+/// (MoorDyn's rods); its mass is part of the body's.
+#[derive(Debug, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct MemberSpec {
+    /// End A in body axes from the body origin [m].
+    #[schemars(with = "[f64; 3]")]
+    pub end_a: Spanned<[f64; 3]>,
+    /// End B in body axes from the body origin [m].
+    #[schemars(with = "[f64; 3]")]
+    pub end_b: Spanned<[f64; 3]>,
+    /// Diameter [m].
+    #[schemars(with = "f64")]
+    pub diameter: Spanned<f64>,
+    /// Segments (lumped nodes at the ends and between them); default 1.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<i64>")]
+    pub segments: Option<Spanned<i64>>,
+    /// Normal drag coefficient on the diameter [-]; default 0.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub normal_drag: Option<Spanned<f64>>,
+    /// Normal added-mass coefficient [-]; default 0.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub normal_added_mass: Option<Spanned<f64>>,
+    /// Drag coefficient of each wet end on its area π d²/4 [-]; default 0.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub end_drag: Option<Spanned<f64>>,
+    /// Axial added-mass coefficient of each wet end on (2/3) π (d/2)³ [-]; default 0.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub end_added_mass: Option<Spanned<f64>>,
+}
+
+/// Which speed scales a body's quadratic drag.
+#[derive(Clone, Copy, Debug, Deserialize, Serialize, JsonSchema, PartialEq, Eq)]
+#[serde(rename_all = "kebab-case")]
+pub enum DragSpeedSpec {
+    /// Each axis by its own velocity component: F_i = −½ ρ (C A)_i |u_i| u_i.
+    Component,
+    /// Each axis by the magnitude of the relative velocity: F_i = −½ ρ (C A)_i |u| u_i (and
+    /// |Ω| for the rotations), as MoorDyn's bodies.
+    Magnitude,
+}
+
 /// An inertia tensor: principal moments or a full matrix.
 #[derive(Clone, Debug, Deserialize, Serialize, JsonSchema, PartialEq)]
 #[serde(untagged)]
@@ -1022,17 +1070,20 @@ pub struct BodySpec {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<[f64; 3]>")]
     pub orientation: Option<Spanned<[f64; 3]>>,
-    /// Mass [kg].
-    #[schemars(with = "f64")]
-    pub mass: Spanned<f64>,
+    /// Mass [kg]: required for a free body; a fixed, prescribed or coupled body may leave it
+    /// out (its own loads are not computed; default 0).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub mass: Option<Spanned<f64>>,
     /// Centre of gravity in body axes [m]; default the origin.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<[f64; 3]>")]
     pub centre_of_gravity: Option<Spanned<[f64; 3]>>,
     /// Inertia about the centre of gravity in body axes [kg·m²]: [Ixx, Iyy, Izz] or a full
-    /// symmetric 3×3 tensor.
-    #[schemars(with = "InertiaSpec")]
-    pub inertia: Spanned<InertiaSpec>,
+    /// symmetric 3×3 tensor; required for a free body, default 0 for the others.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<InertiaSpec>")]
+    pub inertia: Option<Spanned<InertiaSpec>>,
     /// Displaced volume; none by default (no buoyancy).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub displacement: Option<DisplacementSpec>,
@@ -1064,6 +1115,19 @@ pub struct BodySpec {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<[f64; 3]>")]
     pub drag_areas: Option<Spanned<[f64; 3]>>,
+    /// Which speed scales the quadratic drag: `"component"` (default, each axis its own
+    /// |u_i|) or `"magnitude"` (|u|, MoorDyn's bodies).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<DragSpeedSpec>")]
+    pub drag_speed: Option<Spanned<DragSpeedSpec>>,
+    /// Where added mass, fluid inertia and drag act, in body axes [m], for a `submerged`
+    /// displacement or none; default the centre of buoyancy.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<[f64; 3]>")]
+    pub hydrodynamic_centre: Option<Spanned<[f64; 3]>>,
+    /// Cylindrical members with their own lumped hydrodynamics (MoorDyn's rods).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub members: Vec<MemberSpec>,
     /// Thrust or control force; none by default.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub thrust: Option<ThrustSpec>,

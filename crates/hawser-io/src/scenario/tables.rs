@@ -152,10 +152,18 @@ pub fn read_rao_table(path: &Path) -> Result<RaoTable, String> {
             if groups.len() == 1 {
                 *headings = group.clone();
             } else if group != headings {
+                let list = |h: &[f64]| {
+                    h.iter()
+                        .map(|x| x.to_string())
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                };
                 return Err(format!(
-                    "{}: the rows for {v} list the headings {group:?} [deg], but the first \
-                     group lists {headings:?}: every period or frequency needs the same headings",
-                    at(line)
+                    "{}: the rows for {v} list the headings {} [deg], but the first group lists \
+                     {}: every period or frequency needs the same headings",
+                    at(line),
+                    list(group),
+                    list(headings)
                 ));
             }
         }

@@ -13,13 +13,19 @@
 //! is the fallback.
 //!
 //! Each mode is labelled by where its kinetic energy ½ φᵀ M φ sits: the share of each line
-//! (its interior nodes' rows) and of each free point, and within them the share along the
-//! static tangent (axial), in the plane of the line's static shape (in-plane: the vertical
-//! plane of a catenary), normal to it (out-of-plane), or, for a straight vertical line with
-//! no plane, transverse; for a point, vertical or horizontal. The owners with at least half
-//! the largest share take part in the label, and the ordinal counts the modes with the same
-//! direction and owners: "first in-plane mode of line L1", "second axial mode of lines L2
-//! and L3", "first vertical mode of point buoy".
+//! (its interior vectors' rows: node positions, and a `hermite` line's tangents), of each free
+//! point and of each free body, and within them the share along the static tangent (axial),
+//! in the plane of the line's static shape (in-plane: the vertical plane of a catenary),
+//! normal to it (out-of-plane), or, for a straight vertical line with no plane, transverse;
+//! for a point, vertical or horizontal; for a body, surge, sway, heave, roll, pitch or yaw in
+//! its own axes. The owners with at least half the largest share take part in the label, and
+//! the ordinal counts the modes with the same direction and owners: "first in-plane mode of
+//! line L1", "second axial mode of lines L2 and L3", "first vertical mode of point buoy",
+//! "first surge mode of body spar and lines L1 and L2".
+//!
+//! `dg` lines are not linearised (their unknowns are modal coefficients of q and v): their
+//! modes are those of the model's hermite twin ([`modal_twin`]), the same twin the statics
+//! solves first.
 
 use crate::error::ModalError;
 use crate::linalg::eigen::{EigenFailure, EigenPairs, SubspaceOptions, dense_generalized};
@@ -81,7 +87,35 @@ pub enum ModeDirection {
     Vertical,
     /// A point moving horizontally.
     Horizontal,
+    /// A body moving along its x axis.
+    Surge,
+    /// A body moving along its y axis.
+    Sway,
+    /// A body moving along its z axis.
+    Heave,
+    /// A body turning about its x axis.
+    Roll,
+    /// A body turning about its y axis.
+    Pitch,
+    /// A body turning about its z axis.
+    Yaw,
 }
+
+/// Every direction, in the order of the per-owner energy arrays of [`build_modes`].
+const DIRECTIONS: [ModeDirection; 12] = [
+    ModeDirection::Axial,
+    ModeDirection::InPlane,
+    ModeDirection::OutOfPlane,
+    ModeDirection::Transverse,
+    ModeDirection::Vertical,
+    ModeDirection::Horizontal,
+    ModeDirection::Surge,
+    ModeDirection::Sway,
+    ModeDirection::Heave,
+    ModeDirection::Roll,
+    ModeDirection::Pitch,
+    ModeDirection::Yaw,
+];
 
 impl ModeDirection {
     /// The word used in labels.
@@ -93,6 +127,12 @@ impl ModeDirection {
             ModeDirection::Transverse => "transverse",
             ModeDirection::Vertical => "vertical",
             ModeDirection::Horizontal => "horizontal",
+            ModeDirection::Surge => "surge",
+            ModeDirection::Sway => "sway",
+            ModeDirection::Heave => "heave",
+            ModeDirection::Roll => "roll",
+            ModeDirection::Pitch => "pitch",
+            ModeDirection::Yaw => "yaw",
         }
     }
 }
@@ -104,6 +144,8 @@ pub enum ModeOwner {
     Line(usize),
     /// A free point.
     Point(usize),
+    /// A free body.
+    Body(usize),
 }
 
 /// A mode's label.
@@ -135,6 +177,8 @@ pub struct Mode {
     pub line_shares: Vec<Real>,
     /// Kinetic-energy share of each free point, by point index [-] (0 for other points).
     pub point_shares: Vec<Real>,
+    /// Kinetic-energy share of each free body, by body index [-] (0 for other bodies).
+    pub body_shares: Vec<Real>,
     /// Kinetic-energy shares by direction over the label's owners [-].
     pub direction_shares: Vec<(ModeDirection, Real)>,
     /// Label.
@@ -142,25 +186,38 @@ pub struct Mode {
 }
 
 impl Mode {
-    /// Displacement of node `node` of line `line` in this mode's shape [m per unit modal
-    /// coordinate] (zero at ends on fixed or prescribed points).
+    /// Displacement of node `node` (0..=N) of line `line` in this mode's shape [m per unit
+    /// modal coordinate] (zero at ends on fixed or prescribed points; δr + δθ × ρ at an end on
+    /// a free body).
     pub fn node_displacement(&self, dofs: &DofMap, line: usize, node: usize) -> Vec3 {
-        dofs.node_group(line, node)
-            .map(|g| get3(&self.shape, g))
-            .unwrap_or_else(Vec3::zeros)
+        dofs.displacement(&self.shape, dofs.node_target(line, node))
     }
 
     /// Displacement of a point (zero for fixed and prescribed points).
     pub fn point_displacement(&self, dofs: &DofMap, point: usize) -> Vec3 {
-        dofs.point_group(point)
-            .map(|g| get3(&self.shape, g))
-            .unwrap_or_else(Vec3::zeros)
+        dofs.displacement(&self.shape, dofs.point_target(point))
     }
 
-    /// Largest nodal displacement magnitude of the shape (to scale it for display).
-    pub fn largest_displacement(&self) -> Real {
-        (0..self.shape.len() / 3)
-            .map(|g| get3(&self.shape, g).norm())
+    /// Translation of a free body's origin [m] and its small rotation [rad] about the global
+    /// axes in this mode's shape; `None` for other bodies.
+    pub fn body_motion(&self, dofs: &DofMap, body: usize) -> Option<(Vec3, Vec3)> {
+        let g = dofs.body_group(body)?;
+        Some((get3(&self.shape, g), get3(&self.shape, g + 1)))
+    }
+
+    /// Largest displacement magnitude of the shape's positions (line nodes, free points,
+    /// body origins; not tangents or rotations), to scale it for display.
+    pub fn largest_displacement(&self, dofs: &DofMap) -> Real {
+        dofs.owners
+            .iter()
+            .enumerate()
+            .filter(|(_, o)| {
+                !matches!(
+                    o,
+                    DofOwner::LineNode { tangent: true, .. } | DofOwner::BodyRotation { .. }
+                )
+            })
+            .map(|(g, _)| get3(&self.shape, g).norm())
             .fold(0.0, Real::max)
     }
 }
@@ -184,26 +241,39 @@ pub struct Modes {
     pub fallback: Option<String>,
 }
 
-/// Whether the modes of this system can be computed and labelled: every line `fe` (the
-/// labels and the linearisation's degrees of freedom are node positions; `hermite` tangents
-/// and `dg` modal coefficients are not labelled yet). Call it before linearising.
+/// Whether the modes of this system can be computed and labelled: no `dg` line (its unknowns
+/// are modal coefficients, not linearised; compute the modes of [`modal_twin`] instead). `fe`
+/// and `hermite` lines, free points and free bodies are. Call it before linearising.
 pub fn supported(system: &System) -> Result<(), ModalError> {
-    if let Some(&b) = system.free_bodies.first() {
-        return Err(ModalError::FreeBody {
-            body: system.bodies[b].body.name.clone(),
-        });
-    }
-    match system
-        .lines
-        .iter()
-        .find(|l| l.discretisation.bandwidth() > 1 || l.dg().is_some())
-    {
+    match system.lines.iter().find(|l| l.dg().is_some()) {
         Some(l) => Err(ModalError::Unsupported {
             line: l.name.clone(),
             formulation: l.discretisation.name(),
         }),
         None => Ok(()),
     }
+}
+
+/// The model whose modes stand for those of `model`'s `dg` lines: each `dg` line becomes a
+/// `hermite` line over the same sections with ⌈P/2⌉ (at least one) cubic elements per `dg`
+/// element of order P, the hermite twin that `dg` statics solves first
+/// (`System::statics_twin`); `None` when no line is `dg`. Its static state and modes converge
+/// to the `dg` line's as both meshes are refined.
+pub fn modal_twin(model: &crate::model::Model) -> Option<crate::model::Model> {
+    use crate::model::Formulation;
+    if !model.lines.iter().any(|l| l.formulation == Formulation::Dg) {
+        return None;
+    }
+    let mut twin = model.clone();
+    for l in twin.lines.iter_mut() {
+        if l.formulation == Formulation::Dg {
+            l.formulation = Formulation::Hermite;
+            for s in l.sections.iter_mut() {
+                s.elements *= s.order.div_ceil(2).max(1);
+            }
+        }
+    }
+    Some(twin)
 }
 
 /// The lowest `options.count` natural modes of the linearised system, labelled.
@@ -327,14 +397,20 @@ struct LineFrame {
     normal: Option<Vec3>,
 }
 
-fn line_frames(system: &System, state: &[Real]) -> Vec<LineFrame> {
+/// The lines' static frames and the bodies' static orientations (rotation matrices) at
+/// `state`.
+fn static_frames(system: &System, state: &[Real]) -> (Vec<LineFrame>, Vec<crate::math::Mat3>) {
     let mut ws = system.workspace();
     system.point_kinematics(0.0, state, &mut ws);
     system.gather_lines(state, &mut ws);
-    ws.lines
+    let frames = ws
+        .lines
         .iter()
-        .map(|lw| {
-            let r = &lw.position;
+        .zip(&system.lines)
+        .map(|(lw, l)| {
+            let r: Vec<Vec3> = (0..l.nodes())
+                .map(|i| lw.position[l.node_vector(i)])
+                .collect();
             let n = r.len() - 1;
             let chord = r[n] - r[0];
             let length: Real = r.windows(2).map(|w| (w[1] - w[0]).norm()).sum();
@@ -354,17 +430,35 @@ fn line_frames(system: &System, state: &[Real]) -> Vec<LineFrame> {
                 None => None,
             };
             LineFrame {
-                position: r.clone(),
+                position: r,
                 normal,
             }
         })
-        .collect()
+        .collect();
+    let orientations = ws
+        .bodies
+        .iter()
+        .map(|k| *k.orientation.to_rotation_matrix().matrix())
+        .collect();
+    (frames, orientations)
+}
+
+/// The node a vector of line `l` belongs to (its position or, for `hermite`, its tangent).
+fn vector_node(l: &crate::system::SystemLine, j: usize) -> usize {
+    let n = l.mesh.elements();
+    if l.vectors() == n + 1 {
+        j
+    } else if j >= 2 * n {
+        n
+    } else {
+        j / 2
+    }
 }
 
 fn build_modes(system: &System, lin: &Linearisation, pairs: &EigenPairs) -> Vec<Mode> {
     let map = &lin.dofs;
     let n = map.len();
-    let frames = line_frames(system, &lin.state);
+    let (frames, orientations) = static_frames(system, &lin.state);
     let mut mphi = vec![0.0; n];
     let mut out = Vec::new();
     for (c, &lambda) in pairs.values.iter().enumerate() {
@@ -379,21 +473,26 @@ fn build_modes(system: &System, lin: &Linearisation, pairs: &EigenPairs) -> Vec<
         lin.mass.apply(map, &shape, &mut mphi);
         let total: Real = shape.iter().zip(&mphi).map(|(a, b)| a * b).sum();
         let total = if total > 0.0 { total } else { 1.0 };
-        // Energies by owner and by direction (per owner).
+        // Energies by owner and by direction (per owner), in the order of DIRECTIONS.
         let mut line_shares = vec![0.0; system.lines.len()];
         let mut point_shares = vec![0.0; system.points.len()];
-        // [axial, in-plane, out-of-plane, transverse, vertical, horizontal] per owner.
-        let mut line_dirs = vec![[0.0; 6]; system.lines.len()];
-        let mut point_dirs = vec![[0.0; 6]; system.points.len()];
+        let mut body_shares = vec![0.0; system.bodies.len()];
+        let mut line_dirs = vec![[0.0; 12]; system.lines.len()];
+        let mut point_dirs = vec![[0.0; 12]; system.points.len()];
+        let mut body_dirs = vec![[0.0; 12]; system.bodies.len()];
         for (g, owner) in map.owners.iter().enumerate() {
             let u = get3(&shape, g);
             let p = get3(&mphi, g);
             let e = u.dot(&p) / total;
             match *owner {
-                DofOwner::LineNode { line, node } => {
+                DofOwner::LineNode { line, node, .. } => {
                     line_shares[line] += e;
                     let f = &frames[line];
-                    let t = (f.position[node + 1] - f.position[node - 1])
+                    // A tangent's energy is classified by the tangent it turns, a position's
+                    // by its node's.
+                    let k = vector_node(&system.lines[line], node);
+                    let last = f.position.len() - 1;
+                    let t = (f.position[(k + 1).min(last)] - f.position[k.saturating_sub(1)])
                         .try_normalize(0.0)
                         .unwrap_or_else(Vec3::z);
                     let axial = t.dot(&u) * t.dot(&p) / total;
@@ -417,6 +516,19 @@ fn build_modes(system: &System, lin: &Linearisation, pairs: &EigenPairs) -> Vec<
                     point_dirs[point][4] += vertical;
                     point_dirs[point][5] += e - vertical;
                 }
+                DofOwner::BodyTranslation { body } | DofOwner::BodyRotation { body } => {
+                    body_shares[body] += e;
+                    // Split along the body's own axes: R ᵀu · Rᵀp per axis.
+                    let r = &orientations[body];
+                    let (ub, pb) = (r.transpose() * u, r.transpose() * p);
+                    let first = match owner {
+                        DofOwner::BodyTranslation { .. } => 6,
+                        _ => 9,
+                    };
+                    for i in 0..3 {
+                        body_dirs[body][first + i] += ub[i] * pb[i] / total;
+                    }
+                }
             }
         }
         let mut owners: Vec<(ModeOwner, Real)> = line_shares
@@ -429,6 +541,12 @@ fn build_modes(system: &System, lin: &Linearisation, pairs: &EigenPairs) -> Vec<
                     .iter()
                     .map(|&p| (ModeOwner::Point(p), point_shares[p])),
             )
+            .chain(
+                system
+                    .free_bodies
+                    .iter()
+                    .map(|&b| (ModeOwner::Body(b), body_shares[b])),
+            )
             .collect();
         owners.sort_by(|a, b| b.1.total_cmp(&a.1));
         let top = owners.first().map(|o| o.1).unwrap_or(0.0);
@@ -437,25 +555,18 @@ fn build_modes(system: &System, lin: &Linearisation, pairs: &EigenPairs) -> Vec<
             .filter(|o| o.1 >= 0.5 * top)
             .map(|o| o.0)
             .collect();
-        let mut dirs = [0.0; 6];
+        let mut dirs = [0.0; 12];
         for o in &owners {
             let d = match *o {
                 ModeOwner::Line(l) => line_dirs[l],
                 ModeOwner::Point(p) => point_dirs[p],
+                ModeOwner::Body(b) => body_dirs[b],
             };
-            for k in 0..6 {
+            for k in 0..12 {
                 dirs[k] += d[k];
             }
         }
-        const ALL: [ModeDirection; 6] = [
-            ModeDirection::Axial,
-            ModeDirection::InPlane,
-            ModeDirection::OutOfPlane,
-            ModeDirection::Transverse,
-            ModeDirection::Vertical,
-            ModeDirection::Horizontal,
-        ];
-        let mut direction_shares: Vec<(ModeDirection, Real)> = ALL
+        let mut direction_shares: Vec<(ModeDirection, Real)> = DIRECTIONS
             .iter()
             .zip(dirs)
             .filter(|(_, s)| *s != 0.0)
@@ -474,6 +585,7 @@ fn build_modes(system: &System, lin: &Linearisation, pairs: &EigenPairs) -> Vec<
             shape,
             line_shares,
             point_shares,
+            body_shares,
             direction_shares,
             label: ModeLabel {
                 direction,
@@ -540,7 +652,17 @@ fn label_ordinals(system: &System, modes: &mut [Mode]) {
                 _ => None,
             })
             .collect();
+        let bodies: Vec<&str> = mode
+            .label
+            .owners
+            .iter()
+            .filter_map(|o| match o {
+                ModeOwner::Body(b) => Some(system.bodies[*b].body.name.as_str()),
+                _ => None,
+            })
+            .collect();
         let whom: Vec<String> = [
+            names("body", "bodies", bodies),
             names("line", "lines", lines),
             names("point", "points", points),
         ]

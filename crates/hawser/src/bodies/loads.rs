@@ -2,7 +2,7 @@
 
 use super::hydrostatics::{Section, Wetted, wetted_prism};
 use crate::math::{Mat3, Mat6, Real, Vec3, Vec6, skew};
-use crate::model::{Body, Displacement, RigidKinematics};
+use crate::model::{Body, Displacement, DragSpeed, RigidKinematics};
 use crate::physics::environment::Environment;
 
 /// The loads on a body and its mass matrix, in global axes, about the body origin: the body
@@ -39,9 +39,13 @@ struct Immersion {
     volume: Real,
     /// Submerged fraction V_sub / V of a shaped displacement; 1 for `Submerged` and `None`.
     fraction: Real,
-    /// Hydrodynamic centre: the centroid of the submerged volume (the centre of buoyancy
+    /// Where buoyancy acts: the centroid of the submerged volume (the centre of buoyancy
     /// when fully submerged, and for `Submerged` and `None`), from the body origin in global
     /// axes [m].
+    buoyancy_centre: Vec3,
+    /// Hydrodynamic centre P, where added mass, fluid inertia and drag act: the buoyancy
+    /// centre, or the body's `hydrodynamic_centre` when it gives one, from the body origin in
+    /// global axes [m].
     centre: Vec3,
 }
 
@@ -51,9 +55,10 @@ impl Body {
     /// axes, moments about the body origin; the equations of motion of the body alone are
     /// `mass · [a_o; α] = [force; moment]`. Allocates nothing.
     ///
-    /// With R the rotation of `k.orientation`, c = R c_b the centre of gravity, p the
-    /// hydrodynamic centre P (the centroid of the submerged volume, or the centre of buoyancy
-    /// when fully submerged), from the origin:
+    /// With R the rotation of `k.orientation`, c = R c_b the centre of gravity, b the centroid
+    /// of the submerged volume (the centre of buoyancy when fully submerged), p the
+    /// hydrodynamic centre P (b, or the body's `hydrodynamic_centre` when a `Submerged` body
+    /// or one without displacement gives it), from the origin:
     ///
     /// ```text
     /// M = [[m 1,      −m [c]× ],      + Jᵀ f blockdiag(R A_t Rᵀ, R A_r Rᵀ) J,
@@ -62,7 +67,7 @@ impl Body {
     ///
     /// F   = −m g ẑ + ρ g V_s ẑ + (ρ V_s 1 + f A_t) a_w − f A_t ω×(ω×p) + F_drag
     ///       + R F_thrust + F_wind − m ω×(ω×c) + F_bed
-    /// M_o = c × (−m g ẑ) + p × (ρ g V_s ẑ + (ρ V_s + f A_t) a_w − f A_t ω×(ω×p) + F_drag)
+    /// M_o = c × (−m g ẑ) + b × ρ g V_s ẑ + p × ((ρ V_s + f A_t) a_w − f A_t ω×(ω×p) + F_drag)
     ///       + R M_drag + R M_thrust + c_w × F_wind − ω × (I_o ω) + M_bed
     /// ```
     ///
@@ -76,9 +81,10 @@ impl Body {
     /// - a_w, u_w: the fluid acceleration and velocity at P (`env.fluid_acceleration`,
     ///   `env.fluid_velocity`): the Froude–Krylov force ρ V_s a_w plus the added-mass part
     ///   f A_t a_w, i.e. ρ V_s (1 + C_a,i) a_w,i per body axis.
-    /// - F_drag = R F_b with F_b,i = −f (L_i u_i + ½ ρ Q_i |u_i| u_i), u = Rᵀ (v_o + ω × p −
-    ///   u_w) the velocity relative to the water in body axes; M_drag likewise with
-    ///   Ω = Rᵀ ω and the coefficients L₄..₆, Q₄..₆.
+    /// - F_drag = R F_b with F_b,i = −f (L_i u_i + ½ ρ Q_i s_i u_i), u = Rᵀ (v_o + ω × p −
+    ///   u_w) the velocity relative to the water in body axes and s_i = |u_i|, or s_i = |u|
+    ///   with [`crate::model::DragSpeed::Magnitude`]; M_drag likewise with Ω = Rᵀ ω and the
+    ///   coefficients L₄..₆, Q₄..₆.
     /// - F_wind = ½ ρ_air (C_d A) |u| u, u = U_wind − (v_o + ω × c_w) at the wind centre
     ///   c_w = R c_w,b.
     /// - −m ω×(ω×c) and −ω×(I_o ω) are the rigid body's velocity-dependent inertial terms about
@@ -87,6 +93,9 @@ impl Body {
     ///
     /// - F_bed, M_bed: the seabed's contact force and its moment about the origin over the
     ///   body's shape ([`Body::seabed_contact`]), when the body reaches the bed.
+    ///
+    /// Members (MoorDyn's rods) add their lumped loads and added mass
+    /// ([`super::member_loads`]).
     ///
     /// Left out (docs/bodies.md): the velocity-dependent added-mass terms of Kirchhoff's
     /// equations (Munk moment), the rate of change of the added mass with submergence,
@@ -112,11 +121,21 @@ impl Body {
         let mut force = weight - m * w.cross(&w.cross(&c));
         let mut moment = c.cross(&weight) - w.cross(&(i_o * w));
 
-        // Water: buoyancy, added mass, fluid inertia, drag, all at the hydrodynamic centre.
+        // Water: buoyancy at the wet centroid; added mass, fluid inertia and drag at the
+        // hydrodynamic centre.
         let wet = self.immersion(k, &r, env, t);
         let p = wet.centre;
         let rho = env.water_density;
-        let mut at_p = rho * g * wet.volume * z;
+        let buoyancy = rho * g * wet.volume * z;
+        // Buoyancy joins the loads at P when it acts there (the sum keeps the results of
+        // runs bit for bit as before hydrodynamic centres existed), else acts on its own.
+        let mut at_p = if wet.buoyancy_centre == p {
+            buoyancy
+        } else {
+            force += buoyancy;
+            moment += wet.buoyancy_centre.cross(&buoyancy);
+            Vec3::zeros()
+        };
         let f = wet.fraction;
         if f > 0.0 {
             let a = &self.added_mass;
@@ -152,10 +171,15 @@ impl Body {
             let (lin, quad) = (&self.linear_drag, &self.quadratic_drag);
             let mut drag_force = Vec3::zeros();
             let mut drag_moment = Vec3::zeros();
+            let (speed, spin) = (u.norm(), omega.norm());
             for i in 0..3 {
-                drag_force[i] = -f * (lin[i] * u[i] + 0.5 * rho * quad[i] * u[i].abs() * u[i]);
-                drag_moment[i] = -f
-                    * (lin[3 + i] * omega[i] + 0.5 * rho * quad[3 + i] * omega[i].abs() * omega[i]);
+                let (s, w) = match self.drag_speed {
+                    DragSpeed::Component => (u[i].abs(), omega[i].abs()),
+                    DragSpeed::Magnitude => (speed, spin),
+                };
+                drag_force[i] = -f * (lin[i] * u[i] + 0.5 * rho * quad[i] * s * u[i]);
+                drag_moment[i] =
+                    -f * (lin[3 + i] * omega[i] + 0.5 * rho * quad[3 + i] * w * omega[i]);
             }
             at_p += r * drag_force;
             moment += r * drag_moment;
@@ -182,29 +206,36 @@ impl Body {
             moment += c.moment;
         }
 
-        BodyLoads {
+        let mut out = BodyLoads {
             force,
             moment,
             mass,
+        };
+        for member in &self.members {
+            super::members::member_loads(member, k, &r, env, t, &mut out);
         }
+        out
     }
 
     /// Submerged volume, fraction and hydrodynamic centre at pose `k` (rotation matrix `r`).
     fn immersion(&self, k: &RigidKinematics, r: &Mat3, env: &Environment, t: Real) -> Immersion {
         let b = r * self.centre_of_buoyancy;
+        let centre = r * self.hydrodynamic_centre.unwrap_or(self.centre_of_buoyancy);
         let (section, half_height) = match self.displacement {
             Displacement::None => {
                 return Immersion {
                     volume: 0.0,
                     fraction: 1.0,
-                    centre: b,
+                    buoyancy_centre: b,
+                    centre,
                 };
             }
             Displacement::Submerged { volume } => {
                 return Immersion {
                     volume,
                     fraction: 1.0,
-                    centre: b,
+                    buoyancy_centre: b,
+                    centre,
                 };
             }
             Displacement::Cylinder { radius, height } => (Section::Circle { radius }, 0.5 * height),
@@ -242,10 +273,12 @@ impl Body {
         };
         let n = Vec3::new(-sx, -sy, 1.0);
         let wetted: Wetted = wetted_prism(&section, half_height, &(r.transpose() * n), x_b.z - eta);
+        let wet_centroid = b + r * wetted.centroid;
         Immersion {
             volume: wetted.volume,
             fraction: wetted.volume / wetted.total_volume,
-            centre: b + r * wetted.centroid,
+            buoyancy_centre: wet_centroid,
+            centre: wet_centroid,
         }
     }
 }

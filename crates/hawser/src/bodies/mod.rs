@@ -32,10 +32,12 @@
 mod contact;
 mod hydrostatics;
 mod loads;
+mod members;
 
 pub use contact::SeabedContact;
 pub use hydrostatics::{CYLINDER_SIDES, Section, Wetted, wetted_prism};
 pub use loads::BodyLoads;
+pub use members::member_loads;
 
 use crate::math::{Quat, Real, Vec3};
 use crate::model::RigidKinematics;

@@ -17,13 +17,19 @@ pub struct EigenPairs {
 }
 
 /// Why an eigen solve failed.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum EigenFailure {
     /// The mass matrix (or a projection of it) is not positive definite.
+    #[error("the mass matrix is not positive definite")]
     MassNotDefinite,
     /// The shifted operator K − σM is singular at the shift.
+    #[error("the shifted stiffness K − σM is singular")]
     SingularShift,
     /// Subspace iteration did not reach the tolerance.
+    #[error(
+        "subspace iteration did not converge: residual {residual:.2e} after {iterations} \
+         iterations"
+    )]
     NotConverged {
         /// Iterations done.
         iterations: usize,

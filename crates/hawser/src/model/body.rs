@@ -73,6 +73,45 @@ impl Displacement {
     }
 }
 
+/// Which speed scales a body's quadratic drag along each axis.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum DragSpeed {
+    /// Each axis by its own component: F_i = −½ ρ Q_i |u_i| u_i (OrcaFlex's 6D buoys, and
+    /// hawser's default).
+    #[default]
+    Component,
+    /// Each axis by the magnitude of the relative velocity: F_i = −½ ρ Q_i |u| u_i, and
+    /// M_i = −½ ρ Q_{3+i} |Ω| Ω_i for the rotations: MoorDyn's bodies (`Body::doRHS`, drag
+    /// R diag(CdA) Rᵀ v |v|). For equal coefficients this is drag along the relative velocity.
+    Magnitude,
+}
+
+/// A rigid cylindrical member of a body (MoorDyn's rod): side drag and added mass on its
+/// length, drag and added mass at its wet ends, buoyancy of its wet part, vertical seabed
+/// contact, lumped at N + 1 nodes along it ([`crate::bodies::member_loads`]). Its mass is the
+/// body's: give the body's `mass`, centre of gravity and inertia with the member in them.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Member {
+    /// End A in body axes from the body origin [m].
+    pub end_a: Vec3,
+    /// End B in body axes from the body origin [m].
+    pub end_b: Vec3,
+    /// Diameter d [m].
+    pub diameter: Real,
+    /// Segments N ≥ 1: nodes at the ends and N − 1 between, each standing for its share of
+    /// the length (half a segment at an end).
+    pub segments: usize,
+    /// Normal drag coefficient C_dn on d per unit length [-].
+    pub normal_drag: Real,
+    /// Normal added-mass coefficient C_an on π d²/4 per unit length [-].
+    pub normal_added_mass: Real,
+    /// Drag coefficient of each wet end on its area π d²/4 [-] (MoorDyn's `CdEnd`).
+    pub end_drag: Real,
+    /// Added-mass coefficient of each wet end along the axis on the half-sphere volume
+    /// (2/3) π (d/2)³ [-] (MoorDyn's `CaEnd`).
+    pub end_added_mass: Real,
+}
+
 /// A body's thrust or control force, in body axes.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Thrust {
@@ -180,6 +219,17 @@ pub struct Body {
     /// C_i·A_i [m²] for the translations and C_i·A_i·L_i³ [m⁵] for the rotations (moment
     /// −½ ρ C A L³ |Ω_i| Ω_i); scaled by the submerged fraction like `added_mass`.
     pub quadratic_drag: Vec6,
+    /// Which speed multiplies the quadratic drag: each axis's own (default) or the magnitude
+    /// of the relative velocity (MoorDyn's bodies).
+    pub drag_speed: DragSpeed,
+    /// Where added mass, fluid inertia and drag act, in body axes from the origin [m], when
+    /// it is not the centre of buoyancy: only for a `Submerged` displacement or none (a
+    /// `Cylinder` or `Box` takes the centroid of its wet volume). MoorDyn's bodies put their
+    /// added mass and drag at the body origin and their buoyancy at the centre of gravity.
+    pub hydrodynamic_centre: Option<Vec3>,
+    /// Cylindrical members with their own hydrodynamics (MoorDyn's rods), beside the body's
+    /// displacement, added mass and drag above.
+    pub members: Vec<Member>,
     /// Thrust or control force.
     pub thrust: Thrust,
     /// Wind force, for vessels.
@@ -205,6 +255,9 @@ impl Body {
             added_mass: Vec6::zeros(),
             linear_drag: Vec6::zeros(),
             quadratic_drag: Vec6::zeros(),
+            drag_speed: DragSpeed::Component,
+            hydrodynamic_centre: None,
+            members: Vec::new(),
             thrust: Thrust::None,
             wind: None,
         }
@@ -220,10 +273,17 @@ impl Body {
     /// why. [`super::Model::validate`] calls it.
     pub fn check(&self) -> Result<(), (&'static str, String)> {
         let finite3 = |v: &Vec3| v.iter().all(|x| x.is_finite());
-        if !(self.mass > 0.0) || !self.mass.is_finite() {
+        // Only a free body's mass and inertia enter its motion; a fixed, prescribed or
+        // coupled one may leave them zero (MoorDyn's coupled bodies do).
+        let free = self.kind == BodyKind::Free;
+        if !self.mass.is_finite() || !(self.mass > 0.0 || (!free && self.mass == 0.0)) {
             return Err((
                 "mass",
-                format!("must be > 0 kg and finite, not {}", self.mass),
+                format!(
+                    "must be {} kg and finite, not {}",
+                    if free { "> 0" } else { "≥ 0" },
+                    self.mass
+                ),
             ));
         }
         let i = &self.inertia;
@@ -234,11 +294,27 @@ impl Body {
         if (i - i.transpose()).abs().max() > 1e-9 * scale {
             return Err(("inertia", "must be symmetric (I_xy = I_yx, ...)".into()));
         }
-        if i.cholesky().is_none() || !(scale > 0.0) {
+        if free && (i.cholesky().is_none() || !(scale > 0.0)) {
             return Err((
                 "inertia",
                 "must be positive definite (every principal moment > 0 kg·m²)".into(),
             ));
+        }
+        if let Some(p) = &self.hydrodynamic_centre {
+            if !finite3(p) {
+                return Err(("hydrodynamic_centre", "must be finite".into()));
+            }
+            if matches!(
+                self.displacement,
+                Displacement::Cylinder { .. } | Displacement::Box { .. }
+            ) {
+                return Err((
+                    "hydrodynamic_centre",
+                    "is the centroid of the wet volume for a cylinder or box displacement; \
+                     give it only with a submerged displacement or none"
+                        .into(),
+                ));
+            }
         }
         let q = &self.orientation;
         if !(finite3(&self.position) && q.w.is_finite() && finite3(&q.imag())) {
@@ -291,6 +367,30 @@ impl Body {
         }
         if !non_negative(&self.quadratic_drag) {
             return Err(("quadratic_drag", "must be ≥ 0 (m², m⁵) and finite".into()));
+        }
+        for m in &self.members {
+            let ok = finite3(&m.end_a)
+                && finite3(&m.end_b)
+                && (m.end_b - m.end_a).norm() > 0.0
+                && m.diameter > 0.0
+                && m.diameter.is_finite()
+                && m.segments >= 1
+                && [
+                    m.normal_drag,
+                    m.normal_added_mass,
+                    m.end_drag,
+                    m.end_added_mass,
+                ]
+                .iter()
+                .all(|c| *c >= 0.0 && c.is_finite());
+            if !ok {
+                return Err((
+                    "members",
+                    "a member needs distinct finite ends, a diameter > 0 m, at least one \
+                     segment and coefficients ≥ 0"
+                        .into(),
+                ));
+            }
         }
         match &self.thrust {
             Thrust::None => {}

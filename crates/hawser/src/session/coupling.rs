@@ -138,8 +138,8 @@ impl Session {
     ) -> Result<(), SimulationError> {
         if !self.coupling.points.contains(&point) {
             return Err(coupling_error(format!(
-                "point #{point} is not a coupled point (coupled: {:?})",
-                self.coupling.points
+                "point #{point} is not a coupled point (coupled points: {})",
+                index_list(&self.coupling.points)
             )));
         }
         if !position
@@ -175,8 +175,8 @@ impl Session {
     ) -> Result<(), SimulationError> {
         if !self.coupling.bodies.contains(&body) {
             return Err(coupling_error(format!(
-                "body #{body} is not a coupled body (coupled: {:?})",
-                self.coupling.bodies
+                "body #{body} is not a coupled body (coupled bodies: {})",
+                index_list(&self.coupling.bodies)
             )));
         }
         let k = kinematics;
@@ -268,6 +268,12 @@ impl Session {
     /// the sum of the end forces of the lines attached to it (each the end node's share of
     /// the line's forces less its share of the line's inertia, [`crate::System::end_force`]).
     pub fn point_reaction(&mut self, point: usize) -> Result<Vec3, SimulationError> {
+        if point >= self.system.points.len() {
+            return Err(coupling_error(format!(
+                "there is no point #{point} (the model has {})",
+                self.system.points.len()
+            )));
+        }
         self.stepper.evaluate(&self.system)?;
         let ws = self.stepper.workspace();
         let mut f = Vec3::zeros();
@@ -285,6 +291,12 @@ impl Session {
     /// The load the lines put on body `body` through the points on it at the session's time:
     /// force [N] and moment about the body origin [N·m], global axes.
     pub fn body_reaction(&mut self, body: usize) -> Result<[Real; 6], SimulationError> {
+        if body >= self.system.bodies.len() {
+            return Err(coupling_error(format!(
+                "there is no body #{body} (the model has {})",
+                self.system.bodies.len()
+            )));
+        }
         Ok(self.view()?.body_line_load(body))
     }
 
@@ -312,4 +324,16 @@ impl Session {
         }
         Ok(())
     }
+}
+
+/// `#0, #2, #5`, or `none`.
+fn index_list(indices: &[usize]) -> String {
+    if indices.is_empty() {
+        return "none".into();
+    }
+    indices
+        .iter()
+        .map(|i| format!("#{i}"))
+        .collect::<Vec<_>>()
+        .join(", ")
 }

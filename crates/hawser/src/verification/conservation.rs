@@ -97,7 +97,7 @@ fn response(system: &System, model: &Model, y: &[Real]) -> Result<Response, Case
     let mut dy = vec![0.0; y.len()];
     system
         .rhs(0.0, y, &mut dy, &mut ws)
-        .map_err(|l| CaseError::Failed(format!("singular mass matrix at {l:?}")))?;
+        .map_err(|l| CaseError::Failed(format!("singular mass matrix at {l}")))?;
     let n = model.lines[0].elements();
     let strain = (0..n)
         .map(|element| Channel::ElementStrain { line: 0, element }.value(system, &ws))
@@ -220,8 +220,8 @@ pub fn rigid_rotation(f: Formulation, fidelity: Fidelity) -> Result<Findings, Ca
     let run = rigid_motion_objectivity(f, MassMatrix::Consistent, motions)?;
     if !(run.strain_range.0 < 0.0 && run.strain_range.1 > 0.0) {
         return Err(CaseError::Failed(format!(
-            "the configuration must have slack and taut elements: strains {:?}",
-            run.strain_range
+            "the configuration must have slack and taut elements: strains from {} to {}",
+            run.strain_range.0, run.strain_range.1
         )));
     }
     let spin = if f == Formulation::Dg {

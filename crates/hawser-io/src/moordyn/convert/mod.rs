@@ -26,14 +26,18 @@ use std::ops::Range;
 use std::path::{Path, PathBuf};
 use toml::Spanned;
 
+mod bodies;
 mod line_types;
 mod options;
 mod outputs;
+mod rods;
 mod water;
+use bodies::{DeckBody, DeckBodyKind, body_name, convert_bodies, finish_bodies};
 use line_types::convert_line_types;
 use options::{environment_of, read_options, simulation_of};
 use outputs::convert_outputs;
 pub use outputs::output_channel;
+use rods::{convert_rod_types, convert_rods};
 
 /// Choices a deck does not make (a deck is driven by a host program that owns them).
 #[derive(Clone, Debug, Default)]
@@ -278,8 +282,8 @@ impl<'a> Converter<'a> {
             )
             .value(s.title.text.clone())
             .hint(format!(
-                "hawser cannot run this deck with its {} row{} yet; remove the section to run the \
-                 rest, or model it in a hawser scenario",
+                "hawser does not run this section's {} row{}; remove the section to run the rest \
+                 of the deck, or model it in a hawser scenario",
                 s.rows.len(),
                 if s.rows.len() == 1 { "" } else { "s" }
             ));
@@ -316,12 +320,8 @@ pub fn convert(
             c.errors.push(d);
         }
         seen.push(s.kind);
-        match s.kind {
-            SectionKind::RodTypes => c.refuse_section(s, "rods need rigid-body support (planned)"),
-            SectionKind::Rods => c.refuse_section(s, "rods need rigid-body support (planned)"),
-            SectionKind::Bodies => c.refuse_section(s, "rigid bodies are not available yet"),
-            SectionKind::Unsupported => c.refuse_section(s, "hawser does not read this section"),
-            _ => {}
+        if s.kind == SectionKind::Unsupported {
+            c.refuse_section(s, "hawser does not read this section");
         }
     }
     let line_types = match deck.section(SectionKind::LineTypes) {
@@ -341,12 +341,47 @@ pub fn convert(
         .map(|s| s.rows.as_slice())
         .unwrap_or(&[]);
     let opts = read_options(&mut c, option_rows);
-    let (points, coupled) = match deck.section(SectionKind::Points) {
-        Some(s) => convert_points(&mut c, s, vessel.as_ref()),
+    let rho = opts
+        .get(&["rho", "wtrdnsty"])
+        .and_then(|(t, _)| parse_number(&t.text))
+        .unwrap_or(1025.0);
+    let mut deck_bodies = match deck.section(SectionKind::Bodies) {
+        Some(s) if s.rows.is_empty() => {
+            let line = c.line_of(&s.title.span);
+            c.note(line, format!("section `{}` is empty", s.title.text));
+            Vec::new()
+        }
+        Some(s) => convert_bodies(&mut c, s, rho, vessel.as_ref()),
+        None => Vec::new(),
+    };
+    for kind in [SectionKind::RodTypes, SectionKind::Rods] {
+        if let Some(s) = deck.section(kind)
+            && s.rows.is_empty()
+        {
+            let line = c.line_of(&s.title.span);
+            c.note(line, format!("section `{}` is empty", s.title.text));
+        }
+    }
+    let rod_types = match deck.section(SectionKind::RodTypes) {
+        Some(s) => convert_rod_types(&mut c, s),
+        None => Default::default(),
+    };
+    let rod_ends = match deck.section(SectionKind::Rods) {
+        Some(s) => convert_rods(&mut c, s, &rod_types, &mut deck_bodies, vessel.as_ref()),
+        None => Default::default(),
+    };
+    let (mut points, coupled) = match deck.section(SectionKind::Points) {
+        Some(s) => convert_points(&mut c, s, vessel.as_ref(), &mut deck_bodies),
         None => (Vec::new(), 0),
     };
+    points.extend(rod_ends.points);
+    let body_kinds: Vec<(String, bool)> = deck_bodies
+        .iter()
+        .map(|b| (b.name.clone(), b.kind == DeckBodyKind::Free))
+        .collect();
+    let bodies = finish_bodies(&mut c, deck_bodies);
     let (lines, line_outputs) = match deck.section(SectionKind::Lines) {
-        Some(s) => convert_lines(&mut c, s, &points),
+        Some(s) => convert_lines(&mut c, s, &points, &rod_ends.refused),
         None => (Vec::new(), false),
     };
     if deck.section(SectionKind::Lines).is_none() {
@@ -357,7 +392,7 @@ pub fn convert(
         c.errors.push(d);
     }
     let channels = match deck.section(SectionKind::Outputs) {
-        Some(s) if !lines.is_empty() => convert_outputs(&mut c, s, &lines),
+        Some(s) if !lines.is_empty() => convert_outputs(&mut c, s, &lines, &body_kinds),
         _ => Vec::new(),
     };
     let environment = environment_of(&mut c, &opts, dir, &points);
@@ -383,7 +418,7 @@ pub fn convert(
             line_types,
             points,
             lines,
-            bodies: Vec::new(),
+            bodies,
             obstacles: Vec::new(),
         },
         notes: c.notes,
@@ -401,10 +436,48 @@ pub(super) fn line_name(id: &str) -> String {
     format!("L{id}")
 }
 
+/// The motion of a deck's coupled object run alone: held (`fixed`), or riding on the vessel
+/// of `--vessel-motion`; `word` is the deck word (type column) it comes from.
+fn rigid_motion_spec(word: &Token, vessel: Option<&VesselFile>) -> MotionSpec {
+    MotionSpec {
+        kind: spanned(
+            word,
+            if vessel.is_some() {
+                MotionKind::VesselMotion
+            } else {
+                MotionKind::Fixed
+            },
+        ),
+        velocity: None,
+        amplitude: None,
+        period: None,
+        frequency: None,
+        phase: None,
+        ramp_time: None,
+        radius: None,
+        plane: None,
+        table: None,
+        file: vessel.map(|v| spanned(word, v.path.display().to_string())),
+        time_offset: vessel.map(|v| spanned(word, v.time_offset)),
+        start: None,
+        heading: None,
+        speed: None,
+        speed_knots: None,
+        straight_before: None,
+        turn_radius: None,
+        turn_angle: None,
+        straight_after: None,
+        build_up_time: None,
+        transition_length: None,
+        mean: None,
+    }
+}
+
 fn convert_points(
     c: &mut Converter,
     s: &Section,
     vessel: Option<&VesselFile>,
+    bodies: &mut [DeckBody],
 ) -> (Vec<PointSpec>, usize) {
     const S: &str = "POINTS";
     let mut out = Vec::new();
@@ -459,19 +532,52 @@ fn convert_points(
             c.name_key(key(field), format!("{S} › {} › {col}", t[0].text));
         }
         let kind_word = t[1].text.to_lowercase();
+        let mut on_body: Option<usize> = None;
         let base = kind_word.trim_end_matches(|ch: char| ch.is_ascii_digit());
         let kind = match base {
             "fixed" | "fix" | "anchor" => Some(PointKindSpec::Fixed),
             "free" | "connect" | "con" | "point" => Some(PointKindSpec::Free),
             "coupled" | "vessel" | "ves" | "cpld" | "fairlead" => Some(PointKindSpec::Prescribed),
-            "body" | "turbine" => {
+            "body" => {
+                let number = &kind_word[base.len()..];
+                match bodies.iter().position(|b| b.name == body_name(number)) {
+                    Some(b) => {
+                        on_body = Some(b);
+                        Some(PointKindSpec::Body)
+                    }
+                    None => {
+                        let ids: Vec<&str> = bodies
+                            .iter()
+                            .filter_map(|b| b.name.strip_prefix('B'))
+                            .collect();
+                        let d = c
+                            .diag(
+                                Some(t[1].span.clone()),
+                                &format!("{S} › {} › Type", t[0].text),
+                                format!(
+                                    "point {} is on body `{}`, which is not in the BODIES table",
+                                    t[0].text, t[1].text
+                                ),
+                            )
+                            .expected(if ids.is_empty() {
+                                "a BODIES section with the body".to_string()
+                            } else {
+                                format!("Body1 … with a body ID: {}", ids.join(", "))
+                            })
+                            .hint("points on a body are `Body#`, # the body's ID in BODIES");
+                        c.errors.push(d);
+                        None
+                    }
+                }
+            }
+            "turbine" => {
                 let d = c
                     .diag(
                         Some(t[1].span.clone()),
                         &format!("{S} › {} › Type", t[0].text),
-                        format!("point {} is attached to a body (`{}`)", t[0].text, t[1].text),
+                        format!("point {} is on a FAST.Farm turbine (`{}`)", t[0].text, t[1].text),
                     )
-                    .hint("rigid bodies are not available yet; make the point `Coupled` to drive it with a vessel motion, or `Fixed`");
+                    .hint("turbine points are moved by FAST.Farm; make the point `Coupled` to drive it with a vessel motion, or `Fixed`");
                 c.errors.push(d);
                 None
             }
@@ -503,6 +609,72 @@ fn convert_points(
             [x.unwrap_or(0.0), y.unwrap_or(0.0), z.unwrap_or(0.0)],
         );
         let Some(kind) = kind else { continue };
+        if let Some(b) = on_body {
+            // Its mass and buoyancy are the body's; drag, added mass and a force at a point
+            // have no place in a body's loads.
+            let body = &mut bodies[b];
+            let extra = [(cda, "CdA", &t[7]), (ca, "Ca", &t[8])]
+                .into_iter()
+                .chain(force.as_ref().map(|f| {
+                    let any = f.get_ref().iter().any(|x| *x != 0.0);
+                    (any.then_some(1.0), "FX FY FZ", &t[2])
+                }))
+                .find(|(v, _, _)| v.is_some_and(|x| x != 0.0));
+            if body.kind == DeckBodyKind::Free {
+                if let Some((_, col, tok)) = extra {
+                    let d = c
+                        .diag(
+                            Some(tok.span.clone()),
+                            &format!("{S} › {} › {col}", t[0].text),
+                            format!(
+                                "point {} on free body {} has {col}: a point's own drag, added \
+                                 mass or force on a body is not modelled",
+                                t[0].text, body.name
+                            ),
+                        )
+                        .expected(format!("{col} = 0"))
+                        .hint(
+                            "give the body its drag and added mass in BODIES (CdA, Ca), and set \
+                             the point's to 0",
+                        );
+                    c.errors.push(d);
+                }
+                body.fold(bodies::Part {
+                    centre: hawser::math::Vec3::new(
+                        x.unwrap_or(0.0),
+                        y.unwrap_or(0.0),
+                        z.unwrap_or(0.0),
+                    ),
+                    mass: mass.unwrap_or(0.0),
+                    inertia: hawser::math::Mat3::zeros(),
+                    volume: volume.unwrap_or(0.0),
+                });
+            } else if extra.is_some() || [mass, volume].iter().any(|v| v.is_some_and(|x| x != 0.0))
+            {
+                c.note(
+                    row.line,
+                    format!(
+                        "point {}: Mass, Volume, CdA, Ca and force have no effect on a point of \
+                         a `{}` body",
+                        t[0].text,
+                        bodies[b].type_word()
+                    ),
+                );
+            }
+            out.push(PointSpec {
+                name: spanned(&t[0], name),
+                kind: spanned(&t[1], kind),
+                position: Some(position),
+                mass: None,
+                volume: None,
+                drag_area: None,
+                added_mass_coefficient: None,
+                force: None,
+                motion: None,
+                body: Some(spanned(&t[1], bodies[b].name.clone())),
+            });
+            continue;
+        }
         let free = kind == PointKindSpec::Free;
         let f = |v: Option<f64>, tok: &Token| v.filter(|_| free).map(|x| spanned(tok, x));
         if !free
@@ -524,38 +696,7 @@ fn convert_points(
                 text: String::new(),
                 span: t[1].span.clone(),
             };
-            MotionSpec {
-                kind: spanned(
-                    &word,
-                    if vessel.is_some() {
-                        MotionKind::VesselMotion
-                    } else {
-                        MotionKind::Fixed
-                    },
-                ),
-                velocity: None,
-                amplitude: None,
-                period: None,
-                frequency: None,
-                phase: None,
-                ramp_time: None,
-                radius: None,
-                plane: None,
-                table: None,
-                file: vessel.map(|v| spanned(&word, v.path.display().to_string())),
-                time_offset: vessel.map(|v| spanned(&word, v.time_offset)),
-                start: None,
-                heading: None,
-                speed: None,
-                speed_knots: None,
-                straight_before: None,
-                turn_radius: None,
-                turn_angle: None,
-                straight_after: None,
-                build_up_time: None,
-                transition_length: None,
-                mean: None,
-            }
+            rigid_motion_spec(&word, vessel)
         });
         out.push(PointSpec {
             name: spanned(&t[0], name),
@@ -618,7 +759,12 @@ impl VesselFile {
     }
 }
 
-fn convert_lines(c: &mut Converter, s: &Section, points: &[PointSpec]) -> (Vec<LineSpec>, bool) {
+fn convert_lines(
+    c: &mut Converter,
+    s: &Section,
+    points: &[PointSpec],
+    refused_rod_ends: &[String],
+) -> (Vec<LineSpec>, bool) {
     const S: &str = "LINES";
     let mut out = Vec::new();
     let mut any_outputs = false;
@@ -646,26 +792,48 @@ fn convert_lines(c: &mut Converter, s: &Section, points: &[PointSpec]) -> (Vec<L
                 .iter()
                 .find_map(|p| w.strip_prefix(p).filter(|r| r.parse::<u64>().is_ok()))
                 .or_else(|| w.parse::<u64>().is_ok().then_some(w.as_str()));
-            match number {
-                Some(n) => spanned(tok, point_name(n)),
-                None => {
-                    let rod = w.starts_with('r');
+            // A rod end: R#A, R#B, Rod#A, Rod#B.
+            let rod_end = ["rod", "r"].iter().find_map(|p| {
+                let rest = w.strip_prefix(p)?;
+                let digits = rest.trim_end_matches(['a', 'b']);
+                let end = &rest[digits.len()..];
+                (digits.parse::<u64>().is_ok() && (end == "a" || end == "b"))
+                    .then(|| format!("R{digits}{}", end.to_uppercase()))
+            });
+            match (number, rod_end) {
+                (Some(n), _) => spanned(tok, point_name(n)),
+                (None, Some(end)) => {
+                    if !points.iter().any(|p| p.name.get_ref() == &end)
+                        && !refused_rod_ends.contains(&end)
+                    {
+                        let d = c
+                            .diag(
+                                Some(tok.span.clone()),
+                                &format!("{S} › {id} › {col}"),
+                                format!(
+                                    "line {id} is attached to `{}`, an end of a rod that is not \
+                                     in the RODS table",
+                                    tok.text
+                                ),
+                            )
+                            .expected("R#A or R#B with a rod ID of the RODS table")
+                            .hint("rod ends are R#A and R#B, # the rod's ID in RODS");
+                        c.errors.push(d);
+                    }
+                    spanned(tok, end)
+                }
+                (None, None) => {
                     let d = c
                         .diag(
                             Some(tok.span.clone()),
                             &format!("{S} › {id} › {col}"),
-                            if rod {
-                                format!("line {id} is attached to a rod end (`{}`); rods are not available yet", tok.text)
-                            } else {
-                                format!("`{}` is not a point", tok.text)
-                            },
+                            format!("`{}` is not a point or a rod end", tok.text),
                         )
-                        .expected("a point ID from the POINTS table: 3, P3, Point3, C3 or Con3")
-                        .hint(if rod {
-                            "attach the line to a Coupled or Fixed point instead of the rod"
-                        } else {
-                            "lines attach to points by their ID"
-                        });
+                        .expected(
+                            "a point ID from the POINTS table (3, P3, Point3, C3 or Con3) or a \
+                             rod end (R1A, R1B)",
+                        )
+                        .hint("lines attach to points by their ID and to rods by R#A or R#B");
                     c.errors.push(d);
                     spanned(tok, tok.text.clone())
                 }
@@ -696,10 +864,12 @@ fn convert_lines(c: &mut Converter, s: &Section, points: &[PointSpec]) -> (Vec<L
             && l < 0.0
         {
             // MoorDyn: a negative length is a multiple of the distance between the ends.
+            // Points on bodies are placed by their body: their positions are in its axes.
             let at = |name: &str| {
                 points
                     .iter()
                     .find(|p| p.name.get_ref() == name)
+                    .filter(|p| *p.kind.get_ref() != PointKindSpec::Body)
                     .and_then(|p| p.position.as_ref().map(|x| *x.get_ref()))
             };
             if let (Some(a), Some(b)) = (at(end_a.get_ref()), at(end_b.get_ref())) {
@@ -715,6 +885,22 @@ fn convert_lines(c: &mut Converter, s: &Section, points: &[PointSpec]) -> (Vec<L
                         -l * span
                     ),
                 );
+            } else {
+                let d = c
+                    .diag(
+                        Some(t[4].span.clone()),
+                        &format!("{S} › {id} › UnstrLen"),
+                        format!(
+                            "line {id}: UnstrLen {} < 0 is a multiple of the distance between \
+                             its ends, and an end on a body has no place before the body is \
+                             placed",
+                            t[4].text
+                        ),
+                    )
+                    .expected("the unstretched length in m, > 0")
+                    .hint("give the length in metres");
+                c.errors.push(d);
+                length = Some(1.0);
             }
         }
         let segments = c.count(&t[5], &format!("{S} › {id}"), "NumSegs");

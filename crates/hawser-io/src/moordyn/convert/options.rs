@@ -161,6 +161,7 @@ pub(super) fn environment_of(
     // MoorDyn: the depth is at least that of the deepest point (0 when not given).
     let deepest = points
         .iter()
+        .filter(|p| *p.kind.get_ref() != PointKindSpec::Body)
         .filter_map(|p| p.position.as_ref())
         .map(|x| (-x.get_ref()[2], x.span()))
         .fold(None, |m: Option<(f64, Range<usize>)>, (d, s)| match m {

@@ -11,6 +11,7 @@ pub(super) fn convert_outputs(
     c: &mut Converter,
     s: &Section,
     lines: &[LineSpec],
+    bodies: &[(String, bool)],
 ) -> Vec<Spanned<String>> {
     let segments = |line: &str| {
         lines
@@ -21,13 +22,40 @@ pub(super) fn convert_outputs(
     let mut out = Vec::new();
     for row in &s.rows {
         for t in &row.tokens {
-            match output_channel(&t.text, segments) {
-                Ok(spec) => out.push(spanned(t, format!("{} = {spec}", t.text))),
+            let body = |name: &str| bodies.iter().find(|b| b.0 == name).map(|b| b.1);
+            match output_channel(&t.text, segments, body) {
+                Ok(spec) => {
+                    if spec.ends_with(".wx") || spec.ends_with(".wy") || spec.ends_with(".wz") {
+                        let line = c.line_of(&t.span);
+                        c.note(
+                            line,
+                            format!(
+                                "output `{}`: hawser's angular velocity is in rad/s, MoorDyn's in deg/s",
+                                t.text
+                            ),
+                        );
+                    }
+                    if spec.ends_with(".roll") || spec.ends_with(".pitch") || spec.ends_with(".yaw")
+                    {
+                        let line = c.line_of(&t.span);
+                        c.note(
+                            line,
+                            format!(
+                                "output `{}`: hawser's roll, pitch, yaw are the angles of \
+                                 R = R_z R_y R_x, MoorDyn's of R = R_x R_y R_z; they differ at \
+                                 second order when the body turns about two axes",
+                                t.text
+                            ),
+                        );
+                    }
+                    out.push(spanned(t, format!("{} = {spec}", t.text)))
+                }
                 Err(msg) => {
                     let d = c
                         .diag(Some(t.span.clone()), "OUTPUTS", msg)
                         .expected(
-                            "FairTen#, AnchTen#, L#N#PX|PY|PZ|VX|VY|VZ|T, P#PX|PY|PZ|VX|VY|VZ",
+                            "FairTen#, AnchTen#, L#N#PX|PY|PZ|VX|VY|VZ|T, P#PX|PY|PZ|VX|VY|VZ, \
+                             B#PX|PY|PZ|RX|RY|RZ|VX|VY|VZ|RVX|RVY|RVZ",
                         )
                         .hint("# is the line, node or point number, e.g. FairTen1, L1N20T, P4PZ");
                     c.errors.push(d);
@@ -39,11 +67,13 @@ pub(super) fn convert_outputs(
 }
 
 /// The hawser channel of a MoorDyn output name (case-insensitive, as in MoorDyn-C 2.7's
-/// `decomposeString`); `segments` gives a line's segment count by its scenario name.
+/// `decomposeString`); `segments` gives a line's segment count by its scenario name, `body`
+/// whether a body (by its scenario name) is free (`None`: no such body).
 /// The tension `T` of an end node is MoorDyn's |Fnet| of that node (`node_force`).
 pub fn output_channel(
     name: &str,
     segments: impl Fn(&str) -> Option<usize>,
+    body: impl Fn(&str) -> Option<bool>,
 ) -> Result<String, String> {
     let u = name.to_uppercase();
     let split_num = |s: &str| -> Option<(String, String)> {
@@ -141,8 +171,49 @@ pub fn output_channel(
             "`{name}`: MoorDyn v2 names point channels P<point><quantity> (Con/C are v1 names)"
         ));
     }
-    if u.starts_with('R') || u.starts_with('B') {
-        return Err(format!("`{name}`: rods and bodies are not available yet"));
+    let body_rest = u
+        .strip_prefix("BODY")
+        .or_else(|| u.strip_prefix('B'))
+        .and_then(split_num);
+    if let Some((b, q)) = body_rest {
+        let scenario_name = super::body_name(&b);
+        let Some(free) = body(&scenario_name) else {
+            return Err(format!("`{name}`: there is no body {b}"));
+        };
+        let channel = match q.as_str() {
+            "PX" => "x",
+            "PY" => "y",
+            "PZ" => "z",
+            "RX" => "roll",
+            "RY" => "pitch",
+            "RZ" => "yaw",
+            "VX" => "vx",
+            "VY" => "vy",
+            "VZ" => "vz",
+            "RVX" => "wx",
+            "RVY" => "wy",
+            "RVZ" => "wz",
+            "FX" | "FY" | "FZ" | "MX" | "MY" | "MZ" if !free => {
+                return Ok(format!("{scenario_name}.{}", q.to_lowercase()));
+            }
+            "FX" | "FY" | "FZ" | "MX" | "MY" | "MZ" => {
+                return Err(format!(
+                    "`{name}`: MoorDyn's force on a free body is the net of its weight, \
+                     buoyancy, drag and lines; hawser records the lines' load on it \
+                     (`{scenario_name}.fx` … `.mz` in a scenario), a different quantity"
+                ));
+            }
+            _ => {
+                return Err(format!(
+                    "`{name}`: body quantity `{q}` is not available (PX, PY, PZ, RX, RY, RZ, VX, \
+                     VY, VZ, RVX, RVY, RVZ; FX … MZ of fixed and coupled bodies)"
+                ));
+            }
+        };
+        return Ok(format!("{scenario_name}.{channel}"));
+    }
+    if u.starts_with('R') {
+        return Err(format!("`{name}`: rod channels are not available"));
     }
     Err(format!("unknown MoorDyn output channel `{name}`"))
 }

@@ -3,7 +3,7 @@
 use super::{Builder, Check, NON_NEGATIVE, POSITIVE, build_rigid_motion, span_of};
 use crate::scenario::schema::*;
 use hawser::math::{Mat3, Quat, Vec3, Vec6};
-use hawser::model::{Body, BodyKind, Displacement, RigidMotion, Thrust, Wind};
+use hawser::model::{Body, BodyKind, Displacement, DragSpeed, Member, RigidMotion, Thrust, Wind};
 use hawser::physics::environment::Environment;
 use std::collections::HashMap;
 use toml::Spanned;
@@ -124,15 +124,37 @@ pub(super) fn build_bodies(
             }
             None => Quat::identity(),
         };
-        let mass = b.num(
-            &s.mass,
-            &k("mass"),
-            Check {
-                ok: POSITIVE,
-                expected: "kg, > 0",
-            },
-            "the body's mass in air, without added mass",
-        );
+        let free = *s.kind.get_ref() == BodyKindSpec::Free;
+        // A free body needs its mass and inertia; the others' own loads are not computed.
+        for (key, given) in [("mass", s.mass.is_some()), ("inertia", s.inertia.is_some())] {
+            if free && !given {
+                let d = b
+                    .diag(
+                        Some(s.kind.span()),
+                        &k(key),
+                        format!("free body `{name}` has no `{key}`"),
+                    )
+                    .expected(match key {
+                        "mass" => "the mass in air in kg, > 0",
+                        _ => "[Ixx, Iyy, Izz] about the centre of gravity in kg·m²",
+                    })
+                    .hint("a free body moves under its mass and inertia: give both");
+                b.push(d);
+            }
+        }
+        let mass = match &s.mass {
+            Some(m) => b.num(
+                m,
+                &k("mass"),
+                Check {
+                    ok: if free { POSITIVE } else { NON_NEGATIVE },
+                    expected: if free { "kg, > 0" } else { "kg, ≥ 0" },
+                },
+                "the body's mass in air, without added mass",
+            ),
+            None if free => 1.0,
+            None => 0.0,
+        };
         let centre = |b: &mut Builder, v: &Option<Spanned<[f64; 3]>>, key: &str| {
             v.as_ref()
                 .map(|v| b.vec3(v, &k(key)))
@@ -140,7 +162,43 @@ pub(super) fn build_bodies(
         };
         let centre_of_gravity = centre(b, &s.centre_of_gravity, "centre_of_gravity");
         let centre_of_buoyancy = centre(b, &s.centre_of_buoyancy, "centre_of_buoyancy");
-        let inertia = build_inertia(b, &s.inertia, &k("inertia"));
+        let inertia = match &s.inertia {
+            Some(i) => build_inertia(b, i, &k("inertia"), free),
+            None if free => Mat3::identity(),
+            None => Mat3::zeros(),
+        };
+        if let Some(p) = &s.hydrodynamic_centre
+            && matches!(
+                s.displacement.as_ref().map(|d| *d.kind.get_ref()),
+                Some(DisplacementKind::Cylinder | DisplacementKind::Box)
+            )
+        {
+            let d = b
+                .diag(
+                    Some(p.span()),
+                    &k("hydrodynamic_centre"),
+                    "`hydrodynamic_centre` is for a `submerged` displacement or none",
+                )
+                .hint(
+                    "a cylinder or box takes its added mass, fluid inertia and drag at the \
+                     centroid of its wet volume: remove the key",
+                );
+            b.push(d);
+        }
+        let hydrodynamic_centre = s
+            .hydrodynamic_centre
+            .as_ref()
+            .map(|p| b.vec3(p, &k("hydrodynamic_centre")));
+        let members = s
+            .members
+            .iter()
+            .enumerate()
+            .map(|(j, m)| build_member(b, m, &k(&format!("members[{j}]"))))
+            .collect();
+        let drag_speed = match s.drag_speed.as_ref().map(|d| *d.get_ref()) {
+            Some(DragSpeedSpec::Magnitude) => DragSpeed::Magnitude,
+            _ => DragSpeed::Component,
+        };
         let displacement = match &s.displacement {
             Some(d) => build_displacement(b, d, &k("displacement")),
             None => Displacement::None,
@@ -304,6 +362,9 @@ pub(super) fn build_bodies(
             added_mass,
             linear_drag,
             quadratic_drag,
+            drag_speed,
+            hydrodynamic_centre,
+            members,
             thrust,
             wind,
         });
@@ -311,8 +372,89 @@ pub(super) fn build_bodies(
     out
 }
 
-/// [Ixx, Iyy, Izz] or a full tensor, symmetric and positive definite.
-fn build_inertia(b: &mut Builder, v: &Spanned<InertiaSpec>, key: &str) -> Mat3 {
+/// A member: ends apart, a diameter > 0, at least one segment, coefficients ≥ 0.
+fn build_member(b: &mut Builder, m: &MemberSpec, key: &str) -> Member {
+    let k = |f: &str| format!("{key}.{f}");
+    let end_a = b.vec3(&m.end_a, &k("end_a"));
+    let end_b = b.vec3(&m.end_b, &k("end_b"));
+    if end_a == end_b {
+        let d = b
+            .diag(
+                Some(m.end_b.span()),
+                &k("end_b"),
+                "a member's ends are at the same place",
+            )
+            .expected("end_b ≠ end_a, in body axes [m]")
+            .hint("a member is a cylinder from end_a to end_b");
+        b.push(d);
+    }
+    let diameter = b.num(
+        &m.diameter,
+        &k("diameter"),
+        Check {
+            ok: POSITIVE,
+            expected: "m, > 0",
+        },
+        "the member's diameter",
+    );
+    let segments = match &m.segments {
+        Some(n) if *n.get_ref() >= 1 => *n.get_ref() as usize,
+        Some(n) => {
+            let d = b
+                .diag(
+                    Some(n.span()),
+                    &k("segments"),
+                    "a member needs at least one segment",
+                )
+                .expected("a whole number ≥ 1")
+                .hint("the member's loads are lumped at its segments' ends");
+            b.push(d);
+            1
+        }
+        None => 1,
+    };
+    let mut coefficient = |v: &Option<Spanned<f64>>, f: &str, what: &str| {
+        v.as_ref()
+            .map(|v| {
+                b.num(
+                    v,
+                    &k(f),
+                    Check {
+                        ok: NON_NEGATIVE,
+                        expected: "≥ 0, dimensionless",
+                    },
+                    what,
+                )
+            })
+            .unwrap_or(0.0)
+    };
+    Member {
+        end_a,
+        end_b,
+        diameter,
+        segments,
+        normal_drag: coefficient(
+            &m.normal_drag,
+            "normal_drag",
+            "drag coefficient across the member",
+        ),
+        normal_added_mass: coefficient(
+            &m.normal_added_mass,
+            "normal_added_mass",
+            "added-mass coefficient across the member",
+        ),
+        end_drag: coefficient(&m.end_drag, "end_drag", "drag coefficient of each wet end"),
+        end_added_mass: coefficient(
+            &m.end_added_mass,
+            "end_added_mass",
+            "axial added-mass coefficient of each wet end",
+        ),
+    }
+}
+
+/// [Ixx, Iyy, Izz] or a full tensor, symmetric; positive definite for a free body (`free`),
+/// positive semi-definite (zero allowed) for the others.
+fn build_inertia(b: &mut Builder, v: &Spanned<InertiaSpec>, key: &str, free: bool) -> Mat3 {
     let (m, principal) = match v.get_ref() {
         InertiaSpec::Principal(d) => (Mat3::from_diagonal(&Vec3::from(*d)), true),
         InertiaSpec::Matrix(rows) => (Mat3::from_fn(|i, j| rows[i][j]), false),
@@ -325,6 +467,8 @@ fn build_inertia(b: &mut Builder, v: &Spanned<InertiaSpec>, key: &str) -> Mat3 {
         return Mat3::identity();
     } else if (m - m.transpose()).abs().max() > 1e-9 * m.abs().max() {
         Some("`inertia` is not symmetric")
+    } else if !free && (m.abs().max() == 0.0 || m.symmetric_eigenvalues().min() >= 0.0) {
+        None
     } else if !(m.abs().max() > 0.0) || m.cholesky().is_none() {
         Some(match principal {
             true => "`inertia` has a principal moment ≤ 0",
@@ -563,6 +707,54 @@ mod tests {
         let taken = HashMap::from([("anchor".to_string(), "point")]);
         let bodies = build_bodies(&mut b, &specs.bodies, &taken, &Environment::default());
         (bodies, b.errors.iter().map(|d| d.to_string()).collect())
+    }
+
+    /// `drag_speed` and `hydrodynamic_centre` reach the model; a coupled or fixed body may
+    /// leave out its mass and inertia (zero), a free one may not, and a cylinder refuses a
+    /// hydrodynamic centre (its wet centroid is the centre).
+    #[test]
+    fn drag_speed_centre_and_optional_mass() {
+        let (bodies, errors) = build(
+            r#"
+[[bodies]]
+name = "buoy"
+type = "free"
+position = [0.0, 0.0, -30.0]
+mass = 100.0
+inertia = [10.0, 10.0, 10.0]
+displacement = { type = "submerged", volume = 0.5 }
+centre_of_buoyancy = [0.0, 0.0, -1.0]
+hydrodynamic_centre = [0.0, 0.0, 0.0]
+drag_speed = "magnitude"
+
+[[bodies]]
+name = "platform"
+type = "coupled"
+position = [0.0, 0.0, 0.0]
+"#,
+        );
+        assert!(errors.is_empty(), "{errors:?}");
+        assert_eq!(bodies[0].drag_speed, DragSpeed::Magnitude);
+        assert_eq!(bodies[0].hydrodynamic_centre, Some(Vec3::zeros()));
+        assert_eq!((bodies[1].mass, bodies[1].inertia), (0.0, Mat3::zeros()));
+        assert_eq!(bodies[1].drag_speed, DragSpeed::Component);
+        let (_, errors) = build(
+            r#"
+[[bodies]]
+name = "can"
+type = "free"
+position = [0.0, 0.0, -30.0]
+displacement = { type = "cylinder", radius = 1.0, height = 2.0 }
+hydrodynamic_centre = [0.0, 0.0, 1.0]
+"#,
+        );
+        let all = errors.join("\n");
+        assert!(all.contains("free body `can` has no `mass`"), "{all}");
+        assert!(all.contains("free body `can` has no `inertia`"), "{all}");
+        assert!(
+            all.contains("`hydrodynamic_centre` is for a `submerged`"),
+            "{all}"
+        );
     }
 
     /// Every key lands in the model's field, in its units: degrees to a quaternion

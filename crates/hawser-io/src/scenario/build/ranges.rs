@@ -202,6 +202,14 @@ pub(super) const RANGES: &[(&str, Range)] = &[
     ("bodies[].orientation", ANGLE),
     ("bodies[].centre_of_gravity", all(-1e4, 1e4, "m")),
     ("bodies[].centre_of_buoyancy", all(-1e4, 1e4, "m")),
+    ("bodies[].hydrodynamic_centre", all(-1e4, 1e4, "m")),
+    ("bodies[].members[].end_a", all(-1e4, 1e4, "m")),
+    ("bodies[].members[].end_b", all(-1e4, 1e4, "m")),
+    ("bodies[].members[].diameter", all(0.0, 1e3, "m")),
+    ("bodies[].members[].normal_drag", COEFFICIENT),
+    ("bodies[].members[].normal_added_mass", COEFFICIENT),
+    ("bodies[].members[].end_drag", COEFFICIENT),
+    ("bodies[].members[].end_added_mass", COEFFICIENT),
     ("bodies[].inertia", all(-1e16, 1e16, "kg·m²")),
     (
         "bodies[].added_mass",
@@ -316,7 +324,7 @@ mod tests {
     use super::*;
 
     /// Integer keys, bounded by their own checks (counts) or without a physical range (a seed).
-    const INTEGER_KEYS: &[&str] = &["elements", "order", "components", "seed"];
+    const INTEGER_KEYS: &[&str] = &["elements", "order", "components", "seed", "segments"];
 
     /// The table of ranges as markdown (docs/scenario.md holds it; a test keeps it up to date).
     fn markdown_table() -> String {

@@ -102,9 +102,12 @@ pub(super) fn current_table(b: &mut Builder, c: &CurrentSpec) -> Option<Current>
                     ),
                 )
                 .value(format!(
-                    "{} rows of {:?} values",
+                    "{} rows of {} values",
                     r.len(),
-                    r.iter().map(Vec::len).collect::<Vec<_>>()
+                    r.iter()
+                        .map(|row| row.len().to_string())
+                        .collect::<Vec<_>>()
+                        .join(", ")
                 ))
                 .expected(format!("{nt} rows of {nz} values [m/s]"));
             b.push(d);

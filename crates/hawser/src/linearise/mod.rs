@@ -12,20 +12,28 @@
 //! dynamics assembles: structural plus added mass, consistent or lumped as the line asks,
 //! plus the free points' own mass and added mass.
 //!
-//! Degrees of freedom are grouped by owner ([`DofOwner`]): the interior nodes of every line,
-//! then every free point, three translations each. Fixed and prescribed points are not degrees
-//! of freedom: their motion is given. Free rigid bodies are not linearised yet: each would add an owner with six
-//! degrees of freedom (translation and rotation about a reference point); their rows couple
-//! to the line ends at their fairleads through the rigid-body transformation, and the
-//! [`connection_stiffness`] condensation below is the hook for the 6×6 mooring stiffness a
-//! body sees: K₆ = Σ_pq T_pᵀ K_pq T_q + the geometric term of the fairlead forces, with
-//! T_p = [I  −[r_p×]] for the body-fixed fairlead offset r_p.
+//! Degrees of freedom are grouped by owner ([`DofOwner`]): the interior vectors of every line
+//! (node positions, and a `hermite` line's tangents), then every free point, three
+//! translations each, then every free rigid body, a group of three translations of its origin
+//! and a group of three small rotations δθ about global axes. Fixed, prescribed and coupled
+//! points and bodies are not degrees of freedom: their motion is given. A line end on a point
+//! of a free body moves with the body, δx = δr + δθ × ρ (ρ the point's offset at the static
+//! pose), so the line's rows and columns there join the body's through J = [1, −[ρ]×]
+//! ([`DofTarget::Body`]); the body adds its own 6×6 blocks ([`bodies`]): its mass with added
+//! mass, the stiffness of its own loads (hydrostatics) and the geometric stiffness
+//! −Σ_p [F_p]× [ρ_p]× of the line forces F_p turning with it. [`body_stiffness`] condenses the
+//! lines onto each body: the 6×6 mooring stiffness K₆ = Σ_pq J_pᵀ K_pq J_q + the geometric
+//! term.
 
 use crate::formulation::{LoadOptions, line_forces};
-use crate::linalg::{CoupledSystem, EndKind, LineBlocks, Singular};
-use crate::math::{Mat3, Real, Vec3, get3};
+use crate::linalg::{BodySlot, CoupledSystem, EndKind, LineBlocks, Singular};
+use crate::math::{Mat3, Mat3x6, Mat6, Real, Vec3, Vec6, get3, skew};
+use crate::model::PointKind;
 use crate::system::{System, Workspace};
 use nalgebra::DMatrix;
+
+mod bodies;
+pub use bodies::{BodyStiffness, body_stiffness};
 
 /// Which state variable a force Jacobian differentiates by.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -371,60 +379,149 @@ fn loads_jacobian(
     }
 }
 
-/// Who owns a group of three degrees of freedom (translations x, y, z).
+/// Who owns a group of three degrees of freedom.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum DofOwner {
-    /// An interior node of a line.
+    /// An interior vector of a line: a node position (translations x, y, z), or a `hermite`
+    /// line's tangent at a node.
     LineNode {
         /// Line index.
         line: usize,
-        /// Node index (1..N−1; 0 is end A).
+        /// Vector index along the line (1 .. vectors − 2; 0 is end A): the node index for
+        /// `fe`, [`crate::system::SystemLine::node_vector`] for `hermite`.
         node: usize,
+        /// Whether the vector is a tangent [-] rather than a position [m].
+        tangent: bool,
     },
-    /// A free point (clump weight, buoy, joint).
+    /// A free point (clump weight, buoy, joint): translations x, y, z.
     Point {
         /// Point index.
         point: usize,
     },
+    /// A free body's origin: translations x, y, z [m].
+    BodyTranslation {
+        /// Body index.
+        body: usize,
+    },
+    /// A free body's small rotations about the global x, y, z axes [rad].
+    BodyRotation {
+        /// Body index.
+        body: usize,
+    },
 }
 
-/// The numbering of the degrees of freedom: groups of three (a node's or a point's
-/// translations), per line its interior nodes in order, then the free points.
+/// Where a line vector's (or a point's) three components go among the degrees of freedom.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum DofTarget {
+    /// Nowhere: an end on a fixed, prescribed or coupled point, or on a body that is not
+    /// free.
+    Fixed,
+    /// Its own group of three.
+    Group(usize),
+    /// A point on a free body, moving with it: δx = δr + δθ × ρ, with δr the body's
+    /// translation group `group`, δθ its rotation group `group + 1`.
+    Body {
+        /// The body's translation group.
+        group: usize,
+        /// Offset ρ of the point from the body origin at the static pose, global axes [m].
+        offset: Vec3,
+    },
+}
+
+impl DofTarget {
+    /// Its first degree of freedom and the 3×6 map J from the target's degrees of freedom
+    /// (3 used for a group, 6 for a body) to the vector's three components.
+    fn map(&self) -> Option<(usize, usize, Mat3x6)> {
+        let mut j = Mat3x6::zeros();
+        j.fixed_view_mut::<3, 3>(0, 0).copy_from(&Mat3::identity());
+        match *self {
+            DofTarget::Fixed => None,
+            DofTarget::Group(g) => Some((3 * g, 3, j)),
+            DofTarget::Body { group, offset } => {
+                j.fixed_view_mut::<3, 3>(0, 3).copy_from(&(-skew(&offset)));
+                Some((3 * group, 6, j))
+            }
+        }
+    }
+}
+
+/// The numbering of the degrees of freedom: groups of three, per line its interior vectors in
+/// order, then the free points, then per free body its translation and rotation groups.
 #[derive(Clone, Debug, PartialEq)]
 pub struct DofMap {
     /// Owner of each group; DOF 3·g + axis belongs to group g.
     pub owners: Vec<DofOwner>,
     /// First group of each line's interior.
     line_first: Vec<usize>,
-    /// Group of each point (`None` for fixed and prescribed points).
-    point_group: Vec<Option<usize>>,
-    /// Node count N + 1 of each line.
-    line_nodes: Vec<usize>,
+    /// Where each point's components go (free points: their group; points on free bodies:
+    /// the body).
+    point_target: Vec<DofTarget>,
+    /// Group of each free point, in `System::free_points` order.
+    free_point_groups: Vec<usize>,
+    /// Translation group of each free body, in `System::free_bodies` order.
+    body_groups: Vec<usize>,
+    /// Vector count of each line.
+    line_vectors: Vec<usize>,
+    /// Vector index of each node, per line.
+    node_vectors: Vec<Vec<usize>>,
     /// End points (A, B) of each line.
     line_ends: Vec<(usize, usize)>,
 }
 
 impl DofMap {
-    /// The numbering of `system`.
-    pub fn new(system: &System) -> Self {
+    /// The numbering of `system` about the state `state` (which places the free bodies).
+    pub fn new(system: &System, state: &[Real]) -> Self {
         let mut owners = Vec::new();
         let mut line_first = Vec::new();
         for (li, l) in system.lines.iter().enumerate() {
             line_first.push(owners.len());
             for node in 1..l.vectors() - 1 {
-                owners.push(DofOwner::LineNode { line: li, node });
+                owners.push(DofOwner::LineNode {
+                    line: li,
+                    node,
+                    tangent: l.is_tangent(node),
+                });
             }
         }
-        let mut point_group = vec![None; system.points.len()];
+        let mut point_target = vec![DofTarget::Fixed; system.points.len()];
+        let mut free_point_groups = Vec::new();
         for &p in &system.free_points {
-            point_group[p] = Some(owners.len());
+            point_target[p] = DofTarget::Group(owners.len());
+            free_point_groups.push(owners.len());
             owners.push(DofOwner::Point { point: p });
+        }
+        let mut body_groups = Vec::new();
+        let mut body_group = vec![None; system.bodies.len()];
+        for &b in &system.free_bodies {
+            body_group[b] = Some(owners.len());
+            body_groups.push(owners.len());
+            owners.push(DofOwner::BodyTranslation { body: b });
+            owners.push(DofOwner::BodyRotation { body: b });
+        }
+        for (p, point) in system.points.iter().enumerate() {
+            if let PointKind::Body { body, offset } = &point.kind
+                && let Some(group) = body_group[*body]
+            {
+                let o = system.layout.body_offset[*body].expect("a free body is in the state");
+                let k = crate::bodies::read_state(&state[o..o + crate::bodies::STATE_LEN]);
+                point_target[p] = DofTarget::Body {
+                    group,
+                    offset: k.orientation * offset,
+                };
+            }
         }
         Self {
             owners,
             line_first,
-            point_group,
-            line_nodes: system.lines.iter().map(|l| l.vectors()).collect(),
+            point_target,
+            free_point_groups,
+            body_groups,
+            line_vectors: system.lines.iter().map(|l| l.vectors()).collect(),
+            node_vectors: system
+                .lines
+                .iter()
+                .map(|l| (0..l.nodes()).map(|i| l.node_vector(i)).collect())
+                .collect(),
             line_ends: system.lines.iter().map(|l| (l.end_a, l.end_b)).collect(),
         }
     }
@@ -439,92 +536,169 @@ impl DofMap {
         self.owners.is_empty()
     }
 
-    /// The group of node `node` (0..=N) of line `line`: its own for an interior node, its
-    /// point's for an end on a free point, `None` for an end on a fixed or prescribed point.
-    pub fn node_group(&self, line: usize, node: usize) -> Option<usize> {
-        let last = self.line_nodes[line] - 1;
-        if node == 0 {
-            self.point_group[self.line_ends[line].0]
-        } else if node == last {
-            self.point_group[self.line_ends[line].1]
+    /// Where vector `j` (0..vectors) of line `line` goes: its own group for an interior vector,
+    /// its point's target for an end.
+    pub fn vector_target(&self, line: usize, j: usize) -> DofTarget {
+        let last = self.line_vectors[line] - 1;
+        if j == 0 {
+            self.point_target[self.line_ends[line].0]
+        } else if j == last {
+            self.point_target[self.line_ends[line].1]
         } else {
-            Some(self.line_first[line] + node - 1)
+            DofTarget::Group(self.line_first[line] + j - 1)
         }
     }
 
-    /// The group of a free point, `None` for fixed and prescribed points.
+    /// Where the position of node `node` (0..=N) of line `line` goes.
+    pub fn node_target(&self, line: usize, node: usize) -> DofTarget {
+        self.vector_target(line, self.node_vectors[line][node])
+    }
+
+    /// The group of a free point, `None` for other points.
     pub fn point_group(&self, point: usize) -> Option<usize> {
-        self.point_group[point]
+        match self.point_target[point] {
+            DofTarget::Group(g) => Some(g),
+            _ => None,
+        }
+    }
+
+    /// Where a point's components go.
+    pub fn point_target(&self, point: usize) -> DofTarget {
+        self.point_target[point]
+    }
+
+    /// The translation group of the free body `body` (the rotation group follows it), `None`
+    /// for other bodies.
+    pub fn body_group(&self, body: usize) -> Option<usize> {
+        self.owners
+            .iter()
+            .position(|o| *o == DofOwner::BodyTranslation { body })
+    }
+
+    /// The displacement of a target in the degrees of freedom `x` [m] (zero for a fixed one).
+    pub fn displacement(&self, x: &[Real], t: DofTarget) -> Vec3 {
+        match t.map() {
+            None => Vec3::zeros(),
+            Some((first, width, j)) => {
+                let mut u = Vec6::zeros();
+                for k in 0..width {
+                    u[k] = x[first + k];
+                }
+                j * u
+            }
+        }
+    }
+
+    /// Adds Jᵀ v to the degrees of freedom `y` of a target (nothing for a fixed one).
+    fn add_force(&self, y: &mut [Real], t: DofTarget, v: &Vec3) {
+        if let Some((first, width, j)) = t.map() {
+            let g = j.transpose() * v;
+            for k in 0..width {
+                y[first + k] += g[k];
+            }
+        }
     }
 }
 
 /// A symmetric-structured sparse matrix over the degrees of freedom, stored as the dynamics
-/// stores its mass: per line a block-tridiagonal matrix over all its nodes 0..=N (rows and
-/// columns of ends on fixed or prescribed points are kept but are not degrees of freedom; an
-/// end on a free point adds into that point's rows), plus per free point its own block.
+/// stores its mass: per line a block-banded matrix over all its vectors (rows and columns of
+/// ends on fixed or prescribed points are kept but are not degrees of freedom; an end on a
+/// free point adds into that point's rows, an end on a free body into the body's through J),
+/// plus per free point its own block and per free body its own 6×6 block.
 #[derive(Clone, Debug)]
 pub struct BlockMatrix {
     /// Per line: `diag[i]`, `lower[i]` (row i+1, column i), `upper[i]` (row i, column i+1).
     pub lines: Vec<LineBlocks>,
     /// Per free point (in `System::free_points` order): its own block.
     pub points: Vec<Mat3>,
+    /// Per free body (in `System::free_bodies` order): its own 6×6 block over
+    /// [δr; δθ].
+    pub bodies: Vec<Mat6>,
+    /// The points on free bodies that line ends attach to, in the slot order of the lines'
+    /// [`EndKind::Free`] ends after the free points (offsets at the static pose).
+    pub slots: Vec<BodySlot>,
 }
 
 impl BlockMatrix {
     /// y = A x over the degrees of freedom of `map` (O(nodes)).
     pub fn apply(&self, map: &DofMap, x: &[Real], y: &mut [Real]) {
         y.iter_mut().for_each(|v| *v = 0.0);
-        let at = |g: usize| get3(x, g);
         for (li, b) in self.lines.iter().enumerate() {
             let n = b.nodes() - 1;
             for i in 0..=n {
-                let Some(row) = map.node_group(li, i) else {
+                let row = map.vector_target(li, i);
+                if row == DofTarget::Fixed {
                     continue;
-                };
+                }
                 let mut acc = Vec3::zeros();
                 for j in b.band_of(i) {
-                    if let Some(c) = map.node_group(li, j) {
-                        acc += b.block(i, j) * at(c);
+                    let column = map.vector_target(li, j);
+                    if column != DofTarget::Fixed {
+                        acc += b.block(i, j) * map.displacement(x, column);
                     }
                 }
-                crate::math::add3(y, row, &acc);
+                map.add_force(y, row, &acc);
             }
         }
         for (f, m) in self.points.iter().enumerate() {
-            let g = map.owners.len() - self.points.len() + f;
-            crate::math::add3(y, g, &(m * at(g)));
+            let g = map.free_point_groups[f];
+            crate::math::add3(y, g, &(m * get3(x, g)));
+        }
+        for (f, m) in self.bodies.iter().enumerate() {
+            let o = 3 * map.body_groups[f];
+            let u = Vec6::from_fn(|k, _| x[o + k]);
+            let v = m * u;
+            for k in 0..6 {
+                y[o + k] += v[k];
+            }
         }
     }
 
     /// Non-zero entries (row, column, value) over the degrees of freedom, duplicates summed
-    /// by the consumer (an end on a free point adds to its point's entries).
+    /// by the consumer (an end on a free point adds to its point's entries, an end on a free
+    /// body to its body's through J).
     pub fn triplets(&self, map: &DofMap) -> Vec<(usize, usize, Real)> {
         let mut out = Vec::new();
-        let mut push = |r: usize, c: usize, m: &Mat3| {
-            for i in 0..3 {
-                for j in 0..3 {
-                    if m[(i, j)] != 0.0 {
-                        out.push((3 * r + i, 3 * c + j, m[(i, j)]));
-                    }
-                }
-            }
-        };
         for (li, b) in self.lines.iter().enumerate() {
             let n = b.nodes() - 1;
             for i in 0..=n {
-                let Some(r) = map.node_group(li, i) else {
+                let Some((ri, wi, ji)) = map.vector_target(li, i).map() else {
                     continue;
                 };
                 for j in b.band_of(i) {
-                    if let Some(c) = map.node_group(li, j) {
-                        push(r, c, &b.block(i, j));
+                    let Some((rj, wj, jj)) = map.vector_target(li, j).map() else {
+                        continue;
+                    };
+                    let full = ji.transpose() * b.block(i, j) * jj;
+                    for r in 0..wi {
+                        for c in 0..wj {
+                            if full[(r, c)] != 0.0 {
+                                out.push((ri + r, rj + c, full[(r, c)]));
+                            }
+                        }
                     }
                 }
             }
         }
-        let first = map.owners.len() - self.points.len();
         for (f, m) in self.points.iter().enumerate() {
-            push(first + f, first + f, m);
+            let g = map.free_point_groups[f];
+            for r in 0..3 {
+                for c in 0..3 {
+                    if m[(r, c)] != 0.0 {
+                        out.push((3 * g + r, 3 * g + c, m[(r, c)]));
+                    }
+                }
+            }
+        }
+        for (f, m) in self.bodies.iter().enumerate() {
+            let o = 3 * map.body_groups[f];
+            for r in 0..6 {
+                for c in 0..6 {
+                    if m[(r, c)] != 0.0 {
+                        out.push((o + r, o + c, m[(r, c)]));
+                    }
+                }
+            }
         }
         out
     }
@@ -577,6 +751,9 @@ impl BlockMatrix {
         for m in s.points.iter_mut() {
             *m = (*m + m.transpose()) * 0.5;
         }
+        for m in s.bodies.iter_mut() {
+            *m = (*m + m.transpose()) * 0.5;
+        }
         s
     }
 
@@ -601,6 +778,10 @@ impl BlockMatrix {
             skew = skew.max((m - m.transpose()).abs().max());
             size = size.max(m.abs().max());
         }
+        for m in &self.bodies {
+            skew = skew.max((m - m.transpose()).abs().max());
+            size = size.max(m.abs().max());
+        }
         if size > 0.0 { skew / size } else { 0.0 }
     }
 
@@ -614,6 +795,9 @@ impl BlockMatrix {
             sl.coupled = true;
         }
         for (x, y) in s.points.iter_mut().zip(b.points.iter()) {
+            *x -= y * sigma;
+        }
+        for (x, y) in s.bodies.iter_mut().zip(b.bodies.iter()) {
             *x -= y * sigma;
         }
         s
@@ -657,33 +841,44 @@ impl Linearisation {
     }
 }
 
-/// Negates every block in place (F-Jacobian → stiffness or damping).
-fn negated(lines: &[LineBlocks], points: &[Mat3]) -> BlockMatrix {
+/// Negates the line and point blocks (F-Jacobian → stiffness or damping) and adds the free
+/// bodies' own blocks `bodies` (already stiffness or damping).
+fn negated(
+    system: &System,
+    lines: &[LineBlocks],
+    points: &[Mat3],
+    bodies: Vec<Mat6>,
+    slots: &[BodySlot],
+) -> BlockMatrix {
     let mut m = BlockMatrix {
         lines: lines.to_vec(),
         points: points.to_vec(),
+        bodies,
+        slots: slots.to_vec(),
     };
     for b in m.lines.iter_mut() {
         b.blocks_mut().for_each(|x| *x = -*x);
         b.coupled = true;
     }
     m.points.iter_mut().for_each(|x| *x = -*x);
+    debug_assert_eq!(m.bodies.len(), system.free_bodies.len());
     m
 }
 
 /// Linearises `system` about the static state `state` (as found by
 /// [`crate::statics::solve`]): velocities are taken as zero and prescribed points sit at their
-/// t = 0 positions.
+/// t = 0 positions. Free bodies are degrees of freedom ([`bodies`]).
 ///
 /// # Panics
 ///
-/// With `dg` lines (modal unknowns, not linearised): check with
-/// [`crate::analysis::modes::supported`] first.
+/// With `dg` lines (modal unknowns, not linearised): linearise their hermite twin
+/// ([`crate::analysis::modes::modal_twin`]); [`crate::analysis::modes::supported`] checks.
 pub fn linearise(system: &System, state: &[Real], options: LinearisationOptions) -> Linearisation {
     assert!(
         !system.has_dg_lines(),
-        "linearise: dg lines are not linearised (check analysis::modes::supported first)"
+        "linearise: dg lines are not linearised (linearise the model's modal_twin)"
     );
+    let slots = bodies::slots(system, state);
     let mut ws = system.workspace();
     force_jacobian(
         system,
@@ -694,7 +889,14 @@ pub fn linearise(system: &System, state: &[Real], options: LinearisationOptions)
         &mut ws,
     );
     constrain_clamps(system, &mut ws.blocks);
-    let stiffness = negated(&ws.blocks, &ws.coupled.point_diag);
+    let forces = bodies::end_forces(system, state);
+    let stiffness = negated(
+        system,
+        &ws.blocks,
+        &ws.coupled.point_diag,
+        bodies::own_blocks(system, state, Variable::Position, &forces),
+        &slots,
+    );
     let damping = options.damping.then(|| {
         force_jacobian(
             system,
@@ -705,12 +907,18 @@ pub fn linearise(system: &System, state: &[Real], options: LinearisationOptions)
             &mut ws,
         );
         constrain_clamps(system, &mut ws.blocks);
-        negated(&ws.blocks, &ws.coupled.point_diag)
+        negated(
+            system,
+            &ws.blocks,
+            &ws.coupled.point_diag,
+            bodies::own_blocks(system, state, Variable::Velocity, &forces),
+            &slots,
+        )
     });
     // Mass: the dynamics' own assembly at the static positions, at rest.
     let mass = mass_matrix(system, state);
     Linearisation {
-        dofs: DofMap::new(system),
+        dofs: DofMap::new(system, state),
         stiffness,
         mass,
         damping,
@@ -730,7 +938,8 @@ fn constrain_clamps(system: &System, blocks: &mut [LineBlocks]) {
 }
 
 /// The mass matrix [kg] at state `y` (at rest, t = 0), assembled by the dynamics' force code:
-/// line mass blocks with added mass, and the free points' own mass with added mass.
+/// line mass blocks with added mass, the free points' own mass with added mass, and each
+/// free body's 6×6 mass about its origin with added mass ([`crate::model::Body::loads`]).
 pub fn mass_matrix(system: &System, y: &[Real]) -> BlockMatrix {
     let mut ws = system.workspace();
     line_forces_at_rest(system, y, 1.0, true, &mut ws);
@@ -743,11 +952,13 @@ pub fn mass_matrix(system: &System, y: &[Real]) -> BlockMatrix {
     BlockMatrix {
         lines: ws.blocks,
         points,
+        bodies: bodies::masses(system, y),
+        slots: bodies::slots(system, y),
     }
 }
 
 /// Solves A x = b over the degrees of freedom with the dynamics' coupled block solver
-/// (block Thomas along each line, Schur complement over the free points): O(nodes).
+/// (block Thomas along each line, Schur complement over the free points and bodies): O(nodes).
 #[derive(Clone, Debug)]
 pub struct BlockSolver {
     lines: Vec<LineBlocks>,
@@ -757,11 +968,31 @@ pub struct BlockSolver {
 impl BlockSolver {
     /// A solver for `a` (its blocks are copied).
     pub fn new(a: &BlockMatrix) -> Self {
-        let mut coupled = CoupledSystem::new(a.points.len());
+        let mut coupled = CoupledSystem::with_bodies(a.points.len(), a.bodies.len(), a.slots.len());
+        coupled.point_diag.copy_from_slice(&a.points);
+        coupled.body_diag.copy_from_slice(&a.bodies);
+        coupled.body_slots.copy_from_slice(&a.slots);
+        let mut lines = a.lines.clone();
+        for l in lines.iter_mut() {
+            l.coupled = true;
+        }
+        Self { lines, coupled }
+    }
+
+    /// A solver for `a` with the free bodies held: the line ends on their points become known
+    /// ends, and the bodies' rows are left out (the condensation onto the bodies).
+    fn holding_bodies(a: &BlockMatrix) -> Self {
+        let np = a.points.len();
+        let mut coupled = CoupledSystem::new(np);
         coupled.point_diag.copy_from_slice(&a.points);
         let mut lines = a.lines.clone();
         for l in lines.iter_mut() {
             l.coupled = true;
+            for end in [&mut l.end_a, &mut l.end_b] {
+                if matches!(*end, EndKind::Free(s) if s >= np) {
+                    *end = EndKind::Known;
+                }
+            }
         }
         Self { lines, coupled }
     }
@@ -774,8 +1005,9 @@ impl BlockSolver {
     }
 
     /// Solves with the right-hand side `b` on the degrees of freedom and the displacement
-    /// `known(line, node)` imposed on ends on fixed and prescribed points (their columns move
-    /// to the right-hand side). Afterwards every line's `x` holds all its nodes' values.
+    /// `known(line, vector)` imposed on ends that are known (on fixed and prescribed points,
+    /// and on held bodies): their columns move to the right-hand side. Afterwards every line's
+    /// `x` holds all its vectors' values.
     fn solve_with_known(
         &mut self,
         map: &DofMap,
@@ -790,16 +1022,23 @@ impl BlockSolver {
                 {
                     known(li, i)
                 } else if i == 0 || i == n {
-                    // A free end: its right-hand side is its point's, given once below.
+                    // A free end: its right-hand side is its point's or body's, given once
+                    // below.
                     Vec3::zeros()
                 } else {
-                    get3(b, map.node_group(li, i).expect("interior node"))
+                    match map.vector_target(li, i) {
+                        DofTarget::Group(g) => get3(b, g),
+                        _ => unreachable!("an interior vector has its own group"),
+                    }
                 };
             }
         }
-        let first = map.owners.len() - self.coupled.point_x.len();
         for (f, x) in self.coupled.point_x.iter_mut().enumerate() {
-            *x = get3(b, first + f);
+            *x = get3(b, map.free_point_groups[f]);
+        }
+        for (f, x) in self.coupled.body_x.iter_mut().enumerate() {
+            let o = 3 * map.body_groups[f];
+            *x = Vec6::from_fn(|k, _| b[o + k]);
         }
         self.coupled.solve(&mut self.lines)
     }
@@ -807,13 +1046,19 @@ impl BlockSolver {
     fn gather(&self, map: &DofMap, x: &mut [Real]) {
         for (li, l) in self.lines.iter().enumerate() {
             for i in 1..l.nodes() - 1 {
-                let g = map.node_group(li, i).expect("interior node");
-                crate::math::set3(x, g, &l.x[i]);
+                if let DofTarget::Group(g) = map.vector_target(li, i) {
+                    crate::math::set3(x, g, &l.x[i]);
+                }
             }
         }
-        let first = map.owners.len() - self.coupled.point_x.len();
         for (f, v) in self.coupled.point_x.iter().enumerate() {
-            crate::math::set3(x, first + f, v);
+            crate::math::set3(x, map.free_point_groups[f], v);
+        }
+        for (f, v) in self.coupled.body_x.iter().enumerate() {
+            let o = 3 * map.body_groups[f];
+            for k in 0..6 {
+                x[o + k] = v[k];
+            }
         }
     }
 }
@@ -857,7 +1102,8 @@ pub fn connection_stiffness(
     let mut points: Vec<usize> = Vec::new();
     for l in &system.lines {
         for p in [l.end_a, l.end_b] {
-            if system.points[p].free_index.is_none() && !points.contains(&p) {
+            let moves = system.points[p].free_index.is_some() || system.point_slot[p].is_some();
+            if !moves && !points.contains(&p) {
                 points.push(p);
             }
         }
