@@ -112,6 +112,12 @@ fn every_error_variant_reads_as_words() {
             culprit: "axial stiffness at line L1 node 1".into(),
         },
         SimulationError::Interrupted { time: 2.0 },
+        SimulationError::StepUnusable {
+            step: 0.0,
+            culprit: "axial stiffness at line L1 node 1".into(),
+            duration: 10.0,
+            steps: f64::INFINITY,
+        },
         SimulationError::Observer {
             message: "writing out/timeseries.csv: disk full".into(),
         },
@@ -129,6 +135,7 @@ fn every_error_variant_reads_as_words() {
             SimulationError::Diverged { .. }
             | SimulationError::StepTooLarge { .. }
             | SimulationError::Interrupted { .. }
+            | SimulationError::StepUnusable { .. }
             | SimulationError::Observer { .. }
             | SimulationError::Coupling { .. }
             | SimulationError::Checkpoint { .. }

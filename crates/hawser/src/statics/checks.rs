@@ -97,21 +97,23 @@ fn line_warnings(system: &System, ws: &Workspace, li: usize, out: &mut Vec<Warni
     }
 }
 
-/// The touchdown check of line `li`: nodes on or below the seabed plane rest on it (the
+/// The touchdown check of line `li`: nodes on or below the seabed under them rest on it (the
 /// bilinear bed holds them with a small penetration; an anchor sits on it). At each change from resting to suspended nodes,
 /// the element between them holds the touchdown; it must be short against the suspended run
 /// that follows it and against the resting run before it.
 fn touchdown(system: &System, ws: &Workspace, li: usize) -> Option<Warning> {
     let env = &system.environment;
-    if !(env.depth.is_finite() && env.seabed.stiffness > 0.0) {
+    if !(env.has_seabed() && env.seabed.stiffness > 0.0) {
         return None;
     }
     let l = &system.lines[li];
     let lw = &ws.lines[li];
     let n = l.mesh.elements();
-    let bed = env.seabed_z();
     let resting: Vec<bool> = (0..=n)
-        .map(|i| lw.position[l.node_vector(i)].z <= bed)
+        .map(|i| {
+            let p = lw.position[l.node_vector(i)];
+            p.z <= env.seabed_at(p.x, p.y).z
+        })
         .collect();
     if resting.iter().all(|&r| r) || !resting.iter().any(|&r| r) {
         return None;
@@ -164,13 +166,13 @@ fn touchdown(system: &System, ws: &Workspace, li: usize) -> Option<Warning> {
 /// seabed.
 fn below_seabed(system: &System, y: &[Real], ws: &Workspace, out: &mut Vec<Warning>) {
     let env = &system.environment;
-    if !env.depth.is_finite() {
+    if !env.has_seabed() {
         return;
     }
-    let bed = env.seabed_z();
     for &p in &system.free_points {
         let point = &system.points[p];
-        let z = ws.points[p].position.z;
+        let position = ws.points[p].position;
+        let (z, bed) = (position.z, env.seabed_at(position.x, position.y).z);
         if !point.has_seabed_contact() && z < bed {
             out.push(Warning::BelowSeabed {
                 object: format!("point {}", point.name),
@@ -183,6 +185,7 @@ fn below_seabed(system: &System, y: &[Real], ws: &Workspace, out: &mut Vec<Warni
         let k = crate::bodies::read_state(&y[o..o + crate::bodies::STATE_LEN]);
         let body = &system.bodies[b].body;
         let cog: Vec3 = k.position + k.orientation * body.centre_of_gravity;
+        let bed = env.seabed_at(cog.x, cog.y).z;
         if cog.z < bed {
             out.push(Warning::BelowSeabed {
                 object: format!("body {}", body.name),
