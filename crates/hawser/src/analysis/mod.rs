@@ -1,11 +1,13 @@
 //! Results analysis: output channels, running statistics, slack intervals and snap events;
 //! natural modes about the static state ([`modes`]) and the resonance report ([`resonance`]);
-//! the independent steady-towing reference ([`steady_cable`]).
+//! the independent steady-towing reference ([`steady_cable`]); design statistics
+//! ([`statistics`]).
 
 pub mod channels;
 pub mod modes;
 pub mod obstacles;
 pub mod resonance;
+pub mod statistics;
 pub mod steady_cable;
 
 use crate::math::Real;
