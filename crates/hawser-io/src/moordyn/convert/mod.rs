@@ -378,6 +378,7 @@ pub fn convert(
             lines,
             bodies: Vec::new(),
             obstacles: Vec::new(),
+            statistics: None,
         },
         notes: c.notes,
         key_names: c.key_names,

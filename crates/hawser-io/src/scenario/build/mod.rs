@@ -21,6 +21,7 @@ mod points;
 mod ranges;
 mod sea;
 mod settings;
+mod statistics;
 mod toml_errors;
 mod winch;
 pub use bodies::orientation_from_degrees;
@@ -34,6 +35,7 @@ use obstacles::build_obstacles;
 use points::build_points;
 pub use sea::{read_elevation_file, record_components};
 use settings::{build_release, build_settings, check_steady_tow};
+use statistics::build_statistics;
 use toml_errors::schema_errors;
 
 /// A scenario read from a file: the model (with its output channels) and where things are.
@@ -47,6 +49,9 @@ pub struct LoadedScenario {
     pub time_step_span: Option<Range<usize>>,
     /// What the file was.
     pub format: InputFormat,
+    /// The window, storm duration and linked columns of the design statistics
+    /// (`[statistics]`); linked columns index `model.outputs`.
+    pub statistics: hawser::analysis::statistics::StatisticsOptions,
 }
 
 /// The format of an input file.
@@ -312,6 +317,12 @@ pub fn build_scenario(
     };
     model.settings.release = build_release(&mut b, scenario.simulation.as_ref(), &model);
     model.outputs = build_channels(&mut b, scenario.simulation.as_ref(), &model);
+    let statistics = build_statistics(
+        &mut b,
+        scenario.statistics.as_ref(),
+        scenario.simulation.is_some(),
+        &mut model,
+    );
     check_steady_tow(&mut b, scenario.simulation.as_ref(), &model);
     if b.errors.is_empty()
         && let Err(e) = model.validate()
@@ -333,6 +344,7 @@ pub fn build_scenario(
         has_simulation: scenario.simulation.is_some(),
         time_step_span,
         format: InputFormat::Toml,
+        statistics,
     })
 }
 
