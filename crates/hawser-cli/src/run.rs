@@ -264,6 +264,7 @@ pub(crate) fn run(
         session.channels(),
         model.settings.snapshot_interval,
         file,
+        &loaded.statistics,
     )?;
     let writer = session.attach(writer);
     session.attach(Progress::new(quiet, model.settings.duration, 0.0));
@@ -329,6 +330,7 @@ pub(crate) fn resume(dir: &Path, quiet: bool) -> Result<ExitCode> {
         session.channels(),
         loaded.model.settings.snapshot_interval,
         file,
+        &loaded.statistics,
         writer_bytes,
     ) {
         Ok(w) => w,

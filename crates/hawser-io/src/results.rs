@@ -1,10 +1,15 @@
-//! Result writers: `timeseries.csv`, per-line shape snapshots, `summary.json` (statistics,
-//! slack intervals, snap events), `final_state.json` and `status.json`. Rows are flushed as the
+//! Result writers: `timeseries.csv`, per-line shape snapshots, `summary.json` (design
+//! statistics, slack intervals, snap events, line strength), `line_ranges.json` (range graphs
+//! of tension along each line), `final_state.json` and `status.json`. Rows are flushed as the
 //! run goes, so a run that stops early keeps what it wrote, marked incomplete in
 //! `status.json` and `summary.json`.
 
+use crate::run_summary::{
+    DesignRecorder, statistics_json, statistics_options_json, strength_json, timeseries_statistics,
+};
 pub use hawser::analysis::OutputChannel;
-use hawser::analysis::{Channel, RunningStats, SlackSnapDetector};
+use hawser::analysis::statistics::StatisticsOptions;
+use hawser::analysis::{Channel, SlackSnapDetector};
 use hawser::math::Real;
 use hawser::session::{Observer, ObserverError, RunEnd, View};
 use hawser::system::{System, Workspace};
@@ -18,7 +23,8 @@ pub struct RunWriter {
     dir: PathBuf,
     channels: Vec<Channel>,
     names: Vec<String>,
-    stats: Vec<RunningStats>,
+    statistics: StatisticsOptions,
+    design: DesignRecorder,
     detectors: Vec<SlackSnapDetector>,
     timeseries: BufWriter<File>,
     snapshots: Vec<BufWriter<File>>,
@@ -52,7 +58,7 @@ pub fn write_atomically(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
 
 /// The files and folders a run writes into its output folder: what `--overwrite` removes and
 /// what marks a folder as holding a run.
-pub const RUN_FILES: [&str; 7] = [
+pub const RUN_FILES: [&str; 10] = [
     "status.json",
     "summary.json",
     "timeseries.csv",
@@ -60,6 +66,9 @@ pub const RUN_FILES: [&str; 7] = [
     "checkpoint.bin",
     "run.json",
     "snapshots",
+    "line_ranges.json",
+    "plots",
+    "report.html",
 ];
 
 /// The run files present in `dir` ([`RUN_FILES`]).
@@ -105,13 +114,15 @@ pub fn prepare_output_dir(dir: &Path, overwrite: bool) -> std::io::Result<()> {
 
 impl RunWriter {
     /// Creates the files in `dir` (prepared by [`prepare_output_dir`], or created here when
-    /// missing), writes headers and marks the run as running.
+    /// missing), writes headers and marks the run as running. `statistics` says what the
+    /// statistics and range graphs cover (the scenario's `[statistics]`).
     pub fn create(
         dir: &Path,
         system: &System,
         outputs: &[OutputChannel],
         snapshot_interval: Option<Real>,
         scenario: &Path,
+        statistics: &StatisticsOptions,
     ) -> std::io::Result<Self> {
         std::fs::create_dir_all(dir).map_err(|e| io_context(dir, e))?;
         write_json(
@@ -143,7 +154,8 @@ impl RunWriter {
         }
         Ok(Self {
             dir: dir.to_path_buf(),
-            stats: vec![RunningStats::default(); channels.len()],
+            statistics: statistics.clone(),
+            design: DesignRecorder::new(system, statistics),
             row: vec![0.0; channels.len()],
             names,
             channels,
@@ -164,7 +176,8 @@ impl RunWriter {
     }
 
     /// What [`RunWriter::resume`] needs to go on from here: the length of every file written,
-    /// the statistics, the slack and snap detectors and the snapshot schedule. Flushes first.
+    /// the range graphs, the slack and snap detectors and the snapshot schedule. Flushes
+    /// first.
     pub fn progress(&mut self) -> std::io::Result<Vec<u8>> {
         let mut e = hawser::session::Encoder::default();
         self.timeseries.flush()?;
@@ -174,8 +187,7 @@ impl RunWriter {
             w.flush()?;
             e.u64(w.get_ref().metadata()?.len());
         }
-        e.u64(self.stats.len() as u64);
-        self.stats.iter().for_each(|s| s.encode(&mut e));
+        self.design.encode(&mut e);
         e.u64(self.detectors.len() as u64);
         self.detectors.iter().for_each(|d| d.encode(&mut e));
         e.f64(self.next_snapshot);
@@ -193,6 +205,7 @@ impl RunWriter {
         outputs: &[OutputChannel],
         snapshot_interval: Option<Real>,
         scenario: &Path,
+        statistics: &StatisticsOptions,
         progress: &[u8],
     ) -> std::io::Result<Self> {
         let bad = |what: &str| {
@@ -240,13 +253,8 @@ impl RunWriter {
                 len,
             )?);
         }
-        let n = get(&mut d)? as usize;
-        if n != channels.len() {
-            return Err(bad("has another number of channels"));
-        }
-        let stats = (0..n)
-            .map(|_| RunningStats::decode(&mut d).map_err(|_| bad("is truncated")))
-            .collect::<Result<Vec<_>, _>>()?;
+        let design = DesignRecorder::decode(&mut d, system, statistics)
+            .ok_or_else(|| bad("has no range graphs of these lines"))?;
         let n = get(&mut d)? as usize;
         if n != system.lines.len() {
             return Err(bad("has another number of lines"));
@@ -264,7 +272,8 @@ impl RunWriter {
         Ok(Self {
             dir: dir.to_path_buf(),
             row: vec![0.0; channels.len()],
-            stats,
+            statistics: statistics.clone(),
+            design,
             names,
             channels,
             detectors,
@@ -284,12 +293,12 @@ impl RunWriter {
             self.row[i] = view.value(c);
         }
         write!(self.timeseries, "{time}")?;
-        for (v, s) in self.row.iter().zip(self.stats.iter_mut()) {
-            s.push(*v);
+        for v in &self.row {
             write!(self.timeseries, ",{v}")?;
         }
         writeln!(self.timeseries)?;
         self.timeseries.flush()?;
+        self.design.sample(view);
         for li in 0..system.lines.len() {
             let lw = &ws.lines[li];
             // The current mesh: a line on a winch changes its unstretched length.
@@ -338,20 +347,26 @@ impl RunWriter {
             d.finish(self.last_time);
         }
         let complete = error.is_none();
-        let channels: serde_json::Map<String, Value> = self
-            .names
-            .iter()
-            .zip(&self.stats)
-            .zip(&self.channels)
-            .map(|((n, s), c)| {
-                (n.clone(), json!({"unit": c.unit(), "min": s.min, "max": s.max, "mean": s.mean(), "std": s.std()}))
-            })
-            .collect();
+        // The design statistics of the time series as written (a resumed run's included).
+        let (columns, stats) = timeseries_statistics(&self.dir, &self.statistics)?;
+        if columns.len() != self.names.len() {
+            return Err(std::io::Error::new(
+                std::io::ErrorKind::InvalidData,
+                format!(
+                    "{}: {} channels in the file, {} in the run",
+                    self.dir.join("timeseries.csv").display(),
+                    columns.len(),
+                    self.names.len()
+                ),
+            ));
+        }
+        let channels = statistics_json(&columns, &stats, &self.statistics.linked);
         let lines: serde_json::Map<String, Value> = system
             .lines
             .iter()
             .zip(&self.detectors)
-            .map(|(l, d)| {
+            .enumerate()
+            .map(|(li, (l, d))| {
                 (
                     l.name.clone(),
                     json!({
@@ -359,10 +374,15 @@ impl RunWriter {
                         "snap_events": d.snaps.iter().map(|s| json!({
                             "time": s.time, "peak_time": s.peak_time, "peak_tension": s.peak_tension,
                             "location": s.location, "rise_rate": s.rise_rate})).collect::<Vec<_>>(),
+                        "strength": self.design.strength_json(system, li),
                     }),
                 )
             })
             .collect();
+        write_json(
+            &self.dir.join("line_ranges.json"),
+            &self.design.line_ranges_json(system),
+        )?;
         write_json(
             &self.dir.join("summary.json"),
             &json!({
@@ -370,12 +390,14 @@ impl RunWriter {
                 "error": error,
                 "end_time": self.last_time,
                 "samples": self.samples,
+                "statistics": statistics_options_json(&self.statistics, &columns),
                 "channels": channels,
                 "lines": lines,
                 "definitions": {
                     "slack": "some element of the line has strain ≤ 0",
                     "snap": "a slack → taut transition; peak is the largest element tension until the tension falls again",
                     "location": "unstretched arc length from end A [m] of the element carrying the peak",
+                    "strength": "per section of each line, the largest node tension over the statistics window (max_tension [N]), where (at: unstretched arc length from end A [m]) and when (time [s]); utilisation = max_tension / minimum_breaking_load, design_utilisation = max_tension / (minimum_breaking_load / design_safety_factor); worst: the section with the largest design utilisation (utilisation without a safety factor)",
                 },
             }),
         )?;
@@ -489,8 +511,8 @@ pub fn state_json(view: &View<'_>, time: Real) -> Value {
     })
 }
 
-/// The static solution as JSON: per line node positions, node tensions and the force each end
-/// exerts on its attachment; per point its position.
+/// The static solution as JSON: per line node positions, node tensions, the force each end
+/// exerts on its attachment and the strength check of its sections; per point its position.
 /// A steady tow adds `tow_velocity` [m/s], the velocity of the frame it was solved in.
 pub fn statics_json(system: &System, ws: &Workspace) -> Value {
     let view = View {
@@ -503,6 +525,10 @@ pub fn statics_json(system: &System, ws: &Workspace) -> Value {
     };
     let mut v =
         json!({"lines": lines_json(&view, false), "points": points_json(system, ws, false)});
+    for (li, l) in system.lines.iter().enumerate() {
+        let sections = hawser::analysis::strength::line_strength(system, ws, li);
+        v["lines"][&l.name]["strength"] = strength_json(&sections, None);
+    }
     if system.tow_velocity != hawser::math::Vec3::zeros() {
         let t = system.tow_velocity;
         v["tow_velocity"] = json!([t.x, t.y, t.z]);

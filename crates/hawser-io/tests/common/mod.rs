@@ -96,6 +96,7 @@ pub fn run_example_briefly(path: &Path, dir: &Path, samples: usize, snapshot_eve
         session.channels(),
         loaded.model.settings.snapshot_interval,
         path,
+        &loaded.statistics,
     )
     .expect("writer");
     session.attach(writer);
