@@ -75,7 +75,8 @@ enum Command {
         /// Output directory.
         #[arg(long, short, default_value = "out")]
         out: PathBuf,
-        /// Hide the progress bar.
+        /// Hide the progress bar (on a terminal) or the progress lines (otherwise: every
+        /// 10 s and every tenth of the run) and the notes.
         #[arg(long)]
         quiet: bool,
         /// Accept a `time_step` above the stability estimate (expert use; the run stops with
@@ -97,7 +98,7 @@ enum Command {
     Resume {
         /// The output directory of the interrupted run.
         dir: PathBuf,
-        /// Hide the progress bar.
+        /// Hide the progress bar or lines.
         #[arg(long)]
         quiet: bool,
     },
@@ -338,6 +339,10 @@ fn statics(file: &Path, json: bool, trace: bool) -> Result<ExitCode> {
             .fold(0.0, Real::max);
         out!("{:<16} {:>14.2} {:>14.2} {:>14.2}", l.name, ta, tb, tmax);
     }
+    strength_table(&system, &ws);
+    for w in strength_warnings(&system, &ws, "static") {
+        eprintln!("{w}");
+    }
     for (i, p) in system.points.iter().enumerate() {
         if p.free_index.is_some() {
             let x = ws.points[i].position;
@@ -368,6 +373,81 @@ fn statics(file: &Path, json: bool, trace: bool) -> Result<ExitCode> {
         steady_tow_report(&system, &ws);
     }
     Ok(ExitCode::SUCCESS)
+}
+
+/// The strength check of every section of every line in the state evaluated in `ws`, as a
+/// table, when some line type has a minimum breaking load.
+fn strength_table(system: &System, ws: &Workspace) {
+    use hawser::analysis::strength::line_strength;
+    let lines: Vec<_> = (0..system.lines.len())
+        .map(|li| line_strength(system, ws, li))
+        .collect();
+    if !lines
+        .iter()
+        .flatten()
+        .any(|s| s.minimum_breaking_load.is_some())
+    {
+        return;
+    }
+    out!(
+        "{:<16} {:>3} {:<16} {:>14} {:>10} {:>14} {:>8} {:>11}",
+        "strength: line",
+        "sec",
+        "line type",
+        "max T [N]",
+        "at s [m]",
+        "MBL [N]",
+        "T/MBL",
+        "T/(MBL/SF)"
+    );
+    let ratio = |x: Option<Real>| x.map_or("-".to_string(), |x| format!("{x:.4}"));
+    for (l, sections) in system.lines.iter().zip(&lines) {
+        for s in sections {
+            out!(
+                "{:<16} {:>3} {:<16} {:>14.2} {:>10.3} {:>14} {:>8} {:>11}",
+                l.name,
+                s.section,
+                s.line_type,
+                s.max_tension,
+                s.at,
+                s.minimum_breaking_load
+                    .map_or("-".to_string(), |m| format!("{m:.4e}")),
+                ratio(s.utilisation()),
+                ratio(s.design_utilisation())
+            );
+        }
+    }
+}
+
+/// Warnings for every section whose largest tension in the state evaluated in `ws` (`what`:
+/// "static", "initial") exceeds its permissible tension MBL / SF or its MBL.
+fn strength_warnings(system: &System, ws: &Workspace, what: &str) -> Vec<String> {
+    use hawser::analysis::strength::line_strength;
+    let mut out = Vec::new();
+    for (li, l) in system.lines.iter().enumerate() {
+        for s in line_strength(system, ws, li) {
+            let (Some(mbl), Some(permissible)) = (s.minimum_breaking_load, s.permissible_tension())
+            else {
+                continue;
+            };
+            let limit = if s.max_tension > mbl {
+                format!("its minimum breaking load {mbl:.4e} N")
+            } else if s.max_tension > permissible {
+                format!(
+                    "its permissible tension MBL/SF = {permissible:.4e} N (design utilisation {:.3})",
+                    s.max_tension / permissible
+                )
+            } else {
+                continue;
+            };
+            out.push(format!(
+                "warning: line `{}` section {} ({}): the {what} tension {:.4e} N at s = {:.3} m \
+                 exceeds {limit}",
+                l.name, s.section, s.line_type, s.max_tension, s.at
+            ));
+        }
+    }
+    out
 }
 
 /// `hawser statics` on a steady tow: the tow velocity, and every free point's and free

@@ -117,7 +117,8 @@ pub fn worst_section(sections: &[SectionStrength]) -> Option<&SectionStrength> {
 pub fn line_strength(system: &System, ws: &Workspace, line: usize) -> Vec<SectionStrength> {
     let mesh = system.line_mesh(ws, line);
     let nodes = system.lines[line].nodes();
-    let arc: Vec<Real> = (0..nodes).map(|i| mesh.arc_length(i)).collect();
+    // `+ 0.0` turns the −0 the mesh may give at end A into 0, as `LineSample` does.
+    let arc: Vec<Real> = (0..nodes).map(|i| mesh.arc_length(i) + 0.0).collect();
     let tension: Vec<Real> = (0..nodes)
         .map(|i| system.node_tension(ws, line, i))
         .collect();
