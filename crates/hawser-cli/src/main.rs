@@ -114,6 +114,20 @@ enum Command {
         #[arg(long)]
         trace: bool,
     },
+    /// Draw a run's figures (PNG and SVG in DIR/plots) and DIR/report.html, finished or
+    /// running.
+    Plot {
+        /// The output directory of `hawser run`.
+        dir: PathBuf,
+        /// Also draw the amplitude spectrum of this channel (a column of timeseries.csv,
+        /// e.g. `L1.end_b.tension`); repeat for more.
+        #[arg(long, value_name = "CHANNEL")]
+        spectrum: Vec<String>,
+        /// Upper frequency of the spectra [Hz] (default: 1.5 times the frequency below which
+        /// 99.5 % of the variance lies).
+        #[arg(long, value_name = "HZ")]
+        max_frequency: Option<Real>,
+    },
     /// Validate a scenario file or MoorDyn deck without running it.
     Check {
         /// Scenario file (TOML) or MoorDyn v2 deck.
@@ -166,6 +180,11 @@ fn main() -> ExitCode {
         ),
         Command::Resume { dir, quiet } => run::resume(&dir, quiet),
         Command::Statics { file, json, trace } => statics(&file, json, trace),
+        Command::Plot {
+            dir,
+            spectrum,
+            max_frequency,
+        } => plot(&dir, spectrum, max_frequency),
         Command::Check { file, deck } => check(&file, &deck),
         Command::Convert { file, out, deck } => convert(&file, out.as_deref(), &deck),
         Command::Schema => {
@@ -510,6 +529,39 @@ fn steady_tow_report(system: &System, ws: &Workspace) {
             c,
             h
         );
+    }
+}
+
+/// `hawser plot DIR`.
+fn plot(dir: &Path, spectra: Vec<String>, max_frequency: Option<Real>) -> Result<ExitCode> {
+    if let Some(f) = max_frequency
+        && !(f > 0.0 && f.is_finite())
+    {
+        eprintln!("error: --max-frequency {f}: expected a positive frequency in Hz");
+        return Ok(ExitCode::from(2));
+    }
+    let options = hawser_io::plot::PlotOptions {
+        spectra,
+        max_frequency,
+    };
+    match hawser_io::plot::plot_run(dir, &options) {
+        Ok(w) => {
+            for f in &w.figures {
+                out!(
+                    "{}",
+                    dir.join("plots").join(format!("{}.png", f.stem)).display()
+                );
+            }
+            for n in &w.notes {
+                eprintln!("note: {n}");
+            }
+            out!("{}", w.report.display());
+            Ok(ExitCode::SUCCESS)
+        }
+        Err(e) => {
+            eprintln!("error: {e}");
+            Ok(ExitCode::from(2))
+        }
     }
 }
 

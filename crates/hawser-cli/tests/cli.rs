@@ -366,16 +366,35 @@ fn run_off_a_terminal_prints_progress_lines() {
     let dir = temp_dir("progress");
     let file = write(&dir, "valid.toml", VALID);
     let out_dir = dir.join("out");
-    let out = hawser(&["run", file.to_str().unwrap(), "--out", out_dir.to_str().unwrap()]);
+    let out = hawser(&[
+        "run",
+        file.to_str().unwrap(),
+        "--out",
+        out_dir.to_str().unwrap(),
+    ]);
     assert!(out.status.success(), "{}", stderr(&out, &dir));
     let err = stderr(&out, &dir);
-    let lines: Vec<&str> = err.lines().filter(|l| l.starts_with("progress: ")).collect();
+    let lines: Vec<&str> = err
+        .lines()
+        .filter(|l| l.starts_with("progress: "))
+        .collect();
     assert!(lines.len() >= 10, "{err}");
     for tenth in 1..=10 {
-        let at = format!("t = {:.2} s of 1.00 s ({} %)", tenth as f64 / 10.0, 10 * tenth);
-        assert!(lines.iter().any(|l| l.contains(&at)), "no line at {at}:\n{err}");
+        let at = format!(
+            "t = {:.2} s of 1.00 s ({} %)",
+            tenth as f64 / 10.0,
+            10 * tenth
+        );
+        assert!(
+            lines.iter().any(|l| l.contains(&at)),
+            "no line at {at}:\n{err}"
+        );
     }
-    assert!(lines.iter().all(|l| l.contains("× real time, elapsed ") && l.contains(", ETA ")));
+    assert!(
+        lines
+            .iter()
+            .all(|l| l.contains("× real time, elapsed ") && l.contains(", ETA "))
+    );
     let out = hawser(&[
         "run",
         file.to_str().unwrap(),
