@@ -24,7 +24,7 @@ pub struct Column {
 /// units from the `[unit]` suffixes, else from `second` when it is a units line (its first
 /// field is not a number), else from `channels` (the text of a `channels.json`: an object of
 /// name → unit, or of name → {"unit": …}, or a list of {"name", "unit"}, at the top level or
-/// under `"channels"`). Returns the columns and whether `second` is a header line to skip.
+/// under `"timeseries"` or `"channels"`). Returns the columns and whether `second` is a header line to skip.
 pub fn column_names(
     first: &str,
     second: Option<&str>,
@@ -67,7 +67,10 @@ pub fn column_names(
     if let Some(text) = channels
         && let Ok(v) = serde_json::from_str::<serde_json::Value>(text)
     {
-        let v = v.get("channels").cloned().unwrap_or(v);
+        let v = ["timeseries", "channels"]
+            .iter()
+            .find_map(|k| v.get(k).cloned())
+            .unwrap_or(v);
         let unit_of = |name: &str| -> Option<String> {
             let u = match &v {
                 serde_json::Value::Object(m) => m.get(name).map(|e| e.get("unit").unwrap_or(e)),
@@ -314,6 +317,11 @@ mod tests {
         let json = r#"{"L1.end_a.tension": {"unit": "N"}}"#;
         assert_eq!(
             column_names("time,L1.end_a.tension", None, Some(json)).0[1].unit,
+            "N"
+        );
+        let json = r#"{"format_version": 2, "timeseries": {"time": "s", "L1.end_a.tension": "N"}}"#;
+        assert_eq!(
+            column_names("time,L1.end_a.tension", Some("0,1"), Some(json)).0[1].unit,
             "N"
         );
         let json = r#"{"L1.end_a.tension": "N"}"#;

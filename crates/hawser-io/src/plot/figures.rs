@@ -146,7 +146,8 @@ pub(super) fn draw_chart<DB: DrawingBackend>(
         .y_label_formatter(&fy)
         .label_style(("sans-serif", LABEL - 2))
         .axis_desc_style(("sans-serif", LABEL))
-        .light_line_style(RGBColor(235, 235, 235))
+        .max_light_lines(1)
+        .light_line_style(RGBColor(242, 242, 242))
         .bold_line_style(RGBColor(215, 215, 215))
         .draw()
         .map_err(err)?;
