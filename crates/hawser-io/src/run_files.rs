@@ -174,6 +174,15 @@ impl Timeseries {
     pub fn index(&self, name: &str) -> Option<usize> {
         self.channels.iter().position(|c| c.name == name)
     }
+
+    /// Channel `c` as (time, value) pairs.
+    pub fn points(&self, c: usize) -> Vec<(Real, Real)> {
+        self.time
+            .iter()
+            .copied()
+            .zip(self.values[c].iter().copied())
+            .collect()
+    }
 }
 
 /// The index of the time column among `columns` (the one named `time`; the first if none

@@ -276,12 +276,7 @@ pub(super) fn end_tensions<DB: DrawingBackend>(
             let Some(c) = ts.index(&format!("{line}.{end}.tension")) else {
                 continue;
             };
-            let points: Vec<(f64, f64)> = ts
-                .time
-                .iter()
-                .copied()
-                .zip(ts.values[c].iter().copied())
-                .collect();
+            let points = ts.points(c);
             series.push(Series {
                 label: format!("{line} {}", if end == "end_a" { "end A" } else { "end B" }),
                 points: decimate(&points, 1500),
@@ -570,12 +565,7 @@ pub(super) fn body_motions<DB: DrawingBackend>(
     for (k, panel) in panels.iter().enumerate() {
         let c = columns[dof[k]];
         let unit = if dof[k] < 3 { "m" } else { "deg" };
-        let points: Vec<(f64, f64)> = ts
-            .time
-            .iter()
-            .copied()
-            .zip(ts.values[c].iter().copied())
-            .collect();
+        let points = ts.points(c);
         let title = format!("{body}.{}", names[k]);
         let y_label = format!("{} [{unit}]", names[k]);
         draw_chart(
