@@ -1,15 +1,22 @@
 #!/usr/bin/env bash
-# The C ABI and the MoorDyn-compatible library checked from C (about a minute once built):
-#  1. cargo's tests of hawser-capi (header up to date, C host on hawser.h equal to the Rust
-#     session) and hawser-moordyn (MoorDyn-API host through libmoordyn equal to hawser's run);
-#  2. tests/c/moordyn_host.c built once against MoorDyn 2.7.2's own libmoordyn (PyPI wheel, in
+# The MoorDyn-compatible library checked from C against MoorDyn itself (about a minute once
+# built). cargo's own tests of hawser-capi (header up to date, C host on hawser.h equal to the
+# Rust session) and hawser-moordyn (MoorDyn-API host through libmoordyn equal to hawser's run)
+# run in the workspace suite (README's test command); here:
+#  tests/c/moordyn_host.c built once against MoorDyn 2.7.2's own libmoordyn (PyPI wheel, in
 #     the throwaway venv of scripts/moordyn_venv.sh) and once against hawser's libmoordyn.so,
 #     unchanged: OC3, 2 m 10 s surge, coupling 0.01 s, 60 s; FairTen1-3 extremes and means
 #     over 20-60 s must agree within 0.5 % (docs/c-api.md gives the reason for the number).
 set -euo pipefail
 ROOT="$(cd "$(dirname "$0")/.." && pwd)"
 cd "$ROOT"
-cargo test --release -p hawser-capi -p hawser-moordyn
+# The libraries as the workspace suite builds them (nothing to do after `cargo test
+# --workspace --release`; a build of a subset of packages would unify other features and
+# rebuild the tree). cargo leaves them in target/release/deps (`cargo build` alone copies
+# them up), so the hosts link from there.
+cargo test --release --workspace --no-run
+LIBDIR="$ROOT/target/release/deps"
+test -f "$LIBDIR/libmoordyn.so"
 . scripts/moordyn_venv.sh
 MD_LIB="$(ls "$VENV"/lib/python3*/site-packages/moordyn.libs/libmoordyn*.so* | head -1)"
 TMP="$(mktemp -d)"
@@ -19,8 +26,8 @@ CC="${CC:-cc}"
 "$CC" -std=c99 -D_DEFAULT_SOURCE -O1 -o "$TMP/host_moordyn" tests/c/moordyn_host.c \
     -I crates/hawser-moordyn/include "$MD_LIB" -Wl,-rpath,"$(dirname "$MD_LIB")" -lm
 "$CC" -std=c99 -D_DEFAULT_SOURCE -O1 -o "$TMP/host_hawser" tests/c/moordyn_host.c \
-    -I crates/hawser-moordyn/include -L target/release -lmoordyn \
-    -Wl,-rpath,"$ROOT/target/release" -lm
+    -I crates/hawser-moordyn/include -L "$LIBDIR" -lmoordyn \
+    -Wl,-rpath,"$LIBDIR" -lm
 # MoorDyn writes its log and .out files beside the deck: run it on a copy.
 cp tests/data/moordyn/oc3_lines.txt "$TMP/"
 for lib in moordyn hawser; do

@@ -274,7 +274,7 @@ def hawser_finish(proc, errfh, cmd):
 def read_timeseries(path):
     with open(path) as fh:
         rows = list(csv.reader(fh))
-    head = [h.split(" [")[0] for h in rows[0]]
+    head = rows[0]
     cols = {h: [float(r[j]) for r in rows[1:]] for j, h in enumerate(head)}
     return cols
 

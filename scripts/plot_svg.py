@@ -5,7 +5,8 @@ with no dependencies beyond the standard library.
 usage:
   plot_svg.py timeseries OUT.svg CSV COLUMN [COLUMN ...] [--scale S] [--ylabel L] [--title T] [--from T0]
   plot_svg.py shapes OUT.svg SNAPSHOT.csv [--every K] [--title T]
-Columns are matched by their name without the unit, e.g. `cable.end_a.tension`.
+Columns are matched by their name without a unit in brackets (hawser's files have none;
+the comparison tables in docs/data have them), e.g. `cable.end_a.tension`.
 """
 import csv, sys
 

@@ -16,7 +16,7 @@ from plot_svg import svg  # noqa: E402
 out = sys.argv[1]
 t0 = float(sys.argv[2]) if len(sys.argv) > 2 else 30.0
 rows = list(csv.reader(open(os.path.join(out, "timeseries.csv"))))
-col = {name.split(" [")[0]: i for i, name in enumerate(rows[0])}
+col = {name: i for i, name in enumerate(rows[0])}
 data = [[float(v) for v in r] for r in rows[1:]]
 static = {name: data[0][i] for name, i in col.items()}
 data = [r for r in data if r[0] >= t0]

@@ -18,7 +18,7 @@ from plot_svg import svg  # noqa: E402
 
 def read(path):
     rows = list(csv.reader(open(path)))
-    col = {name.split(" [")[0]: i for i, name in enumerate(rows[0])}
+    col = {name: i for i, name in enumerate(rows[0])}
     data = [[float(v) for v in r] for r in rows[1:]]
     return lambda name: [r[col[name]] for r in data]
 

@@ -12,7 +12,7 @@ sys.path.insert(0, HERE)
 from plot_svg import svg  # noqa: E402
 
 rows = list(csv.reader(open(sys.argv[1])))
-col = {name.split(" [")[0]: i for i, name in enumerate(rows[0])}
+col = {name: i for i, name in enumerate(rows[0])}
 data = [[float(v) for v in r] for r in rows[1:]]
 get = lambda name: [r[col[name]] for r in data]
 t = get("time")

@@ -128,17 +128,10 @@ impl Host {
         Ok(())
     }
 
-    /// Places the coupled objects at `x` (the layout of [`Session::set_coupled`]), solves the
-    /// static equilibrium there, and sets the initial velocities `xd`.
-    pub fn init(&mut self, x: &[Real], xd: &[Real]) -> Result<(), HostError> {
-        if self.session.is_some() {
-            return Err(HostError::new(
-                ErrorKind::State,
-                "the session is initialised already",
-            ));
-        }
+    /// The model with its coupled objects placed at `x` (the layout of
+    /// [`Session::set_coupled`]): the model [`Host::init`] builds its session of.
+    pub fn initialised_model(&self, x: &[Real]) -> Result<Model, HostError> {
         self.check_len("the position array", x.len())?;
-        self.check_len("the velocity array", xd.len())?;
         let mut model = self.model.clone();
         let mut k = 0;
         for b in model
@@ -159,6 +152,21 @@ impl Host {
             p.position = Vec3::new(x[k], x[k + 1], x[k + 2]);
             k += 3;
         }
+        Ok(model)
+    }
+
+    /// Places the coupled objects at `x` (the layout of [`Session::set_coupled`]), solves the
+    /// static equilibrium there, and sets the initial velocities `xd`.
+    pub fn init(&mut self, x: &[Real], xd: &[Real]) -> Result<(), HostError> {
+        if self.session.is_some() {
+            return Err(HostError::new(
+                ErrorKind::State,
+                "the session is initialised already",
+            ));
+        }
+        self.check_len("the position array", x.len())?;
+        self.check_len("the velocity array", xd.len())?;
+        let model = self.initialised_model(x)?;
         let mut session =
             Session::with_options(model, SessionOptions::default()).map_err(simulation)?;
         session.set_coupled(0.0, x, xd, None).map_err(simulation)?;
@@ -353,6 +361,17 @@ impl Host {
             Some(s) => s.model().clone(),
             None => self.model.clone(),
         };
+        self.restore_model(model, bytes)
+    }
+
+    /// Continues from `bytes`, saved by a session initialised at `x` ([`Host::init`]): what a
+    /// new host of the same input restores (the Python package's unpickling).
+    pub fn restore_initialised(&mut self, x: &[Real], bytes: &[u8]) -> Result<(), HostError> {
+        let model = self.initialised_model(x)?;
+        self.restore_model(model, bytes)
+    }
+
+    fn restore_model(&mut self, model: Model, bytes: &[u8]) -> Result<(), HostError> {
         let session =
             Session::restore(model, bytes, SessionOptions::default()).map_err(simulation)?;
         self.session = Some(session);

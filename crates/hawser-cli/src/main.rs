@@ -11,7 +11,7 @@ use hawser::statics::StaticOptions;
 use hawser::system::{System, Workspace};
 use hawser_io::results::statics_json;
 use hawser_io::scenario::tables::read_text_file;
-use hawser_io::scenario::{self, Diagnostic, InputFormat, LoadedScenario};
+use hawser_io::scenario::{self, InputFormat, LoadedScenario};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::Instant;
@@ -285,25 +285,9 @@ fn system_of(model: &Model) -> Result<System> {
 
 /// Reports a step rejected by the stability check at the `time_step` key.
 fn step_error(file: &Path, loaded: &LoadedScenario, e: &SimulationError) -> String {
-    if let SimulationError::StepTooLarge {
-        step,
-        limit,
-        culprit,
-    } = e
-    {
-        let source = read_text_file(file).unwrap_or_default();
-        let d = Diagnostic::new(
-            file,
-            &source,
-            loaded.time_step_span.clone(),
-            "simulation.time_step",
-            format!("time_step = {step} s is above the stability limit {limit:.4e} s"),
-        )
-        .expected(format!("s, ≤ {limit:.4e} (set by {culprit})"))
-        .hint("use time_step = \"auto\", a smaller step, or fewer elements");
-        return d.to_string();
-    }
-    e.to_string()
+    let source = read_text_file(file).unwrap_or_default();
+    hawser_io::input::step_diagnostic(file, &source, loaded, e)
+        .map_or_else(|| e.to_string(), |d| d.to_string())
 }
 
 fn statics(file: &Path, json: bool, trace: bool) -> Result<ExitCode> {

@@ -7,18 +7,13 @@
 //! points, and `modes.json` (what `--json` prints).
 
 use anyhow::{Context, Result};
-use hawser::analysis::modes::{ModalOptions, ModeOwner, Modes, natural_modes};
-use hawser::analysis::resonance::{ResonanceCheck, excitations, resonance_report};
-use hawser::linearise::{ConnectionStiffness, Linearisation, LinearisationOptions};
+use hawser::analysis::resonance::ResonanceCheck;
 use hawser::math::{Real, Vec3};
-use hawser::model::PointKind;
-use hawser::statics::{StaticOptions, StaticSolution};
 use hawser::system::System;
-use serde_json::{Value, json};
+use hawser_io::modes::{ModalAnalysis, point_kind};
 use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
-use std::time::Instant;
 
 /// Arguments of `hawser modes`.
 #[derive(clap::Args)]
@@ -40,14 +35,6 @@ pub struct ModesArgs {
     margin: Real,
 }
 
-/// Wall times [s] of the stages.
-struct Timing {
-    statics: f64,
-    linearisation: f64,
-    modes: f64,
-    stiffness: f64,
-}
-
 /// Runs `hawser modes`.
 pub fn run(args: &ModesArgs) -> Result<ExitCode> {
     if !(args.margin >= 0.0 && args.margin < 100.0) || args.count == 0 {
@@ -61,71 +48,34 @@ pub fn run(args: &ModesArgs) -> Result<ExitCode> {
         return Ok(ExitCode::from(2));
     };
     let system = super::system_of(&loaded.model)?;
-    if let Err(e) = hawser::analysis::modes::supported(&system) {
-        eprintln!("error: {e}");
-        return Ok(ExitCode::from(1));
-    }
-    let t = Instant::now();
-    let sol = match hawser::statics::solve(&system, None, &StaticOptions::default()) {
-        Ok(s) => s,
+    let analysis = match ModalAnalysis::compute(&system, args.count, args.margin / 100.0) {
+        Ok(a) => a,
         Err(e) => {
             eprintln!("error: {e}");
             return Ok(ExitCode::from(1));
         }
     };
-    let statics_time = t.elapsed().as_secs_f64();
-    let t = Instant::now();
-    let lin = hawser::linearise::linearise(&system, &sol.state, LinearisationOptions::default());
-    let linearisation_time = t.elapsed().as_secs_f64();
-    let t = Instant::now();
-    let options = ModalOptions {
-        count: args.count,
-        ..Default::default()
-    };
-    let modes = match natural_modes(&system, &lin, &options) {
-        Ok(m) => m,
-        Err(e) => {
-            eprintln!("error: {e}");
-            return Ok(ExitCode::from(1));
-        }
-    };
-    let modes_time = t.elapsed().as_secs_f64();
-    let t = Instant::now();
-    let stiffness = hawser::linearise::connection_stiffness(&system, &lin).map_err(|s| {
-        anyhow::anyhow!(
-            "the stiffness is singular at {:?}",
-            system.singular_location(s)
-        )
-    })?;
-    let timing = Timing {
-        statics: statics_time,
-        linearisation: linearisation_time,
-        modes: modes_time,
-        stiffness: t.elapsed().as_secs_f64(),
-    };
-    let margin = args.margin / 100.0;
-    let report = resonance_report(&excitations(&system), &modes, margin);
-    let document = to_json(
-        &system, &sol, &lin, &modes, &stiffness, &report, margin, &timing,
-    );
+    let document = analysis.to_json(&system);
     if let Some(dir) = &args.out {
-        write_files(dir, &system, &lin, &modes, &document)
+        write_files(dir, &system, &analysis, &document)
             .with_context(|| format!("writing mode shapes into {}", dir.display()))?;
     }
     if args.json {
         print(&serde_json::to_string_pretty(&document)?);
     } else {
-        print(&table(&system, &sol, &modes, &stiffness, &report, margin));
+        print(&table(&system, &analysis));
     }
+    let timing = &analysis.timing;
     eprintln!(
         "timing: statics {:.3} s, linearisation {:.3} s, modes {:.3} s ({}), stiffness {:.3} s",
         timing.statics,
         timing.linearisation,
         timing.modes,
-        method_name(&modes),
+        analysis.method_name(),
         timing.stiffness
     );
-    for r in report.iter().filter(|r| r.warning()) {
+    let modes = &analysis.modes;
+    for r in analysis.resonance.iter().filter(|r| r.warning()) {
         eprintln!(
             "warning: {} at {:.4} Hz is within {} % of mode {} ({:.4} Hz, {})",
             r.excitation.source,
@@ -149,37 +99,9 @@ fn print(text: &str) {
     }
 }
 
-fn method_name(modes: &Modes) -> String {
-    match modes.method {
-        hawser::analysis::modes::EigenMethod::Dense => match &modes.fallback {
-            Some(why) => format!("dense ({why})"),
-            None => "dense".to_string(),
-        },
-        _ => format!(
-            "shift-invert subspace iteration, {} iterations, shift {:.3e} rad²/s²",
-            modes.iterations, modes.shift
-        ),
-    }
-}
-
-fn point_kind(system: &System, p: usize) -> &'static str {
-    match system.points[p].kind {
-        PointKind::Fixed => "fixed",
-        PointKind::Prescribed(_) => "prescribed",
-        PointKind::Coupled => "coupled",
-        PointKind::Free { .. } => "free",
-        PointKind::Body { .. } => "on a body",
-    }
-}
-
-fn table(
-    system: &System,
-    sol: &StaticSolution,
-    modes: &Modes,
-    stiffness: &ConnectionStiffness,
-    report: &[ResonanceCheck],
-    margin: Real,
-) -> String {
+fn table(system: &System, analysis: &ModalAnalysis) -> String {
+    let (sol, modes, stiffness) = (&analysis.statics, &analysis.modes, &analysis.stiffness);
+    let (report, margin): (&[ResonanceCheck], Real) = (&analysis.resonance, analysis.margin);
     let mut s = String::new();
     let mut line = |t: String| {
         s.push_str(&t);
@@ -192,7 +114,7 @@ fn table(
     line(format!(
         "{} degrees of freedom; {}; stiffness asymmetry {:.1e} (symmetric part used)",
         modes.degrees_of_freedom,
-        method_name(modes),
+        analysis.method_name(),
         modes.stiffness_asymmetry
     ));
     line(String::new());
@@ -258,107 +180,11 @@ fn table(
     s.trim_end().to_string()
 }
 
-#[allow(clippy::too_many_arguments)]
-fn to_json(
-    system: &System,
-    sol: &StaticSolution,
-    lin: &Linearisation,
-    modes: &Modes,
-    stiffness: &ConnectionStiffness,
-    report: &[ResonanceCheck],
-    margin: Real,
-    timing: &Timing,
-) -> Value {
-    let owner_name = |o: &ModeOwner| match *o {
-        ModeOwner::Line(l) => system.lines[l].name.clone(),
-        ModeOwner::Point(p) => system.points[p].name.clone(),
-    };
-    let mode_list: Vec<Value> = modes
-        .modes
-        .iter()
-        .enumerate()
-        .map(|(i, m)| {
-            let lines: serde_json::Map<String, Value> = system
-                .lines
-                .iter()
-                .zip(&m.line_shares)
-                .map(|(l, s)| (l.name.clone(), json!(s)))
-                .collect();
-            let points: serde_json::Map<String, Value> = system
-                .free_points
-                .iter()
-                .map(|&p| (system.points[p].name.clone(), json!(m.point_shares[p])))
-                .collect();
-            let directions: serde_json::Map<String, Value> = m
-                .direction_shares
-                .iter()
-                .map(|(d, s)| (d.name().to_string(), json!(s)))
-                .collect();
-            json!({
-                "mode": i + 1,
-                "frequency_hz": m.frequency,
-                "period_s": m.period,
-                "eigenvalue_rad2_per_s2": m.eigenvalue,
-                "label": m.label.text,
-                "direction": m.label.direction.name(),
-                "owners": m.label.owners.iter().map(owner_name).collect::<Vec<_>>(),
-                "kinetic_energy_share": {"lines": lines, "points": points, "directions": directions},
-            })
-        })
-        .collect();
-    let stiff: serde_json::Map<String, Value> = stiffness
-        .points
-        .iter()
-        .enumerate()
-        .map(|(i, &p)| {
-            let k = stiffness.block(i, i);
-            let rows: Vec<Vec<Real>> = (0..3)
-                .map(|r| (0..3).map(|c| k[(r, c)]).collect())
-                .collect();
-            (
-                system.points[p].name.clone(),
-                json!({"kind": point_kind(system, p), "matrix_n_per_m": rows}),
-            )
-        })
-        .collect();
-    let checks: Vec<Value> = report
-        .iter()
-        .map(|r| {
-            json!({
-                "source": r.excitation.source,
-                "frequency_hz": r.excitation.frequency,
-                "nearest_mode": r.nearest_mode + 1,
-                "natural_frequency_hz": r.natural_frequency,
-                "relative_distance": r.relative_distance,
-                "modes_within_margin": r.within_margin.iter().map(|i| i + 1).collect::<Vec<_>>(),
-                "warning": r.warning(),
-                "covered": r.covered,
-            })
-        })
-        .collect();
-    json!({
-        "statics": {"method": sol.method, "iterations": sol.iterations, "residual_n": sol.residual},
-        "degrees_of_freedom": lin.dofs.len(),
-        "method": method_name(modes),
-        "stiffness_asymmetry": modes.stiffness_asymmetry,
-        "modes": mode_list,
-        "stiffness": stiff,
-        "resonance": {"margin": margin, "checks": checks},
-        "timing_s": {
-            "statics": timing.statics,
-            "linearisation": timing.linearisation,
-            "modes": timing.modes,
-            "stiffness": timing.stiffness,
-        },
-    })
-}
-
 fn write_files(
     dir: &Path,
     system: &System,
-    lin: &Linearisation,
-    modes: &Modes,
-    document: &Value,
+    analysis: &ModalAnalysis,
+    document: &serde_json::Value,
 ) -> Result<()> {
     std::fs::create_dir_all(dir)?;
     let create = |name: &str| -> Result<std::io::BufWriter<std::fs::File>> {
@@ -367,9 +193,10 @@ fn write_files(
             std::fs::File::create(&path).with_context(|| format!("creating {}", path.display()))?,
         ))
     };
+    let modes = &analysis.modes.modes;
     let mut summary = create("modes.csv")?;
     writeln!(summary, "mode,frequency [Hz],period [s],label")?;
-    for (i, m) in modes.modes.iter().enumerate() {
+    for (i, m) in modes.iter().enumerate() {
         writeln!(
             summary,
             "{},{},{},\"{}\"",
@@ -380,40 +207,29 @@ fn write_files(
         )?;
     }
     summary.flush()?;
-    // Static positions of every node.
-    let mut ws = system.workspace();
-    system.point_kinematics(0.0, &lin.state, &mut ws);
-    system.gather_lines(&lin.state, &mut ws);
-    let scale: Vec<Real> = modes
-        .modes
-        .iter()
-        .map(|m| 1.0 / m.largest_displacement().max(Real::MIN_POSITIVE))
-        .collect();
+    let shapes = analysis.shapes(system);
     for (li, l) in system.lines.iter().enumerate() {
         let mut w = create(&format!("shapes_{}.csv", l.name))?;
         writeln!(
             w,
             "mode,node,arc_length [m],x [m],y [m],z [m],ux [-],uy [-],uz [-]"
         )?;
-        for (k, m) in modes.modes.iter().enumerate() {
-            for node in 0..l.nodes() {
-                let r = ws.lines[li].position[l.node_vector(node)];
-                let u = m.node_displacement(&lin.dofs, li, node) * scale[k];
+        for (k, u) in shapes.line_displacements.iter().enumerate() {
+            let nodes = shapes.line_positions[li].iter().zip(&u[li]);
+            for (node, (r, d)) in nodes.enumerate() {
                 let at = format!("{},{node},{}", k + 1, l.mesh.arc_length(node));
-                shape_row(&mut w, &at, &r, &u)?;
+                shape_row(&mut w, &at, r, d)?;
             }
         }
         w.flush()?;
     }
-    if !system.free_points.is_empty() {
+    if !shapes.points.is_empty() {
         let mut w = create("shapes_points.csv")?;
         writeln!(w, "mode,point,x [m],y [m],z [m],ux [-],uy [-],uz [-]")?;
-        for (k, m) in modes.modes.iter().enumerate() {
-            for &p in &system.free_points {
-                let r = ws.points[p].position;
-                let u = m.point_displacement(&lin.dofs, p) * scale[k];
+        for (k, u) in shapes.point_displacements.iter().enumerate() {
+            for (i, &p) in shapes.points.iter().enumerate() {
                 let at = format!("{},{}", k + 1, system.points[p].name);
-                shape_row(&mut w, &at, &r, &u)?;
+                shape_row(&mut w, &at, &shapes.point_positions[i], &u[i])?;
             }
         }
         w.flush()?;

@@ -9,7 +9,7 @@ use hawser::math::Real;
 use hawser::session::{
     Decoder, Encoder, Observer, ObserverError, ObserverId, RunEnd, Session, SessionOptions, View,
 };
-use hawser_io::results::{RunWriter, prepare_output_dir, write_atomically};
+use hawser_io::results::{RunWriter, prepare_output_dir, remove_run_files, write_atomically};
 use hawser_io::scenario::LoadedScenario;
 use indicatif::{ProgressBar, ProgressStyle};
 use serde_json::json;
@@ -299,6 +299,12 @@ pub(crate) fn run(
     deck: &DeckArgs,
 ) -> Result<ExitCode> {
     let signals = Signals::install();
+    // --overwrite removes the earlier run's results before anything else: a run refused or
+    // failed from here on leaves no earlier summary saying "complete" in its folder.
+    if overwrite && let Err(e) = remove_run_files(out) {
+        eprintln!("error: {e}");
+        return Ok(ExitCode::from(2));
+    }
     if let Some(c) = checkpoint_every
         && !(c > 0.0 && c.is_finite())
     {
@@ -393,14 +399,7 @@ pub(crate) fn run(
     };
     let text = serde_json::to_string_pretty(&invocation.to_json())? + "\n";
     write_atomically(&out.join("run.json"), text.as_bytes())?;
-    let writer = RunWriter::create(
-        out,
-        session.system(),
-        session.channels(),
-        model.settings.snapshot_interval,
-        file,
-        &loaded.statistics,
-    )?;
+    let writer = RunWriter::create(out, &session, file, &loaded.formats, &loaded.statistics)?;
     let writer = session.attach(writer);
     session.attach(Progress::new(quiet, model.settings.duration, 0.0));
     drive(session, writer, out, checkpoint_every, &signals, quiet)
@@ -461,10 +460,9 @@ pub(crate) fn resume(dir: &Path, quiet: bool) -> Result<ExitCode> {
     };
     let writer = match RunWriter::resume(
         dir,
-        session.system(),
-        session.channels(),
-        loaded.model.settings.snapshot_interval,
+        &session,
         file,
+        &loaded.formats,
         &loaded.statistics,
         writer_bytes,
     ) {
@@ -550,7 +548,24 @@ fn drive(
         // A finished or diverged run cannot be resumed.
         let _ = std::fs::remove_file(out.join("checkpoint.bin"));
     }
-    finished?;
+    // Time of the last row written (a sample whose row could not be written is not counted).
+    let written = session
+        .observer::<RunWriter>(writer)
+        .map_or(session.last_sample_time(), RunWriter::last_time);
+    if let Err(failed) = finished {
+        // The files could not all be written: say so after what stopped the run, if
+        // something did (a write failure stops the run, and the end files then fail too).
+        if let Err(e) = &result {
+            eprintln!("error: {e}");
+        }
+        eprintln!(
+            "error: {failed}\n  = the results in {} are incomplete (results up to t = {:.6} s; \
+             status.json may not say so if it could not be written either)",
+            out.display(),
+            written,
+        );
+        return Ok(ExitCode::from(1));
+    }
     match result {
         Ok(()) => {
             if !quiet {
@@ -568,7 +583,7 @@ fn drive(
             eprintln!(
                 "{e}: results up to t = {:.6} s are in {} (marked interrupted), with a \
                  checkpoint; continue with `hawser resume {}`",
-                session.last_sample_time(),
+                written,
                 out.display(),
                 out.display()
             );
@@ -577,7 +592,7 @@ fn drive(
         Err(e) => {
             eprintln!(
                 "error: {e}\n  = results up to t = {:.6} s are in {} (marked incomplete)",
-                session.last_sample_time(),
+                written,
                 out.display()
             );
             Ok(ExitCode::from(1))

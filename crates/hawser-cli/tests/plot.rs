@@ -123,7 +123,7 @@ fn plot_a_finished_and_a_running_run() {
     // written. The range graph then comes from the snapshots.
     let going = dir.join("going");
     std::fs::create_dir_all(going.join("snapshots")).unwrap();
-    for f in ["timeseries.csv", "run.json"] {
+    for f in ["timeseries.csv", "channels.json", "run.json"] {
         std::fs::copy(out.join(f), going.join(f)).unwrap();
     }
     std::fs::copy(
@@ -155,9 +155,24 @@ fn plot_errors() {
     assert_eq!(o.status.code(), Some(2));
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(err.contains("has no timeseries.csv"), "{err}");
+    // A folder of result format 1 (units in the column names) is refused, its version named.
     std::fs::write(
         dir.join("timeseries.csv"),
         "time [s],a.end_a.tension [N]\n0,1\n0.1,2\n",
+    )
+    .unwrap();
+    let o = hawser(&["plot", dir.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("format_version 1"), "{err}");
+    std::fs::write(
+        dir.join("timeseries.csv"),
+        "time,a.end_a.tension\n0.0,1.0\n0.1,2.0\n",
+    )
+    .unwrap();
+    std::fs::write(
+        dir.join("channels.json"),
+        r#"{"format_version": 2, "timeseries": {"time": "s", "a.end_a.tension": "N"}}"#,
     )
     .unwrap();
     let o = hawser(&[

@@ -1,6 +1,7 @@
 //! Interrupt and resume: a run stopped by SIGINT or SIGTERM, or killed (SIGKILL) after a
-//! periodic checkpoint, then continued by `hawser resume`, writes a `timeseries.csv`, snapshots
-//! and `summary.json` byte-identical to the uninterrupted run's: RK4, SSP-RK3 and the
+//! periodic checkpoint, then continued by `hawser resume`, writes a `timeseries.csv`,
+//! `timeseries.parquet`, snapshots, ParaView files and `summary.json` byte-identical to the
+//! uninterrupted run's: RK4, SSP-RK3 and the
 //! three-level scheme on the catenary mooring, and RK4 with a free body in irregular waves
 //! (the ROV example). A stopped run exits 130 (SIGINT) or 143 (SIGTERM) with its status
 //! "interrupted"; an output folder holding a run is refused without `--overwrite`.
@@ -114,20 +115,37 @@ fn resume(out: &Path) {
 
 /// The run's results, with the scenario path (which `status.json` names) left out.
 fn assert_same_results(a: &Path, b: &Path) {
-    for f in ["timeseries.csv", "summary.json", "final_state.json"] {
+    for f in [
+        "timeseries.csv",
+        "timeseries.parquet",
+        "channels.json",
+        "summary.json",
+        "final_state.json",
+    ] {
         let (x, y) = (
             std::fs::read(a.join(f)).unwrap(),
             std::fs::read(b.join(f)).unwrap(),
         );
         assert!(x == y, "{f} differs between the whole and the resumed run");
     }
-    if a.join("snapshots").exists() {
-        for e in std::fs::read_dir(a.join("snapshots")).unwrap() {
-            let p = e.unwrap().path();
-            let q = b.join("snapshots").join(p.file_name().unwrap());
+    for folder in ["snapshots", "vtk"] {
+        if !a.join(folder).exists() {
+            continue;
+        }
+        let files = |d: &Path| {
+            let mut v: Vec<_> = std::fs::read_dir(d.join(folder))
+                .unwrap()
+                .map(|e| e.unwrap().file_name())
+                .collect();
+            v.sort();
+            v
+        };
+        assert_eq!(files(a), files(b), "{folder}/ holds other files");
+        for name in files(a) {
+            let (p, q) = (a.join(folder).join(&name), b.join(folder).join(&name));
             assert!(
                 std::fs::read(&p).unwrap() == std::fs::read(&q).unwrap(),
-                "snapshot {} differs",
+                "{} differs",
                 p.display()
             );
         }

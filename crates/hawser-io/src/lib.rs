@@ -10,11 +10,11 @@
 
 pub mod fuzzing;
 pub mod input;
+pub mod modes;
 pub mod moordyn;
 #[cfg(feature = "plot")]
 pub mod plot;
 pub mod results;
 pub mod run_files;
-pub mod run_summary;
 pub mod scenario;
 pub mod verification_report;

@@ -1,43 +1,71 @@
-//! Result writers: `timeseries.csv`, per-line shape snapshots, `summary.json` (design
+//! Result writers: `timeseries.csv` (and from it `timeseries.parquet`), per-line shape
+//! snapshots as CSV and as ParaView files, `channels.json` (units), `summary.json` (design
 //! statistics, slack intervals, snap events, line strength), `line_ranges.json` (range graphs
-//! of tension along each line), `final_state.json` and `status.json`. Rows are flushed as the
-//! run goes, so a run that stops early keeps what it wrote, marked incomplete in
-//! `status.json` and `summary.json`.
+//! of tension along each line), `final_state.json` and `status.json`. Rows are written whole
+//! as the run goes, so a run that stops early keeps what it wrote, marked incomplete in
+//! `status.json` and `summary.json`; the JSON files are replaced atomically. docs/outputs.md
+//! describes every file; [`FORMAT_VERSION`] names their layout.
+//!
+//! Readers: [`read_table`] (a CSV file of a finished or running run, a torn last line
+//! dropped), [`read_units`] (`channels.json`).
 
-use crate::run_summary::{
-    DesignRecorder, statistics_json, statistics_options_json, strength_json, timeseries_statistics,
+mod csv;
+#[cfg(feature = "parquet")]
+mod parquet;
+mod summary;
+mod vtk;
+
+pub use csv::{RowSink, RowWriter, SampleTimes, Table, TableReader, push_number, read_table};
+#[cfg(feature = "parquet")]
+pub use parquet::write_parquet;
+pub use summary::{
+    RunSummary, section_json, statistics_json, statistics_options_json, strength_json,
+    timeseries_statistics,
 };
+pub use vtk::{PVD_FILE, VTK_DIR, VtkWriter};
+
+use crate::scenario::OutputFormats;
+use csv::cannot;
 pub use hawser::analysis::OutputChannel;
 use hawser::analysis::statistics::StatisticsOptions;
-use hawser::analysis::{Channel, SlackSnapDetector};
 use hawser::math::Real;
-use hawser::session::{Observer, ObserverError, RunEnd, View};
+use hawser::session::{Observer, ObserverError, RunEnd, Session, View};
 use hawser::system::{System, Workspace};
 use serde_json::{Value, json};
-use std::fs::File;
-use std::io::{BufWriter, Write};
 use std::path::{Path, PathBuf};
+
+/// The version of the layout of a run's files (column names, units, keys). It changes when a
+/// reader written for the old layout would read the new one wrongly (a column renamed, a unit
+/// or a meaning changed); new keys in the JSON files and new files leave it. `status.json`,
+/// `summary.json`, `channels.json` and the Parquet metadata carry it; `hawser resume` refuses
+/// a run written in another. Version 1 (unnumbered): units in the CSV headers
+/// (`time [s],L1.end_a.tension [N]`). Version 2: plain column names, units in
+/// `channels.json`, times from the sample counter, exponents for tiny and huge numbers.
+pub const FORMAT_VERSION: u64 = 2;
+
+/// The header of every line's snapshot file (`snapshots/LINE.csv`) and the units of its
+/// columns.
+pub const SNAPSHOT_COLUMNS: [(&str, &str); 7] = [
+    ("time", "s"),
+    ("node", "-"),
+    ("arc_length", "m"),
+    ("x", "m"),
+    ("y", "m"),
+    ("z", "m"),
+    ("tension", "N"),
+];
 
 /// Writes a dynamic run's results into a directory while it runs.
 pub struct RunWriter {
     dir: PathBuf,
-    channels: Vec<Channel>,
-    names: Vec<String>,
-    statistics: StatisticsOptions,
-    design: DesignRecorder,
-    detectors: Vec<SlackSnapDetector>,
-    timeseries: BufWriter<File>,
-    snapshots: Vec<BufWriter<File>>,
-    snapshot_interval: Option<Real>,
+    summary: RunSummary,
+    timeseries: RowWriter,
+    snapshots: Vec<RowWriter>,
+    vtk: Option<VtkWriter>,
+    parquet: bool,
     scenario: String,
-    next_snapshot: Real,
-    last_time: Real,
-    samples: u64,
-    row: Vec<Real>,
-}
-
-fn io_context(path: &Path, e: std::io::Error) -> std::io::Error {
-    std::io::Error::new(e.kind(), format!("{}: {e}", path.display()))
+    model_hash: u64,
+    times: SampleTimes,
 }
 
 /// Writes `value` to `path` atomically: into a temporary file beside it, then renamed over
@@ -47,26 +75,33 @@ fn write_json(path: &Path, value: &Value) -> std::io::Result<()> {
     write_atomically(path, (text + "\n").as_bytes())
 }
 
-/// Writes `bytes` to `path` through a temporary file renamed over it.
+/// Writes `bytes` to `path` through a temporary file renamed over it: `path` holds either its
+/// old or its new content, whenever the process stops. Errors name the file.
 pub fn write_atomically(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
     let mut tmp = path.as_os_str().to_owned();
     tmp.push(".tmp");
     let tmp = PathBuf::from(tmp);
-    std::fs::write(&tmp, bytes).map_err(|e| io_context(&tmp, e))?;
-    std::fs::rename(&tmp, path).map_err(|e| io_context(path, e))
+    std::fs::write(&tmp, bytes).map_err(|e| {
+        let _ = std::fs::remove_file(&tmp);
+        cannot("write", &tmp, e)
+    })?;
+    std::fs::rename(&tmp, path).map_err(|e| cannot("write", path, e))
 }
 
 /// The files and folders a run writes into its output folder: what `--overwrite` removes and
 /// what marks a folder as holding a run.
-pub const RUN_FILES: [&str; 10] = [
+pub const RUN_FILES: [&str; 13] = [
     "status.json",
     "summary.json",
+    "line_ranges.json",
     "timeseries.csv",
+    "timeseries.parquet",
+    "channels.json",
     "final_state.json",
     "checkpoint.bin",
     "run.json",
     "snapshots",
-    "line_ranges.json",
+    VTK_DIR,
     "plots",
     "report.html",
 ];
@@ -80,9 +115,24 @@ pub fn run_files_in(dir: &Path) -> Vec<&'static str> {
         .collect()
 }
 
+/// Removes the run files ([`RUN_FILES`]) from `dir` (the whole `snapshots/`, `vtk/` and
+/// `plots/` folders included, so that nothing stale is left beside new results; other files are left
+/// alone). Nothing to do for a folder that does not exist.
+pub fn remove_run_files(dir: &Path) -> std::io::Result<()> {
+    for f in run_files_in(dir) {
+        let p = dir.join(f);
+        let removed = if p.is_dir() && !p.is_symlink() {
+            std::fs::remove_dir_all(&p)
+        } else {
+            std::fs::remove_file(&p)
+        };
+        removed.map_err(|e| cannot("remove", &p, e))?;
+    }
+    Ok(())
+}
+
 /// Prepares `dir` for a new run: creates it, and refuses it when it holds another run's files
-/// unless `overwrite`, which removes them first (the whole `snapshots/` folder included, so
-/// nothing stale is left beside the new results; other files are left alone).
+/// unless `overwrite`, which removes them first ([`remove_run_files`]).
 pub fn prepare_output_dir(dir: &Path, overwrite: bool) -> std::io::Result<()> {
     let present = run_files_in(dir);
     if !present.is_empty() {
@@ -99,100 +149,169 @@ pub fn prepare_output_dir(dir: &Path, overwrite: bool) -> std::io::Result<()> {
                 ),
             ));
         }
-        for f in present {
-            let p = dir.join(f);
-            let removed = if p.is_dir() {
-                std::fs::remove_dir_all(&p)
-            } else {
-                std::fs::remove_file(&p)
-            };
-            removed.map_err(|e| io_context(&p, e))?;
-        }
+        remove_run_files(dir)?;
     }
-    std::fs::create_dir_all(dir).map_err(|e| io_context(dir, e))
+    std::fs::create_dir_all(dir).map_err(|e| cannot("create", dir, e))
+}
+
+/// The units of a run's columns from its `channels.json`: `timeseries` (column name → unit,
+/// `time` included) and `snapshots` (snapshot column → unit).
+pub fn read_units(dir: &Path) -> std::io::Result<Value> {
+    let path = dir.join("channels.json");
+    let text = std::fs::read_to_string(&path).map_err(|e| cannot("read", &path, e))?;
+    serde_json::from_str(&text).map_err(|e| {
+        std::io::Error::new(
+            std::io::ErrorKind::InvalidData,
+            format!("{}: {e}", path.display()),
+        )
+    })
+}
+
+/// Writes `dir/status.json`: `fields` with the format version, the scenario file, the hash of
+/// its model ([`hawser::session::model_hash`], as in checkpoints) and the hawser version.
+fn write_status(
+    dir: &Path,
+    scenario: &Path,
+    model_hash: u64,
+    fields: Value,
+) -> std::io::Result<()> {
+    let mut v = json!({
+        "format_version": FORMAT_VERSION,
+        "scenario": scenario.display().to_string(),
+        "model_hash": format!("{model_hash:016x}"),
+        "hawser": env!("CARGO_PKG_VERSION"),
+    });
+    if let (Some(v), Value::Object(f)) = (v.as_object_mut(), fields) {
+        v.extend(f);
+    }
+    write_json(&dir.join("status.json"), &v)
+}
+
+/// Refuses formats this build cannot write (Parquet without the `parquet` feature).
+fn check_formats(formats: &OutputFormats) -> std::io::Result<()> {
+    if formats.parquet && !cfg!(feature = "parquet") {
+        return Err(std::io::Error::new(
+            std::io::ErrorKind::Unsupported,
+            "this hawser was built without Parquet (cargo feature `parquet`)",
+        ));
+    }
+    Ok(())
+}
+
+/// The path of line `line`'s snapshot file in `dir`.
+fn snapshot_path(dir: &Path, system: &System, line: usize) -> PathBuf {
+    dir.join("snapshots")
+        .join(format!("{}.csv", safe_file_name(&system.lines[line].name)))
 }
 
 impl RunWriter {
-    /// Creates the files in `dir` (prepared by [`prepare_output_dir`], or created here when
-    /// missing), writes headers and marks the run as running. `statistics` says what the
-    /// statistics and range graphs cover (the scenario's `[statistics]`).
+    /// Creates the files of `session`'s run in `dir` (prepared by [`prepare_output_dir`], or
+    /// created here when missing): marks the run as running in `status.json`, writes
+    /// `channels.json` and the headers of the CSV files at once (so that a folder that cannot
+    /// take them is found before the run starts, with the file's name) and the empty ParaView
+    /// collection. `scenario` is the file the run came from; `formats` the formats written
+    /// besides CSV and JSON; `statistics` what the design statistics and range graphs cover
+    /// (the scenario's `[statistics]`, [`crate::scenario::LoadedScenario::statistics`]).
     pub fn create(
         dir: &Path,
-        system: &System,
-        outputs: &[OutputChannel],
-        snapshot_interval: Option<Real>,
+        session: &Session,
         scenario: &Path,
+        formats: &OutputFormats,
         statistics: &StatisticsOptions,
     ) -> std::io::Result<Self> {
-        std::fs::create_dir_all(dir).map_err(|e| io_context(dir, e))?;
-        write_json(
-            &dir.join("status.json"),
-            &json!({"complete": false, "state": "running", "scenario": scenario.display().to_string()}),
+        check_formats(formats)?;
+        std::fs::create_dir_all(dir).map_err(|e| cannot("create", dir, e))?;
+        let system = session.system();
+        let hash = hawser::session::model_hash(session.model());
+        write_status(
+            dir,
+            scenario,
+            hash,
+            json!({"complete": false, "state": "running"}),
         )?;
-        let path = dir.join("timeseries.csv");
-        let mut ts = BufWriter::new(File::create(&path).map_err(|e| io_context(&path, e))?);
+        let outputs = session.channels();
         let names: Vec<String> = outputs.iter().map(|c| c.name(system)).collect();
-        let channels: Vec<Channel> = outputs.iter().map(|c| c.channel).collect();
-        write!(ts, "time [s]")?;
-        for (c, n) in channels.iter().zip(&names) {
-            write!(ts, ",{n} [{}]", c.unit())?;
-        }
-        writeln!(ts)?;
-        let mut snapshots = Vec::new();
-        if snapshot_interval.is_some() {
+        let units = json!({
+            "format_version": FORMAT_VERSION,
+            "timeseries": std::iter::once(("time".to_string(), json!("s")))
+                .chain(names.iter().zip(outputs).map(|(n, c)| (n.clone(), json!(c.channel.unit()))))
+                .collect::<serde_json::Map<_, _>>(),
+            "snapshots": SNAPSHOT_COLUMNS
+                .iter()
+                .map(|(n, u)| (n.to_string(), json!(u)))
+                .collect::<serde_json::Map<_, _>>(),
+        });
+        write_json(&dir.join("channels.json"), &units)?;
+        let header = std::iter::once("time").chain(names.iter().map(String::as_str));
+        let timeseries = RowWriter::create(&dir.join("timeseries.csv"), header)?;
+        let mut w = Self::new(dir, session, scenario, formats, statistics, timeseries)?;
+        if w.summary.snapshot_interval.is_some() {
             let sd = dir.join("snapshots");
-            std::fs::create_dir_all(&sd).map_err(|e| io_context(&sd, e))?;
-            for l in &system.lines {
-                let p = sd.join(format!("{}.csv", safe_file_name(&l.name)));
-                let mut w = BufWriter::new(File::create(&p).map_err(|e| io_context(&p, e))?);
-                writeln!(
-                    w,
-                    "time [s],node,arc_length [m],x [m],y [m],z [m],tension [N]"
-                )?;
-                snapshots.push(w);
+            std::fs::create_dir_all(&sd).map_err(|e| cannot("create", &sd, e))?;
+            for li in 0..system.lines.len() {
+                w.snapshots.push(RowWriter::create(
+                    &snapshot_path(dir, system, li),
+                    SNAPSHOT_COLUMNS.iter().map(|(n, _)| *n),
+                )?);
+            }
+            if formats.vtk {
+                w.vtk = Some(VtkWriter::create(dir, system)?);
             }
         }
+        Ok(w)
+    }
+
+    /// The writer's fixed parts, with its files not yet opened.
+    fn new(
+        dir: &Path,
+        session: &Session,
+        scenario: &Path,
+        formats: &OutputFormats,
+        statistics: &StatisticsOptions,
+        timeseries: RowWriter,
+    ) -> std::io::Result<Self> {
+        let system = session.system();
+        let outputs = session.channels();
+        let settings = &session.model().settings;
         Ok(Self {
             dir: dir.to_path_buf(),
-            statistics: statistics.clone(),
-            design: DesignRecorder::new(system, statistics),
-            row: vec![0.0; channels.len()],
-            names,
-            channels,
-            detectors: vec![SlackSnapDetector::default(); system.lines.len()],
-            timeseries: ts,
-            snapshots,
-            snapshot_interval,
+            summary: RunSummary::new(system, outputs, settings.snapshot_interval, statistics),
+            timeseries,
+            snapshots: Vec::new(),
+            vtk: None,
+            parquet: formats.parquet,
             scenario: scenario.display().to_string(),
-            next_snapshot: 0.0,
-            last_time: 0.0,
-            samples: 0,
+            model_hash: hawser::session::model_hash(session.model()),
+            times: SampleTimes::new(settings, session.step_size(), session.sample_interval()),
         })
     }
 
     /// Time of the last sample written [s].
     pub fn last_time(&self) -> Real {
-        self.last_time
+        self.summary.last_time()
     }
 
-    /// What [`RunWriter::resume`] needs to go on from here: the length of every file written,
-    /// the range graphs, the slack and snap detectors and the snapshot schedule. Flushes
-    /// first.
+    /// The range graphs, slack intervals and snap events so far.
+    pub fn summary(&self) -> &RunSummary {
+        &self.summary
+    }
+
+    /// What [`RunWriter::resume`] needs to go on from here: the result format, the length of
+    /// every file written, the range graphs, the slack and snap detectors and the snapshot
+    /// schedule.
     pub fn progress(&mut self) -> std::io::Result<Vec<u8>> {
         let mut e = hawser::session::Encoder::default();
-        self.timeseries.flush()?;
-        e.u64(self.timeseries.get_ref().metadata()?.len());
+        e.u64(FORMAT_VERSION);
+        e.u64(self.timeseries.len());
         e.u64(self.snapshots.len() as u64);
-        for w in &mut self.snapshots {
-            w.flush()?;
-            e.u64(w.get_ref().metadata()?.len());
+        for w in &self.snapshots {
+            e.u64(w.len());
         }
-        self.design.encode(&mut e);
-        e.u64(self.detectors.len() as u64);
-        self.detectors.iter().for_each(|d| d.encode(&mut e));
-        e.f64(self.next_snapshot);
-        e.f64(self.last_time);
-        e.u64(self.samples);
+        let (pvd, count) = self.vtk.as_ref().map_or((0, 0), VtkWriter::progress);
+        e.bool(self.vtk.is_some());
+        e.u64(pvd);
+        e.u64(count);
+        self.summary.encode(&mut e);
         Ok(e.bytes)
     }
 
@@ -201,10 +320,9 @@ impl RunWriter {
     /// the checkpoint are written again by the resumed run) and opened for appending.
     pub fn resume(
         dir: &Path,
-        system: &System,
-        outputs: &[OutputChannel],
-        snapshot_interval: Option<Real>,
+        session: &Session,
         scenario: &Path,
+        formats: &OutputFormats,
         statistics: &StatisticsOptions,
         progress: &[u8],
     ) -> std::io::Result<Self> {
@@ -214,220 +332,208 @@ impl RunWriter {
                 format!("{}: the saved writer state {what}", dir.display()),
             )
         };
+        check_formats(formats)?;
+        let truncated = |_| bad("is truncated");
         let mut d = hawser::session::Decoder::new(progress);
-        let get = |d: &mut hawser::session::Decoder| d.u64().map_err(|_| bad("is truncated"));
-        let open = |path: PathBuf, len: u64| -> std::io::Result<BufWriter<File>> {
-            let f = std::fs::OpenOptions::new()
-                .write(true)
-                .open(&path)
-                .map_err(|e| io_context(&path, e))?;
-            if f.metadata()?.len() < len {
-                return Err(bad(&format!(
-                    "says {} has {len} bytes, but it is shorter: it was changed since",
-                    path.display()
-                )));
-            }
-            f.set_len(len).map_err(|e| io_context(&path, e))?;
-            let mut f = f;
-            std::io::Seek::seek(&mut f, std::io::SeekFrom::End(0))?;
-            Ok(BufWriter::new(f))
+        let version = d.u64().map_err(truncated)?;
+        if version != FORMAT_VERSION {
+            return Err(bad(&format!(
+                "is of another result format (this hawser writes format {FORMAT_VERSION}); \
+                 hint: finish the run with the hawser that started it, or run it again with \
+                 --overwrite"
+            )));
+        }
+        let timeseries =
+            RowWriter::reopen(&dir.join("timeseries.csv"), d.u64().map_err(truncated)?)?;
+        let mut w = Self::new(dir, session, scenario, formats, statistics, timeseries)?;
+        let system = session.system();
+        let count = d.u64().map_err(truncated)? as usize;
+        let expected = if w.summary.snapshot_interval.is_some() {
+            system.lines.len()
+        } else {
+            0
         };
-        let timeseries = open(dir.join("timeseries.csv"), get(&mut d)?)?;
-        let count = get(&mut d)? as usize;
-        let names: Vec<String> = outputs.iter().map(|c| c.name(system)).collect();
-        let channels: Vec<Channel> = outputs.iter().map(|c| c.channel).collect();
-        if count
-            != if snapshot_interval.is_some() {
-                system.lines.len()
-            } else {
-                0
-            }
-        {
+        if count != expected {
             return Err(bad("has another number of snapshot files"));
         }
-        let mut snapshots = Vec::new();
-        for l in &system.lines[..count] {
-            let len = get(&mut d)?;
-            snapshots.push(open(
-                dir.join("snapshots").join(format!("{}.csv", l.name)),
-                len,
-            )?);
+        for li in 0..count {
+            let len = d.u64().map_err(truncated)?;
+            w.snapshots
+                .push(RowWriter::reopen(&snapshot_path(dir, system, li), len)?);
         }
-        let design = DesignRecorder::decode(&mut d, system, statistics)
-            .ok_or_else(|| bad("has no range graphs of these lines"))?;
-        let n = get(&mut d)? as usize;
-        if n != system.lines.len() {
-            return Err(bad("has another number of lines"));
+        let has_vtk = d.bool().map_err(truncated)?;
+        let vtk_progress = (d.u64().map_err(truncated)?, d.u64().map_err(truncated)?);
+        if has_vtk != (formats.vtk && w.summary.snapshot_interval.is_some()) {
+            return Err(bad("has another choice of ParaView files"));
         }
-        let detectors = (0..n)
-            .map(|_| SlackSnapDetector::decode(&mut d).map_err(|_| bad("is truncated")))
-            .collect::<Result<Vec<_>, _>>()?;
-        let next_snapshot = d.f64().map_err(|_| bad("is truncated"))?;
-        let last_time = d.f64().map_err(|_| bad("is truncated"))?;
-        let samples = get(&mut d)?;
-        write_json(
-            &dir.join("status.json"),
-            &json!({"complete": false, "state": "running", "scenario": scenario.display().to_string(), "resumed_at": last_time}),
+        if has_vtk {
+            w.vtk = Some(VtkWriter::resume(dir, system, vtk_progress)?);
+        }
+        w.summary.decode(&mut d).map_err(bad)?;
+        w.write_status(
+            json!({"complete": false, "state": "running", "resumed_at": w.summary.last_time()}),
         )?;
-        Ok(Self {
-            dir: dir.to_path_buf(),
-            row: vec![0.0; channels.len()],
-            statistics: statistics.clone(),
-            design,
-            names,
-            channels,
-            detectors,
-            timeseries,
-            snapshots,
-            snapshot_interval,
-            scenario: scenario.display().to_string(),
-            next_snapshot,
-            last_time,
-            samples,
-        })
+        Ok(w)
     }
 
-    fn write_sample(&mut self, view: &View<'_>) -> std::io::Result<()> {
-        let (system, time, ws) = (view.system, view.time, view.workspace);
-        for (i, c) in self.channels.iter().enumerate() {
-            self.row[i] = view.value(c);
+    /// Writes `status.json` ([`write_status`]).
+    fn write_status(&self, fields: Value) -> std::io::Result<()> {
+        write_status(
+            &self.dir,
+            Path::new(&self.scenario),
+            self.model_hash,
+            fields,
+        )
+    }
+
+    fn write_sample(&mut self, view: &View<'_>, time: Real) -> std::io::Result<()> {
+        let ts = &mut self.timeseries;
+        ts.number(time);
+        for v in self.summary.read(view) {
+            ts.number(*v);
         }
-        write!(self.timeseries, "{time}")?;
-        for v in &self.row {
-            write!(self.timeseries, ",{v}")?;
-        }
-        writeln!(self.timeseries)?;
-        self.timeseries.flush()?;
-        self.design.sample(view);
-        for li in 0..system.lines.len() {
-            let lw = &ws.lines[li];
-            // The current mesh: a line on a winch changes its unstretched length.
-            let mesh = system.line_mesh(ws, li);
-            self.detectors[li].push(time, &lw.elements.tension, &lw.elements.strain, |e| {
-                0.5 * (mesh.arc_length(e) + mesh.arc_length(e + 1))
-            });
-        }
-        if let Some(interval) = self.snapshot_interval
-            && time >= self.next_snapshot - 1e-9 * interval
-        {
-            for li in 0..system.lines.len() {
+        ts.end_row();
+        ts.commit()?;
+        // The summary covers the rows written.
+        if self.summary.record(view, time) {
+            for li in 0..view.system.lines.len() {
                 let w = &mut self.snapshots[li];
                 for n in view.line_samples(li) {
                     let p = n.position;
-                    writeln!(
-                        w,
-                        "{time},{},{},{},{},{},{}",
-                        n.node, n.arc_length, p.x, p.y, p.z, n.tension
-                    )?;
+                    w.number(time);
+                    w.integer(n.node as u64);
+                    for x in [n.arc_length, p.x, p.y, p.z, n.tension] {
+                        w.number(x);
+                    }
+                    w.end_row();
                 }
-                w.flush()?;
+                w.commit()?;
             }
-            while self.next_snapshot <= time + 1e-9 * interval {
-                self.next_snapshot += interval;
+            if let Some(vtk) = &mut self.vtk {
+                vtk.snapshot(view, time)?;
             }
         }
         Ok(())
     }
 
-    /// Writes `summary.json`, `final_state.json` and `status.json` from the last state
-    /// `view`. `error` marks the run incomplete with its message; `interrupted` says it was
-    /// stopped from outside (it can be resumed).
+    /// The design statistics of the channels of `timeseries.csv` as written.
+    fn channel_statistics(
+        &self,
+    ) -> std::io::Result<Vec<hawser::analysis::statistics::ChannelStatistics>> {
+        let (names, stats) = timeseries_statistics(&self.dir, self.summary.statistics())?;
+        if names != self.summary.names {
+            return Err(std::io::Error::new(
+                std::io::ErrorKind::InvalidData,
+                format!(
+                    "{}: its columns are not the run's channels ({} columns, {} channels)",
+                    self.dir.join("timeseries.csv").display(),
+                    names.len(),
+                    self.summary.names.len()
+                ),
+            ));
+        }
+        Ok(stats)
+    }
+
+    /// Writes `timeseries.parquet` (when chosen) from the CSV.
+    #[cfg(feature = "parquet")]
+    fn write_parquet(&self, complete: bool) -> std::io::Result<()> {
+        if !self.parquet {
+            return Ok(());
+        }
+        let unit_map: serde_json::Map<String, Value> = std::iter::once(("time", "s"))
+            .chain(
+                self.summary
+                    .names
+                    .iter()
+                    .map(String::as_str)
+                    .zip(self.summary.channels.iter().map(|c| c.unit())),
+            )
+            .map(|(n, u)| (n.to_string(), json!(u)))
+            .collect();
+        let metadata = [
+            ("hawser.format_version", FORMAT_VERSION.to_string()),
+            ("hawser.model_hash", format!("{:016x}", self.model_hash)),
+            ("hawser.units", Value::Object(unit_map).to_string()),
+            ("hawser.complete", complete.to_string()),
+        ]
+        .map(|(k, v)| (k.to_string(), v));
+        write_parquet(
+            &self.dir.join("timeseries.csv"),
+            &self.dir.join("timeseries.parquet"),
+            &metadata,
+        )
+    }
+
+    /// Without the `parquet` feature a writer that chose Parquet is refused at creation.
+    #[cfg(not(feature = "parquet"))]
+    fn write_parquet(&self, _: bool) -> std::io::Result<()> {
+        debug_assert!(!self.parquet);
+        Ok(())
+    }
+
+    /// Writes `timeseries.parquet` (when chosen), `summary.json` (its design statistics from
+    /// `timeseries.csv` read back: exact across a resume), `line_ranges.json`,
+    /// `final_state.json` and `status.json` from the last state `view`. `error` marks the run incomplete with its
+    /// message; `interrupted` says it was stopped from outside (it can be resumed). A file
+    /// that cannot be written marks the run incomplete with its error in the files after it,
+    /// and is the error returned.
     pub fn write_end(
         &mut self,
         view: &View<'_>,
         error: Option<&str>,
         interrupted: bool,
     ) -> std::io::Result<()> {
-        let system = view.system;
-        self.timeseries.flush()?;
-        for s in &mut self.snapshots {
-            s.flush()?;
+        self.summary.finish();
+        let mut failure = None;
+        let mut error = error.map(str::to_string);
+        if let Err(e) = self.write_parquet(error.is_none()) {
+            error.get_or_insert_with(|| e.to_string());
+            failure = Some(e);
         }
-        for d in &mut self.detectors {
-            d.finish(self.last_time);
-        }
-        let complete = error.is_none();
-        // The design statistics of the time series as written (a resumed run's included).
-        let (columns, stats) = timeseries_statistics(&self.dir, &self.statistics)?;
-        if columns.len() != self.names.len() {
-            return Err(std::io::Error::new(
-                std::io::ErrorKind::InvalidData,
-                format!(
-                    "{}: {} channels in the file, {} in the run",
-                    self.dir.join("timeseries.csv").display(),
-                    columns.len(),
-                    self.names.len()
-                ),
-            ));
-        }
-        let channels = statistics_json(&columns, &stats, &self.statistics.linked);
-        let lines: serde_json::Map<String, Value> = system
-            .lines
-            .iter()
-            .zip(&self.detectors)
-            .enumerate()
-            .map(|(li, (l, d))| {
-                (
-                    l.name.clone(),
-                    json!({
-                        "slack_intervals": d.intervals.iter().map(|s| json!({"start": s.start, "end": s.end, "min_strain": s.min_strain})).collect::<Vec<_>>(),
-                        "snap_events": d.snaps.iter().map(|s| json!({
-                            "time": s.time, "peak_time": s.peak_time, "peak_tension": s.peak_tension,
-                            "location": s.location, "rise_rate": s.rise_rate})).collect::<Vec<_>>(),
-                        "strength": self.design.strength_json(system, li),
-                    }),
+        let written = self
+            .channel_statistics()
+            .and_then(|stats| {
+                write_json(
+                    &self.dir.join("summary.json"),
+                    &self.summary.to_json(view.system, error.as_deref(), &stats),
                 )
             })
-            .collect();
-        write_json(
-            &self.dir.join("line_ranges.json"),
-            &self.design.line_ranges_json(system),
-        )?;
-        write_json(
-            &self.dir.join("summary.json"),
-            &json!({
-                "complete": complete,
-                "error": error,
-                "end_time": self.last_time,
-                "samples": self.samples,
-                "statistics": statistics_options_json(&self.statistics, &columns),
-                "channels": channels,
-                "lines": lines,
-                "definitions": {
-                    "slack": "some element of the line has strain ≤ 0",
-                    "snap": "a slack → taut transition; peak is the largest element tension until the tension falls again",
-                    "location": "unstretched arc length from end A [m] of the element carrying the peak",
-                    "strength": "per section of each line, the largest node tension over the statistics window (max_tension [N]), where (at: unstretched arc length from end A [m]) and when (time [s]); utilisation = max_tension / minimum_breaking_load, design_utilisation = max_tension / (minimum_breaking_load / design_safety_factor); worst: the section with the largest design utilisation (utilisation without a safety factor)",
-                },
-            }),
-        )?;
-        write_json(
-            &self.dir.join("final_state.json"),
-            &state_json(view, self.last_time),
-        )?;
-        write_json(
-            &self.dir.join("status.json"),
-            &json!({
-                "complete": complete,
-                "state": if complete { "finished" } else if interrupted { "interrupted" } else { "stopped" },
-                "error": error,
-                "end_time": self.last_time,
-                "scenario": self.scenario,
-            }),
-        )
+            .and_then(|()| {
+                write_json(
+                    &self.dir.join("line_ranges.json"),
+                    &self.summary.line_ranges_json(view.system),
+                )
+            })
+            .and_then(|()| {
+                write_json(
+                    &self.dir.join("final_state.json"),
+                    &state_json(view, self.summary.last_time()),
+                )
+            });
+        if let Err(e) = written {
+            error.get_or_insert_with(|| e.to_string());
+            failure.get_or_insert(e);
+        }
+        let complete = error.is_none();
+        let status = self.write_status(json!({
+            "complete": complete,
+            "state": if complete { "finished" } else if interrupted { "interrupted" } else { "stopped" },
+            "error": error,
+            "end_time": self.summary.last_time(),
+        }));
+        match failure {
+            Some(e) => Err(e),
+            None => status,
+        }
     }
 }
 
 impl Observer for RunWriter {
     fn sample(&mut self, view: &View<'_>) -> Result<(), ObserverError> {
-        self.last_time = view.time;
-        self.samples += 1;
-        self.write_sample(view).map_err(|e| {
-            ObserverError(format!(
-                "cannot write the results in {}: {e}",
-                self.dir.display()
-            ))
-        })
+        let time = self.times.time(view.sample, view.time);
+        // The error names the file.
+        Ok(self.write_sample(view, time)?)
     }
 
     fn finish(&mut self, view: &View<'_>, end: &RunEnd) -> Result<(), ObserverError> {
@@ -452,7 +558,10 @@ fn line_json(view: &View<'_>, li: usize, velocities: bool) -> Value {
         "end_a": end(false),
         "end_b": end(true),
     });
-    if matches!(line.kind, hawser::formulation::LineKind::Hermite(_)) {
+    if matches!(
+        line.discretisation,
+        hawser::formulation::Discretisation::Hermite(_)
+    ) {
         let n = line.mesh.elements();
         v["tangents"] = json!(
             (0..=n)

@@ -842,3 +842,52 @@ fn release_of_a_fixed_point() {
     );
     insta::assert_snapshot!(msg);
 }
+
+#[test]
+fn vtk_format_without_snapshots() {
+    let text = mutate("channels = [", "formats = [\"vtk\"]\nchannels = [");
+    let msg = error(&text);
+    assert_located(
+        &msg,
+        line_of(&text, "formats"),
+        "simulation.formats",
+        true,
+        true,
+    );
+    assert!(msg.contains("snapshot_interval"), "{msg}");
+    insta::assert_snapshot!(msg);
+}
+
+#[test]
+fn unknown_format() {
+    // CSV and JSON are always written: "csv" is not a format to choose.
+    let text = mutate("channels = [", "formats = [\"csv\"]\nchannels = [");
+    let msg = error(&text);
+    assert_located(
+        &msg,
+        line_of(&text, "formats"),
+        "simulation.formats[0]",
+        true,
+        true,
+    );
+    assert!(msg.contains("always written"), "{msg}");
+    insta::assert_snapshot!(msg);
+}
+
+#[test]
+fn formats_chosen() {
+    let text = mutate(
+        "channels = [",
+        "snapshot_interval = 1.0\nformats = [\"vtk\"]\nchannels = [",
+    );
+    let s = scenario::parse(Path::new(FILE), &text).unwrap();
+    assert!(s.formats.vtk && !s.formats.parquet);
+    let s = scenario::parse(
+        Path::new(FILE),
+        &mutate("channels = [", "formats = []\nchannels = ["),
+    )
+    .unwrap();
+    assert!(!s.formats.vtk && !s.formats.parquet);
+    let s = scenario::parse(Path::new(FILE), BASE).unwrap();
+    assert_eq!(s.formats, hawser_io::scenario::OutputFormats::default());
+}

@@ -108,7 +108,7 @@ pub(crate) fn line_forces_at_rest(
         let lw = &mut ws.lines[li];
         line_forces(
             &l.mesh,
-            &l.kind,
+            &l.discretisation,
             &system.environment,
             0.0,
             &lw.position,
@@ -159,7 +159,7 @@ pub fn force_jacobian(
         let evaluate = |lw: &mut crate::system::LineWork, out: &mut Vec<Vec3>| {
             line_forces(
                 &l.mesh,
-                &l.kind,
+                &l.discretisation,
                 env,
                 0.0,
                 &lw.position,

@@ -299,7 +299,7 @@ impl hawser::session::Observer for Reader {
             for n in view.line_samples(l) {
                 self.tension = self.tension.max(n.tension);
             }
-            self.ranges[l].push(view, l);
+            self.ranges[l].push(view, l, view.time);
         }
         Ok(())
     }

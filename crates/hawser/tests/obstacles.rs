@@ -536,16 +536,16 @@ fn line_momentum(system: &System, ws: &Workspace) -> Vec3 {
     for e in 0..n {
         let s = l.mesh.section(e);
         let (gamma, le) = (s.line_type.mass_per_length, s.element_length);
-        p += match l.kind {
-            hawser::formulation::LineKind::Fe { .. } => {
+        p += match l.discretisation {
+            hawser::formulation::Discretisation::Fe { .. } => {
                 (qdot[e] + qdot[e + 1]) * (0.5 * gamma * le)
             }
-            hawser::formulation::LineKind::Hermite(_) => {
+            hawser::formulation::Discretisation::Hermite(_) => {
                 let [ra, ta, rb, tb] = hawser::formulation::hermite::element_vectors(e, n);
                 (qdot[ra] + qdot[rb]) * (0.5 * gamma * le)
                     + (qdot[ta] - qdot[tb]) * (gamma * le * le / 12.0)
             }
-            hawser::formulation::LineKind::Dg => unreachable!("fe and hermite only"),
+            hawser::formulation::Discretisation::Dg(_) => unreachable!("fe and hermite only"),
         };
     }
     p
@@ -555,9 +555,9 @@ fn line_momentum(system: &System, ws: &Workspace) -> Vec3 {
 fn line_points(system: &System, ws: &Workspace) -> Vec<Vec3> {
     let l = &system.lines[0];
     let q = &ws.lines[0].position;
-    match l.kind {
-        hawser::formulation::LineKind::Fe { .. } => q.clone(),
-        hawser::formulation::LineKind::Hermite(_) => (0..l.mesh.elements())
+    match l.discretisation {
+        hawser::formulation::Discretisation::Fe { .. } => q.clone(),
+        hawser::formulation::Discretisation::Hermite(_) => (0..l.mesh.elements())
             .flat_map(|e| {
                 (0..10).map(move |k| {
                     hawser::formulation::hermite::point_on_element(&l.mesh, q, e, k as Real / 10.0)
@@ -565,7 +565,7 @@ fn line_points(system: &System, ws: &Workspace) -> Vec<Vec3> {
                 })
             })
             .collect(),
-        hawser::formulation::LineKind::Dg => unreachable!("fe and hermite only"),
+        hawser::formulation::Discretisation::Dg(_) => unreachable!("fe and hermite only"),
     }
 }
 
@@ -582,7 +582,7 @@ fn obstacle_part_of_node_forces(system: &System, ws: &Workspace, t: Real) -> Vec
         let mut elements = hawser::formulation::ElementState::new(l.mesh.elements());
         hawser::formulation::line_forces(
             &l.mesh,
-            &l.kind,
+            &l.discretisation,
             env,
             t,
             &lw.position,
@@ -807,7 +807,7 @@ fn dg_contact_enters_the_momentum_as_the_channels_say() {
         let mut ws = system.workspace();
         let mut dydt = vec![0.0; y.len()];
         system.rhs(t, &y, &mut dydt, &mut ws).unwrap();
-        let line = system.lines[0].dg.as_ref().expect("a dg line");
+        let line = system.lines[0].dg().expect("a dg line");
         let o = system.layout.line_offset[0];
         let rate = (0..line.elements.len())
             .map(|e| {

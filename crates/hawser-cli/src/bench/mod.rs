@@ -363,7 +363,7 @@ fn bench(
             .tables()
             .map(|t| t.memory_bytes());
         results.push(serde_json::json!({
-            "formulation": system.lines.first().map_or("fe", |l| l.kind.name()),
+            "formulation": system.lines.first().map_or("fe", |l| l.discretisation.name()),
             "order": model.lines.first().filter(|l| l.formulation == Formulation::Dg).map(|l| l.sections[0].order),
             "scheme": format!("{:?}", model.settings.scheme).to_lowercase(),
             "stable_step": limit,

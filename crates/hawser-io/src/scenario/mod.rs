@@ -2,10 +2,11 @@
 
 pub mod build;
 pub mod diagnostics;
+pub mod overrides;
 pub mod schema;
 pub mod tables;
 
-pub use build::{InputFormat, LoadedScenario};
+pub use build::{InputFormat, LoadedScenario, OutputFormats};
 pub use diagnostics::{Diagnostic, ScenarioError};
 
 use std::path::Path;

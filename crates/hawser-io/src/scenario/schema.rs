@@ -102,6 +102,18 @@ pub enum SchemeSpec {
     ThreeLevel,
 }
 
+/// A result format written besides CSV and JSON (which every run writes).
+#[derive(Clone, Copy, Debug, Deserialize, Serialize, JsonSchema, PartialEq, Eq)]
+#[serde(rename_all = "kebab-case")]
+pub enum FormatSpec {
+    /// `timeseries.parquet` beside `timeseries.csv` (always written): the time series for
+    /// pandas, polars and pyarrow.
+    Parquet,
+    /// `vtk/run.pvd` and its `.vtp` files: lines, bodies and points at every snapshot, for
+    /// ParaView (with `snapshot_interval`).
+    Vtk,
+}
+
 /// What a fixed `time_step` above the stability limit does.
 #[derive(Clone, Copy, Debug, Deserialize, Serialize, JsonSchema, PartialEq, Eq)]
 #[serde(rename_all = "kebab-case")]
@@ -157,6 +169,11 @@ pub struct SimulationSpec {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<f64>")]
     pub snapshot_interval: Option<Spanned<f64>>,
+    /// Result formats written besides CSV and JSON: `"parquet"`, `"vtk"` (ParaView files at
+    /// each snapshot); both by default.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<Vec<FormatSpec>>")]
+    pub formats: Option<Spanned<Vec<FormatSpec>>>,
     /// `"statics"` (default), `"as-defined"` or `"steady-tow"`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<InitialConditionSpec>")]

@@ -230,16 +230,16 @@ pub fn relative_position(ws: &Workspace, object: Object, reference: Object) -> c
 /// the stretch 1 + ε at the element's two ends (trapezoidal). Unstretched lengths are the
 /// current ones ([`System::line_mesh`]).
 pub fn stretched_length(system: &System, ws: &Workspace, line: usize) -> Real {
-    use crate::formulation::{LineKind, hermite};
+    use crate::formulation::{Discretisation, hermite};
     let l = &system.lines[line];
     let mesh = system.line_mesh(ws, line);
     let lw = &ws.lines[line];
     let n = mesh.elements();
-    match l.kind {
-        LineKind::Fe { .. } => (0..n)
+    match l.discretisation {
+        Discretisation::Fe { .. } => (0..n)
             .map(|e| (lw.position[e + 1] - lw.position[e]).norm())
             .sum(),
-        LineKind::Hermite(_) => (0..n)
+        Discretisation::Hermite(_) => (0..n)
             .map(|e| {
                 let h = mesh.section(e).element_length;
                 hermite::GAUSS
@@ -253,7 +253,7 @@ pub fn stretched_length(system: &System, ws: &Workspace, line: usize) -> Real {
                     .sum::<Real>()
             })
             .sum(),
-        LineKind::Dg => (0..n)
+        Discretisation::Dg(_) => (0..n)
             .map(|e| mesh.section(e).element_length * (1.0 + lw.elements.strain[e]))
             .sum(),
     }

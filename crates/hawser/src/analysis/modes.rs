@@ -196,11 +196,11 @@ pub fn supported(system: &System) -> Result<(), ModalError> {
     match system
         .lines
         .iter()
-        .find(|l| l.kind.bandwidth() > 1 || l.dg.is_some())
+        .find(|l| l.discretisation.bandwidth() > 1 || l.dg().is_some())
     {
         Some(l) => Err(ModalError::Unsupported {
             line: l.name.clone(),
-            formulation: l.kind.name(),
+            formulation: l.discretisation.name(),
         }),
         None => Ok(()),
     }

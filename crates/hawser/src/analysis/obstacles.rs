@@ -17,7 +17,7 @@
 //!   length of cable in contact [m] as the quadrature sees it (it moves in steps of a node's
 //!   share of an element).
 
-use crate::formulation::{LineKind, fe, hermite};
+use crate::formulation::{Discretisation, fe, hermite};
 use crate::math::{Real, Vec3};
 use crate::physics::obstacles::Obstacle;
 use crate::system::{System, Workspace};
@@ -70,17 +70,17 @@ fn contacts(
     for (li, (l, lw)) in system.lines.iter().zip(&ws.lines).enumerate() {
         let (q, qdot) = (&lw.position[..], &lw.velocity[..]);
         let mesh = system.line_mesh(ws, li);
-        match l.kind {
-            LineKind::Fe { .. } => {
+        match l.discretisation {
+            Discretisation::Fe { .. } => {
                 fe::obstacle_contacts(mesh, obstacles, time, q, qdot, |k, _, f, w| visit(k, f, w))
             }
-            LineKind::Hermite(_) => {
+            Discretisation::Hermite(_) => {
                 hermite::obstacle_contacts(mesh, obstacles, time, q, qdot, |k, _, _, f, w| {
                     visit(k, f, w)
                 })
             }
-            LineKind::Dg => {
-                let (Some(line), Some(dws)) = (&l.dg, &ws.dg[li]) else {
+            Discretisation::Dg(_) => {
+                let (Some(line), Some(dws)) = (l.dg(), &ws.dg[li]) else {
                     continue;
                 };
                 // The source term of the dg right-hand side at its Gauss points, with the

@@ -36,8 +36,9 @@ impl RangeGraph {
         }
     }
 
-    /// Adds the node tensions of line `line` in `view`.
-    pub fn push(&mut self, view: &View<'_>, line: usize) {
+    /// Adds the node tensions of line `line` in `view` as the sample at `time` [s] (the
+    /// sample's time as written, which may differ from `view.time` by round-off).
+    pub fn push(&mut self, view: &View<'_>, line: usize, time: Real) {
         self.samples += 1;
         for n in view.line_samples(line) {
             let i = n.node;
@@ -45,7 +46,7 @@ impl RangeGraph {
             self.min[i] = self.min[i].min(n.tension);
             if n.tension > self.max[i] {
                 self.max[i] = n.tension;
-                self.time_of_max[i] = view.time;
+                self.time_of_max[i] = time;
             }
             self.sum[i] += n.tension;
         }

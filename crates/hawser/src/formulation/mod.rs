@@ -156,9 +156,13 @@ impl Mesh {
     }
 }
 
-/// The formulation of a line and its own options.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum LineKind {
+/// How a line is discretised: its formulation with its own options, and for `dg` the whole
+/// discretisation (sections, bases, elements, end conditions). The one enum every
+/// formulation-dependent operation of an assembled line matches on
+/// ([`crate::system::SystemLine`]: state length, gather, evaluation, shape, energy, end
+/// force, node tension, location; [`crate::system::System::stable_step`]: the stable rate).
+#[derive(Clone, Debug)]
+pub enum Discretisation {
     /// Position-vector finite elements (linear, two nodes; [`fe`]).
     Fe {
         /// Consistent or lumped mass.
@@ -166,27 +170,28 @@ pub enum LineKind {
     },
     /// Cubic Hermite elements with positions and tangents ([`hermite`]).
     Hermite(HermiteOptions),
-    /// High-order discontinuous Galerkin ([`dg`]). Its unknowns are modal coefficients held
-    /// by the line's [`dg::DgLine`], not 3-vectors; as a `LineKind` it describes the line's
+    /// High-order discontinuous Galerkin ([`dg`]). Its unknowns are the modal coefficients of
+    /// q and v per element held by the [`dg::DgLine`], not 3-vectors; its 3-vectors are its
     /// outputs (positions at the N + 1 element ends) and its two end attachments, which
     /// receive the flux tractions as forces and no mass.
-    Dg,
+    Dg(Box<dg::DgLine>),
 }
 
-impl LineKind {
-    /// Number of 3-vector unknowns of a line of `elements` elements, ends included.
+impl Discretisation {
+    /// Number of 3-vectors of a line of `elements` elements, ends included: its unknowns
+    /// for `fe` and `hermite`, its node outputs for `dg`.
     pub fn vectors(&self, elements: usize) -> usize {
         match self {
-            LineKind::Fe { .. } | LineKind::Dg => elements + 1,
-            LineKind::Hermite(_) => 2 * elements + 2,
+            Discretisation::Fe { .. } | Discretisation::Dg(_) => elements + 1,
+            Discretisation::Hermite(_) => 2 * elements + 2,
         }
     }
 
     /// Block bandwidth of the line's matrices.
     pub fn bandwidth(&self) -> usize {
         match self {
-            LineKind::Fe { .. } | LineKind::Dg => 1,
-            LineKind::Hermite(_) => 3,
+            Discretisation::Fe { .. } | Discretisation::Dg(_) => 1,
+            Discretisation::Hermite(_) => 3,
         }
     }
 
@@ -194,8 +199,8 @@ impl LineKind {
     #[inline]
     pub fn node_vector(&self, node: usize, elements: usize) -> usize {
         match self {
-            LineKind::Fe { .. } | LineKind::Dg => node,
-            LineKind::Hermite(_) => hermite::vector_index(node, false, elements),
+            Discretisation::Fe { .. } | Discretisation::Dg(_) => node,
+            Discretisation::Hermite(_) => hermite::vector_index(node, false, elements),
         }
     }
 
@@ -203,8 +208,8 @@ impl LineKind {
     #[inline]
     pub fn is_tangent(&self, j: usize, elements: usize) -> bool {
         match self {
-            LineKind::Fe { .. } | LineKind::Dg => false,
-            LineKind::Hermite(_) => {
+            Discretisation::Fe { .. } | Discretisation::Dg(_) => false,
+            Discretisation::Hermite(_) => {
                 j != 0 && j != 2 * elements + 1 && (j % 2 == 1 || j == 2 * elements)
             }
         }
@@ -213,18 +218,27 @@ impl LineKind {
     /// Whether the mass couples neighbouring vectors (not lumped).
     pub fn consistent_mass(&self) -> bool {
         match self {
-            LineKind::Fe { mass_matrix } => *mass_matrix == MassMatrix::Consistent,
-            LineKind::Hermite(_) => true,
-            LineKind::Dg => false,
+            Discretisation::Fe { mass_matrix } => *mass_matrix == MassMatrix::Consistent,
+            Discretisation::Hermite(_) => true,
+            Discretisation::Dg(_) => false,
         }
     }
 
     /// Short name as in scenario files.
     pub fn name(&self) -> &'static str {
         match self {
-            LineKind::Fe { .. } => "fe",
-            LineKind::Hermite(_) => "hermite",
-            LineKind::Dg => "dg",
+            Discretisation::Fe { .. } => "fe",
+            Discretisation::Hermite(_) => "hermite",
+            Discretisation::Dg(_) => "dg",
+        }
+    }
+
+    /// The `dg` discretisation, `None` for the element formulations.
+    #[inline]
+    pub fn dg(&self) -> Option<&dg::DgLine> {
+        match self {
+            Discretisation::Dg(line) => Some(line),
+            Discretisation::Fe { .. } | Discretisation::Hermite(_) => None,
         }
     }
 }
@@ -350,7 +364,7 @@ impl LoadOptions<'_> {
 #[allow(clippy::too_many_arguments)]
 pub fn line_forces(
     mesh: &Mesh,
-    kind: &LineKind,
+    kind: &Discretisation,
     env: &Environment,
     time: Real,
     q: &[Vec3],
@@ -361,7 +375,7 @@ pub fn line_forces(
     options: LoadOptions,
 ) {
     match kind {
-        LineKind::Fe { mass_matrix } => fe::line_forces(
+        Discretisation::Fe { mass_matrix } => fe::line_forces(
             mesh,
             *mass_matrix,
             env,
@@ -373,9 +387,11 @@ pub fn line_forces(
             blocks,
             options,
         ),
-        LineKind::Hermite(h) => hermite::line_forces(
+        Discretisation::Hermite(h) => hermite::line_forces(
             mesh, h, env, time, q, qdot, forces, elements, blocks, options,
         ),
-        LineKind::Dg => unreachable!("dg lines are evaluated by System::rhs through DgLine::rhs"),
+        Discretisation::Dg(_) => {
+            unreachable!("dg lines are evaluated by SystemLine::evaluate through DgLine::rhs")
+        }
     }
 }

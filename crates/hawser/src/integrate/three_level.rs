@@ -98,7 +98,10 @@ impl ThreeLevel {
             last_step: 0.0,
             point_mass: vec![Mat3::zeros(); points],
             point_force: vec![Vec3::zeros(); points],
-            exact_mass: system.lines.iter().any(|l| l.kind.bandwidth() > 1),
+            exact_mass: system
+                .lines
+                .iter()
+                .any(|l| l.discretisation.bandwidth() > 1),
         }
     }
 

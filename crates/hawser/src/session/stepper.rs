@@ -120,7 +120,7 @@ pub struct Stepper {
 /// What a step size rule found wrong.
 pub(crate) fn scheme_error(system: &System, scheme: Scheme) -> Option<SimulationError> {
     if scheme == Scheme::ThreeLevel
-        && let Some(l) = system.lines.iter().find(|l| l.dg.is_some())
+        && let Some(l) = system.lines.iter().find(|l| l.dg().is_some())
     {
         return Some(SimulationError::Model(ModelError::SchemeCannotStepDg {
             scheme: "three-level",

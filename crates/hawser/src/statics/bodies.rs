@@ -157,7 +157,7 @@ pub fn relax_with_bodies(system: &System) -> Option<Vec<Real>> {
     let mut weight_scale: Real = 0.0;
     let mut mass = vec![0.0; n / 3];
     for (li, l) in system.lines.iter().enumerate() {
-        if l.dg.is_some() {
+        if l.dg().is_some() {
             return None;
         }
         let o = system.layout.line_offset[li] / 3;

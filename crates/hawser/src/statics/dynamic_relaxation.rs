@@ -20,7 +20,10 @@ pub fn relax(system: &System, y: &mut [Real], tol: Real, ws: &mut Workspace) -> 
         let o = system.layout.line_offset[li] / 3;
         let n = l.mesh.elements();
         let last = l.vectors() - 1;
-        let hermite = matches!(l.kind, crate::formulation::LineKind::Hermite(_));
+        let hermite = matches!(
+            l.discretisation,
+            crate::formulation::Discretisation::Hermite(_)
+        );
         for e in 0..n {
             let s = l.mesh.section(e);
             let k = s.law.stiffness.max_tangent() / s.element_length

@@ -243,7 +243,7 @@ pub fn catenary_seed(system: &System, y: &mut [Real], ws: &mut Workspace) {
                 }
             })
             .collect();
-        l.set_shape(&shape, &mut y[o..]);
+        l.set_node_shape(&shape, &mut y[o..]);
     }
 }
 
@@ -518,7 +518,7 @@ pub fn solve(
 pub fn set_tow_velocities(system: &System, y: &mut [Real]) {
     let v = system.tow_velocity;
     for (li, l) in system.lines.iter().enumerate() {
-        if l.dg.is_some() {
+        if l.dg().is_some() {
             continue;
         }
         let o = system.layout.line_offset[li];
@@ -686,7 +686,7 @@ pub fn evaluate(system: &System, y: &[Real], ws: &mut Workspace) -> Real {
         }
         let mut norm: Real = 0.0;
         for (li, l) in system.lines.iter().enumerate() {
-            if let Some(dg) = &l.dg {
+            if let Some(dg) = l.dg() {
                 let o = system.layout.line_offset[li];
                 for (e, el) in dg.elements.iter().enumerate() {
                     let m3 = 3 * dg.section(e).basis.modes();

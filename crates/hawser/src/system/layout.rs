@@ -20,6 +20,25 @@ pub struct Layout {
 }
 
 impl Layout {
+    /// The entries of line `line`'s block.
+    #[inline]
+    pub fn line_range(&self, line: usize) -> std::ops::Range<usize> {
+        self.line_offset[line]..self.line_offset[line] + self.line_len[line]
+    }
+
+    /// The entries of point `point`'s block (position then velocity), `None` unless it is
+    /// free.
+    #[inline]
+    pub fn point_range(&self, point: usize) -> Option<std::ops::Range<usize>> {
+        self.point_offset[point].map(|o| o..o + 6)
+    }
+
+    /// The entries of body `body`'s block, `None` unless it is free.
+    #[inline]
+    pub fn body_range(&self, body: usize) -> Option<std::ops::Range<usize>> {
+        self.body_offset[body].map(|o| o..o + crate::bodies::STATE_LEN)
+    }
+
     /// Every second-order block of the state as (offset, node count): each `fe` or `hermite`
     /// line's interior nodes, then each free point (one node). A block holds 3·count
     /// positions then 3·count velocities. `dg` blocks (first order) are not listed.

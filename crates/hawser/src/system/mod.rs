@@ -20,7 +20,7 @@ mod wave_tables;
 mod workspace;
 
 pub use layout::Layout;
-pub use line::SystemLine;
+pub use line::{LineEnds, SystemLine};
 use rhs::SphereContact;
 pub use wave_tables::WavePoints;
 pub use workspace::{CouplingTracks, LineWork, WinchWork, Workspace};
@@ -28,7 +28,7 @@ pub use workspace::{CouplingTracks, LineWork, WinchWork, Workspace};
 use crate::error::ModelError;
 pub use crate::formulation::Energy;
 use crate::formulation::dg::{DgLine, DgSectionSpec, EndCondition};
-use crate::formulation::{LineKind, Mesh};
+use crate::formulation::{Discretisation, Mesh};
 use crate::linalg::Singular;
 use crate::math::{Real, Vec3};
 use crate::model::{Formulation, LineEnd, Model, PointKind};
@@ -161,41 +161,41 @@ impl System {
                 .map(|s| (model.line_types[s.line_type].clone(), s.length, s.elements))
                 .collect();
             let mesh = Mesh::new(&sections);
-            let kind = match l.formulation {
-                Formulation::Fe => LineKind::Fe {
+            let discretisation = match l.formulation {
+                Formulation::Fe => Discretisation::Fe {
                     mass_matrix: l.mass_matrix,
                 },
-                Formulation::Hermite => LineKind::Hermite(crate::formulation::HermiteOptions {
-                    strain: l.strain_measure,
-                }),
-                Formulation::Dg => LineKind::Dg,
-            };
-            let dg = (l.formulation == Formulation::Dg).then(|| {
-                let specs: Vec<DgSectionSpec> = l
-                    .sections
-                    .iter()
-                    .map(|s| DgSectionSpec {
-                        line_type: model.line_types[s.line_type].clone(),
-                        length: s.length,
-                        elements: s.elements,
-                        order: s.order,
+                Formulation::Hermite => {
+                    Discretisation::Hermite(crate::formulation::HermiteOptions {
+                        strain: l.strain_measure,
                     })
-                    .collect();
-                let mut line = DgLine::new(&specs, [EndCondition::PINNED_JOINT; 2]);
-                line.modal_filter = l.modal_filter;
-                line.shock_filter = l.shock_filter;
-                Box::new(line)
-            });
+                }
+                Formulation::Dg => {
+                    let specs: Vec<DgSectionSpec> = l
+                        .sections
+                        .iter()
+                        .map(|s| DgSectionSpec {
+                            line_type: model.line_types[s.line_type].clone(),
+                            length: s.length,
+                            elements: s.elements,
+                            order: s.order,
+                        })
+                        .collect();
+                    let mut line = DgLine::new(&specs, [EndCondition::PINNED_JOINT; 2]);
+                    line.modal_filter = l.modal_filter;
+                    line.shock_filter = l.shock_filter;
+                    Discretisation::Dg(Box::new(line))
+                }
+            };
             let LineEnd::Point(end_a) = l.end_a;
             let LineEnd::Point(end_b) = l.end_b;
             lines.push(SystemLine {
                 name: l.name.clone(),
                 mesh,
-                kind,
+                discretisation,
                 clamp: l.clamp.map(|d| d.map(|d| d.normalize())),
                 end_a,
                 end_b,
-                dg,
                 winch: l.winch.clone(),
             });
         }
@@ -218,7 +218,9 @@ impl System {
             attached[l.end_b] += 1;
         }
         for (li, l) in lines.iter_mut().enumerate() {
-            let Some(dg) = l.dg.as_mut() else { continue };
+            let Discretisation::Dg(dg) = &mut l.discretisation else {
+                continue;
+            };
             for (side, p) in [l.end_a, l.end_b].into_iter().enumerate() {
                 let massless = matches!(
                     points[p].kind,
@@ -250,7 +252,7 @@ impl System {
             let only_dg = lines
                 .iter()
                 .filter(|l| l.end_a == p || l.end_b == p)
-                .all(|l| l.dg.is_some());
+                .all(|l| l.dg().is_some());
             if only_dg && !(mass > 0.0) {
                 return Err(ModelError::MasslessDgJoint {
                     point: points[p].name.clone(),
@@ -262,13 +264,7 @@ impl System {
         let mut line_len = Vec::new();
         let mut len = 0;
         for l in &lines {
-            let (interior, block) = match &l.dg {
-                Some(dg) => (0, dg.state_len()),
-                None => {
-                    let m = l.vectors() - 2;
-                    (m, 6 * m)
-                }
-            };
+            let (interior, block) = l.state_len();
             line_offset.push(len);
             line_interior.push(interior);
             line_len.push(block);
@@ -322,7 +318,7 @@ impl System {
 
     /// Whether any line uses the `dg` formulation.
     pub fn has_dg_lines(&self) -> bool {
-        self.lines.iter().any(|l| l.dg.is_some())
+        self.lines.iter().any(|l| l.dg().is_some())
     }
 
     /// Whether the statics must go through [`System::statics_twin`]: `dg` lines or free
@@ -357,23 +353,10 @@ impl System {
     pub fn locate(&self, index: usize) -> Location {
         for (li, l) in self.lines.iter().enumerate() {
             let o = self.layout.line_offset[li];
-            let m = self.layout.line_interior[li];
-            if let Some(dg) = &l.dg {
-                if index >= o && index < o + self.layout.line_len[li] {
-                    // The element whose coefficients hold the entry, named by its end A node.
-                    let node = dg.elements.partition_point(|el| o + el.state <= index) - 1;
-                    return Location {
-                        object: l.name.clone(),
-                        node,
-                    };
-                }
-                continue;
-            }
-            if index >= o && index < o + 6 * m {
-                let node = ((index - o) % (3 * m)) / 3 + 1;
+            if index >= o && index < o + self.layout.line_len[li] {
                 return Location {
                     object: l.name.clone(),
-                    node,
+                    node: l.locate(index - o),
                 };
             }
         }
@@ -406,36 +389,13 @@ impl System {
     }
 
     /// Force [N] a line exerts on the attachment of one end (`end_b` false: end A), from the
-    /// last right-hand-side evaluation: the end node's share of the line's forces minus the
-    /// inertia of its share of the line's mass, F_end − (M_ee a_e + M_en a_n).
-    /// For a `dg` line it is the traction of the numerical flux at that end.
+    /// last right-hand-side evaluation ([`SystemLine::end_force`]).
     pub fn end_force(&self, ws: &Workspace, line: usize, end_b: bool) -> Vec3 {
-        let lw = &ws.lines[line];
-        let n = self.lines[line].vectors() - 1;
-        if self.lines[line].dg.is_some() {
-            return lw.force[if end_b { n } else { 0 }];
-        }
-        let b = &ws.blocks[line];
-        let node = if end_b { n } else { 0 };
-        lw.force[node] - b.row_times_x(node)
+        self.lines[line].end_force(&ws.lines[line], &ws.blocks[line], end_b)
     }
 
-    /// Tension [N] at node i of a line: the mean of its elements' tensions at interior nodes
-    /// and the magnitude of the end force at the ends.
-    /// `dg` lines give the tension at the element ends (the mean of the two sides at an
-    /// interface).
+    /// Tension [N] at node i of a line from the last evaluation ([`SystemLine::node_tension`]).
     pub fn node_tension(&self, ws: &Workspace, line: usize, node: usize) -> Real {
-        let n = self.lines[line].mesh.elements();
-        if self.lines[line].dg.is_some() {
-            return ws.lines[line].node_tension[node];
-        }
-        let t = &ws.lines[line].elements.tension;
-        if node == 0 {
-            self.end_force(ws, line, false).norm()
-        } else if node == n {
-            self.end_force(ws, line, true).norm()
-        } else {
-            0.5 * (t[node - 1] + t[node])
-        }
+        self.lines[line].node_tension(&ws.lines[line], &ws.blocks[line], node)
     }
 }

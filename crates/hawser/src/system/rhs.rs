@@ -2,9 +2,6 @@
 //! mass blocks, the coupled solve, and dy/dt.
 
 use super::*;
-use crate::formulation::dg::{EndState, Translation};
-use crate::formulation::{LoadOptions, line_forces};
-use crate::linalg::EndKind;
 use crate::math::{Mat3, Real, Vec3, get3, set3};
 use crate::model::PointKind;
 use crate::physics::environment::Environment;
@@ -76,7 +73,7 @@ impl SphereContact {
 impl System {
     /// Updates the point kinematics at time t from the state (positions and velocities).
     /// The free end of a `dg` line keeps the kinematics its line gave it in the last
-    /// evaluation ([`System::evaluate_dg_lines`]).
+    /// evaluation ([`SystemLine::evaluate`]).
     /// Bodies first: free ones from the state (accelerations from the last solve are kept
     /// only by [`System::rhs`]), prescribed ones from their motion, coupled ones from the
     /// host's track in `ws.coupling`; points on bodies follow.
@@ -140,25 +137,16 @@ impl System {
         }
     }
 
-    /// Fills each line's node positions and velocities from the state and its ends.
-    /// `dg` lines fill theirs in [`System::evaluate_dg_lines`].
+    /// Fills each line's node positions and velocities from the state and its ends
+    /// ([`SystemLine::gather`]; `dg` lines fill theirs when evaluated).
     pub fn gather_lines(&self, y: &[Real], ws: &mut Workspace) {
         for (li, l) in self.lines.iter().enumerate() {
-            if l.dg.is_some() {
-                continue;
-            }
-            let n = l.vectors() - 1;
-            let o = self.layout.line_offset[li];
-            let m = self.layout.line_interior[li];
-            let lw = &mut ws.lines[li];
-            lw.position[0] = ws.points[l.end_a].position;
-            lw.velocity[0] = ws.points[l.end_a].velocity;
-            lw.position[n] = ws.points[l.end_b].position;
-            lw.velocity[n] = ws.points[l.end_b].velocity;
-            for i in 1..n {
-                lw.position[i] = get3(&y[o..], i - 1);
-                lw.velocity[i] = get3(&y[o + 3 * m..], i - 1);
-            }
+            l.gather(
+                &y[self.layout.line_range(li)],
+                &ws.points[l.end_a],
+                &ws.points[l.end_b],
+                &mut ws.lines[li],
+            );
         }
     }
 
@@ -204,9 +192,9 @@ impl System {
     ///
     /// Lines: M a = F with M block-tridiagonal (consistent) or block-diagonal (lumped); free
     /// points: (m_p + added mass + the line ends' mass) a_p = F_p + Σ line end forces. Solved
-    /// together in O(nodes) by [`CoupledSystem`]. `dg` lines are evaluated first, with their
-    /// ends' kinematics at t ([`System::evaluate_dg_lines`]): their flux tractions enter the
-    /// points' forces and their ends add no mass (explicit coupling, DG paper §3.3).
+    /// together in O(nodes) by [`CoupledSystem`]. `dg` lines are evaluated with their ends'
+    /// kinematics at t and write their own rate: their flux tractions enter the points' forces
+    /// and their ends add no mass (explicit coupling, DG paper §3.3).
     pub fn rhs(
         &self,
         t: Real,
@@ -216,24 +204,16 @@ impl System {
     ) -> Result<(), Location> {
         self.prepare_wave_tables(t, ws);
         self.point_kinematics(t, y, ws);
-        self.evaluate_dg_lines(t, y, dydt, ws);
-        self.assemble_loads(t, y, ws);
+        self.assemble_loads(t, y, Some(&mut *dydt), ws);
         ws.coupled
             .solve(&mut ws.blocks)
             .map_err(|s| self.singular_location(s))?;
-        // Write dy/dt.
         for (li, l) in self.lines.iter().enumerate() {
-            if l.dg.is_some() {
-                continue;
-            }
-            let o = self.layout.line_offset[li];
-            let m = self.layout.line_interior[li];
-            let lw = &ws.lines[li];
-            let acc = &ws.blocks[li].x;
-            for i in 1..l.vectors() - 1 {
-                set3(&mut dydt[o..], i - 1, &lw.velocity[i]);
-                set3(&mut dydt[o + 3 * m..], i - 1, &acc[i]);
-            }
+            l.write_rate(
+                &ws.lines[li],
+                &ws.blocks[li],
+                &mut dydt[self.layout.line_range(li)],
+            );
         }
         for (f, &p) in self.free_points.iter().enumerate() {
             let o = self.layout.point_offset[p].expect("free point");
@@ -262,130 +242,67 @@ impl System {
         Ok(())
     }
 
-    /// Evaluates every `dg` line at (t, y) with its ends' kinematics from `ws.points` (filled
-    /// by [`System::point_kinematics`]): writes its state's rate into `dydt`, its end loads
-    /// (the force on each attachment [N]) into `ws.lines[l].force[0]` and `[N]`, its node
-    /// outputs into `ws.lines[l]`, and the kinematics of a free end's point.
-    pub fn evaluate_dg_lines(&self, t: Real, y: &[Real], dydt: &mut [Real], ws: &mut Workspace) {
+    /// The equations of motion at (t, y), assembled but not solved: point kinematics (free
+    /// points from the state, others from their motion, with their accelerations), node
+    /// positions and velocities, node forces `ws.lines[l].force` and mass blocks
+    /// `ws.blocks[l]` (whose `x` holds the forces, with the known accelerations at ends on
+    /// fixed or prescribed points), and each free point's own load and mass in
+    /// `ws.coupled.point_x`, `ws.coupled.point_diag`. A `dg` line is not evaluated (it has no
+    /// rate to write here): its blocks pass on its last end tractions.
+    pub fn assemble(&self, t: Real, y: &[Real], ws: &mut Workspace) {
+        self.prepare_wave_tables(t, ws);
+        self.point_kinematics(t, y, ws);
+        self.assemble_loads(t, y, None, ws);
+    }
+
+    /// [`System::assemble`] after [`System::point_kinematics`] at the same (t, y): every line
+    /// evaluated ([`SystemLine::evaluate`]; `dg` lines write their rate into `dydt` when it
+    /// is given), then the free points' and bodies' own loads.
+    fn assemble_loads(
+        &self,
+        t: Real,
+        y: &[Real],
+        mut dydt: Option<&mut [Real]>,
+        ws: &mut Workspace,
+    ) {
+        self.update_winches(t, ws);
         for (li, l) in self.lines.iter().enumerate() {
-            let (Some(dg), Some(dws)) = (&l.dg, ws.dg[li].as_mut()) else {
-                continue;
+            let range = self.layout.line_range(li);
+            let force = |p: usize| match &self.points[p].kind {
+                PointKind::Free { force, .. } => *force,
+                _ => Vec3::zeros(),
             };
-            let range =
-                self.layout.line_offset[li]..self.layout.line_offset[li] + self.layout.line_len[li];
-            let end_state = |side: usize, p: usize| {
-                let k = &ws.points[p];
-                let force = match (&self.points[p].kind, dg.ends[side].translation) {
-                    (PointKind::Free { force, .. }, Translation::Force) => *force,
-                    _ => Vec3::zeros(),
-                };
-                EndState {
-                    position: k.position,
-                    velocity: k.velocity,
-                    acceleration: k.acceleration,
-                    force,
-                    moment: Vec3::zeros(),
-                    direction: l.clamp[side].unwrap_or_else(Vec3::zeros),
-                    direction_rate: Vec3::zeros(),
-                }
+            let ends = LineEnds {
+                kinematics: [ws.points[l.end_a], ws.points[l.end_b]],
+                force: [force(l.end_a), force(l.end_b)],
             };
-            let ends = [end_state(0, l.end_a), end_state(1, l.end_b)];
-            let loads = dg.rhs_with(
+            let mesh = match &ws.winches[li] {
+                Some(w) => &w.mesh,
+                None => &l.mesh,
+            };
+            l.evaluate(
                 &self.environment,
-                ws.wave_points.of_line(li),
                 t,
+                mesh,
+                ws.wave_points.of_line(li),
                 &y[range.clone()],
+                dydt.as_deref_mut().map(|d| &mut d[range]),
                 &ends,
-                &mut dydt[range.clone()],
-                dws,
+                &mut ws.lines[li],
+                &mut ws.blocks[li],
+                ws.dg[li].as_mut(),
             );
-            let n = l.mesh.elements();
-            let lw = &mut ws.lines[li];
-            dg.sample(
-                &y[range],
-                dws,
-                &loads,
-                &mut lw.position,
-                &mut lw.velocity,
-                &mut lw.node_tension,
-                &mut lw.elements,
-            );
-            lw.force[0] = loads[0].force;
-            lw.force[n] = loads[1].force;
+            // The free end of a `dg` line moves with the line's end node.
             for (side, p) in [(0, l.end_a), (1, l.end_b)] {
                 if self.points[p].line_end.is_some() {
-                    let node = if side == 0 { 0 } else { n };
+                    let lw = &ws.lines[li];
+                    let node = if side == 0 { 0 } else { lw.position.len() - 1 };
                     ws.points[p] = PointKinematics {
                         position: lw.position[node],
                         velocity: lw.velocity[node],
                         acceleration: Vec3::zeros(),
                     };
                 }
-            }
-        }
-    }
-
-    /// The equations of motion at (t, y), assembled but not solved: point kinematics (free
-    /// points from the state, others from their motion, with their accelerations), node
-    /// positions and velocities, node forces `ws.lines[l].force` and mass blocks
-    /// `ws.blocks[l]` (whose `x` holds the forces, with the known accelerations at ends on
-    /// fixed or prescribed points), and each free point's own load and mass in
-    /// `ws.coupled.point_x`, `ws.coupled.point_diag`.
-    pub fn assemble(&self, t: Real, y: &[Real], ws: &mut Workspace) {
-        self.prepare_wave_tables(t, ws);
-        self.point_kinematics(t, y, ws);
-        self.assemble_loads(t, y, ws);
-    }
-
-    /// [`System::assemble`] after [`System::point_kinematics`] (and, for `dg` lines,
-    /// [`System::evaluate_dg_lines`]) at the same (t, y).
-    fn assemble_loads(&self, t: Real, y: &[Real], ws: &mut Workspace) {
-        self.update_winches(t, ws);
-        self.gather_lines(y, ws);
-        for (li, l) in self.lines.iter().enumerate() {
-            let options = LoadOptions {
-                current_factor: 1.0,
-                fluid: ws.wave_points.of_line(li),
-            };
-            let lw = &mut ws.lines[li];
-            let blocks = &mut ws.blocks[li];
-            if l.dg.is_some() {
-                // The end tractions of the last `dg` evaluation, as forces on the points.
-                let n = l.vectors() - 1;
-                blocks.x[0] = match blocks.end_a {
-                    EndKind::Known => ws.points[l.end_a].acceleration,
-                    _ => lw.force[0],
-                };
-                blocks.x[1] = match blocks.end_b {
-                    EndKind::Known => ws.points[l.end_b].acceleration,
-                    _ => lw.force[n],
-                };
-                continue;
-            }
-            let mesh = match &ws.winches[li] {
-                Some(w) => &w.mesh,
-                None => &l.mesh,
-            };
-            line_forces(
-                mesh,
-                &l.kind,
-                &self.environment,
-                t,
-                &lw.position,
-                &lw.velocity,
-                &mut lw.force,
-                &mut lw.elements,
-                Some(blocks),
-                options,
-            );
-            let n = l.vectors() - 1;
-            blocks.x.copy_from_slice(&lw.force);
-            l.apply_clamps(blocks);
-            if blocks.end_a == EndKind::Known {
-                blocks.x[0] = ws.points[l.end_a].acceleration;
-            }
-            if blocks.end_b == EndKind::Known {
-                blocks.x[n] = ws.points[l.end_b].acceleration;
             }
         }
         for (f, &p) in self.free_points.iter().enumerate() {

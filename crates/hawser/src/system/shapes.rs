@@ -4,7 +4,7 @@
 use super::*;
 use crate::formulation::Energy;
 use crate::formulation::dg::{EndState, Translation};
-use crate::formulation::{LineKind, Mesh};
+use crate::formulation::{Discretisation, Mesh};
 use crate::math::{Real, Vec3, set3};
 use crate::model::PointKind;
 
@@ -25,9 +25,9 @@ impl System {
         let lines = self
             .lines
             .iter()
-            .map(|l| match &l.dg {
-                None => l.clone(),
-                Some(dg) => {
+            .map(|l| match &l.discretisation {
+                Discretisation::Fe { .. } | Discretisation::Hermite(_) => l.clone(),
+                Discretisation::Dg(dg) => {
                     let sections: Vec<_> = dg
                         .sections
                         .iter()
@@ -43,8 +43,7 @@ impl System {
                         .collect();
                     SystemLine {
                         mesh: Mesh::new(&sections),
-                        kind: LineKind::Hermite(Default::default()),
-                        dg: None,
+                        discretisation: Discretisation::Hermite(Default::default()),
                         ..l.clone()
                     }
                 }
@@ -127,10 +126,13 @@ impl System {
         }
         for (li, l) in self.lines.iter().enumerate() {
             let (o, len) = (self.layout.line_offset[li], self.layout.line_len[li]);
-            let Some(dg) = &l.dg else {
-                let ot = twin.layout.line_offset[li];
-                y[o..o + len].copy_from_slice(&y_twin[ot..ot + len]);
-                continue;
+            let dg = match &l.discretisation {
+                Discretisation::Fe { .. } | Discretisation::Hermite(_) => {
+                    let ot = twin.layout.line_offset[li];
+                    y[o..o + len].copy_from_slice(&y_twin[ot..ot + len]);
+                    continue;
+                }
+                Discretisation::Dg(dg) => dg,
             };
             let tl = &twin.lines[li];
             let q = &tws.lines[li].position;
@@ -195,54 +197,26 @@ impl System {
         for (li, l) in self.lines.iter().enumerate() {
             let a = self.points[l.end_a].position;
             let b = self.points[l.end_b].position;
-            let total = l.mesh.length();
-            let o = self.layout.line_offset[li];
-            if let Some(dg) = &l.dg {
-                dg.straight(&mut y[o..o + self.layout.line_len[li]], a, b);
-                continue;
-            }
-            let shape: Vec<Vec3> = (0..=l.mesh.elements())
-                .map(|i| a + (b - a) * (l.mesh.arc_length(i) / total))
-                .collect();
-            l.set_shape(&shape, &mut y[o..]);
+            l.set_straight(&mut y[self.layout.line_range(li)], a, b);
         }
         y
     }
 
     /// Sets line `line`'s unknowns in `y` from a continuous configuration: `shape(s)` gives the
     /// position [m] and velocity [m/s] at unstretched arc length s [m] from end A. The ends
-    /// stay with their points (set free points through [`Layout::point_offset`]). This is the
-    /// formulation-neutral way to start a line from a given shape: the nodes take it at their
-    /// arc lengths and [`SystemLine::set_shape`] derives the other unknowns (`hermite`
+    /// stay with their points (set free points through [`Layout::point_range`]). This is the
+    /// formulation-neutral way to start a line from a given shape ([`SystemLine::set_shape`]:
+    /// the nodes take it at their arc lengths and the other unknowns follow, `hermite`
     /// tangents and their rates by finite differences, exact for straight lines and linear in
-    /// the shape, so a rigidly moved shape gives rigidly moved unknowns). A `dg` line takes
-    /// the L2 projection of the shape, its tangent ∂r/∂s by fourth-order central differences
-    /// with a step of 5 % of the shortest element (exact for polynomials of degree 4; the
-    /// round-off is ~10⁻¹⁶ |r| / h).
+    /// the shape, so a rigidly moved shape gives rigidly moved unknowns; a `dg` line takes the
+    /// L2 projection of the shape).
     pub fn set_line_shape(
         &self,
         y: &mut [Real],
         line: usize,
         shape: impl Fn(Real) -> (Vec3, Vec3),
     ) {
-        let l = &self.lines[line];
-        if let Some(dg) = &l.dg {
-            let o = self.layout.line_offset[line];
-            let h = 5e-2 * l.mesh.shortest_element();
-            dg.project(&mut y[o..o + self.layout.line_len[line]], |s| {
-                let (r, v) = shape(s);
-                let at = |k: Real| shape(s + k * h).0;
-                let q = ((at(-2.0) - at(2.0)) + (at(1.0) - at(-1.0)) * 8.0) / (12.0 * h);
-                (r, q, v)
-            });
-            return;
-        }
-        let (r, v): (Vec<Vec3>, Vec<Vec3>) =
-            (0..l.nodes()).map(|i| shape(l.mesh.arc_length(i))).unzip();
-        let o = self.layout.line_offset[line];
-        let m = self.layout.line_interior[line];
-        l.set_shape(&r, &mut y[o..o + 3 * m]);
-        l.set_shape(&v, &mut y[o + 3 * m..o + 6 * m]);
+        self.lines[line].set_shape(&mut y[self.layout.line_range(line)], shape);
     }
 
     /// Mechanical energy of the state `y` at time t [J]: kinetic energy ½ q̇ᵀ M q̇ of the lines
@@ -260,29 +234,14 @@ impl System {
         let g = self.environment.gravity;
         let mut energy = Energy::default();
         for (li, l) in self.lines.iter().enumerate() {
-            if let Some(dg) = &l.dg {
-                let o = self.layout.line_offset[li];
-                let state = &y[o..o + self.layout.line_len[li]];
-                let ends = [
-                    EndState::fixed(ws.points[l.end_a].position, Vec3::zeros()),
-                    EndState::fixed(ws.points[l.end_b].position, Vec3::zeros()),
-                ];
-                energy += dg.energy(state, dg.position_base(state, &ends), g);
-                continue;
-            }
-            let (q, qdot) = (&ws.lines[li].position, &ws.lines[li].velocity);
-            let mesh = self.line_mesh(ws, li);
-            for e in 0..mesh.elements() {
-                energy += match &l.kind {
-                    LineKind::Fe { mass_matrix } => {
-                        crate::formulation::fe::element_energy(mesh, *mass_matrix, g, q, qdot, e)
-                    }
-                    LineKind::Hermite(options) => {
-                        crate::formulation::hermite::element_energy(mesh, options, g, q, qdot, e)
-                    }
-                    LineKind::Dg => unreachable!("dg lines are summed above"),
-                };
-            }
+            energy += l.energy(
+                self.line_mesh(ws, li),
+                &y[self.layout.line_range(li)],
+                &ws.lines[li],
+                ws.points[l.end_a].position,
+                ws.points[l.end_b].position,
+                g,
+            );
         }
         for (p, point) in self.points.iter().enumerate() {
             if let PointKind::Free { mass, .. } = point.kind {

@@ -2,7 +2,7 @@
 //! elastic-link paper's eq. 48.
 
 use super::*;
-use crate::formulation::LineKind;
+use crate::formulation::Discretisation;
 use crate::math::Real;
 use crate::model::{PointKind, Scheme};
 
@@ -107,16 +107,9 @@ impl System {
     /// (DG paper eqs. 15–16). A line resting on the bed is horizontal, so the vertical bound
     /// takes the contact terms alone and the horizontal bound the axial terms plus friction.
     /// The step is R/|λ|max with R the smallest radius of the scheme's stability region over
-    /// the left half-plane: RK4 2.6 (2.615 computed), SSP-RK3 1.7 (1.732).
+    /// the left half-plane ([`Scheme::stability_radius`]).
     pub fn stable_step(&self, scheme: Scheme) -> (Real, String) {
-        let radius = match scheme {
-            Scheme::Rk4 => 2.6,
-            Scheme::SspRk3 => 1.7,
-            // The predictor–corrector on ẍ = −ω²x gives x^{n+1} = (2 − 2h² + h⁴) x^n −
-            // (1 − h²) x^{n−1}, h = ωΔt, whose roots stay in the unit disc for h ≤ 1
-            // (derived in integrate/three_level.rs): half the central difference's limit.
-            Scheme::ThreeLevel => 1.0,
-        };
+        let radius = scheme.stability_radius();
         let env = &self.environment;
         let rho = env.water_density;
         let seabed = &env.seabed;
@@ -137,163 +130,181 @@ impl System {
         let (lambda_axial, lambda_bending) =
             crate::formulation::hermite::element_eigenvalue_bounds();
         for l in &self.lines {
-            if let Some(dg) = &l.dg {
-                // The DG CFL limit (calibrated for SSP-RK3, whose stability region RK4's
-                // contains on both axes, so it serves RK4 too), as a rate for this scheme.
-                let lambda = radius / crate::formulation::dg::stable_step(dg, 1.0);
-                if lambda > worst {
-                    worst = lambda;
-                    culprit = format!(
-                        "the dg CFL limit (axial waves, bending and damping at orders {}) of line {}",
-                        dg.sections
-                            .iter()
-                            .map(|s| s.basis.order.to_string())
-                            .collect::<Vec<_>>()
-                            .join(", "),
-                        l.name
-                    );
-                }
-                // A free point at a dg end feels the flux's axial impedance Z = γ0 c as a
-                // damper (T̂ = T⁺ + Z (ν_point − ν⁺)).
-                let n = dg.elements.len();
-                for (p, e) in [(l.end_a, 0), (l.end_b, n - 1)] {
-                    let sec = dg.section(e);
-                    point_rows[p].axial_damping +=
-                        sec.properties.line_type.mass_per_length * sec.wave_speed;
-                }
-                continue;
-            }
-            // A line on a winch: its shortest elements (at its shortest length over the
-            // schedule) give the largest stiffness and damping rows, 2 EA/l₀ and 2c/l₀ over a
-            // mass ∝ l₀ (the rate grows as 1/l₀); its longest reaches the seabed first.
-            let scaled;
-            let (mesh, longest) = match &l.winch {
-                Some(w) => {
-                    let ((low, _), (high, _)) = w.payout_range();
-                    let length = l.mesh.length();
-                    let mut m = l.mesh.clone();
-                    m.rescale(&l.mesh, (length + low) / length, 0.0);
-                    scaled = m;
-                    (&scaled, length + high)
-                }
-                None => (&l.mesh, l.mesh.length()),
-            };
-            let n = mesh.elements();
-            let hermite = matches!(l.kind, LineKind::Hermite(_));
-            let mass_factor = if l.kind.consistent_mass() {
-                1.0 / 3.0
-            } else {
-                1.0
-            };
-            // Can this line touch the seabed? Its lowest possible point is its lower end minus
-            // its length.
-            let low = self.points[l.end_a]
-                .position
-                .z
-                .min(self.points[l.end_b].position.z);
-            let reaches_bed =
-                env.depth.is_finite() && seabed.stiffness > 0.0 && low - longest <= env.seabed_z();
-            // The obstacles this line may touch, as the seabed: a fixed one within its length
-            // of an end (its bounding ball), a moving one always. Each adds its contact
-            // stiffness k and damping c per unit length over a node's share of the line;
-            // several add (a node wedged between two). Friction is left out: its slope
-            // μ N π / v_μ grows with the normal force N, which here is the tension's pull
-            // round the obstacle, unknown before the run (the seabed's is the wet weight).
-            let touching: Vec<&crate::physics::obstacles::Obstacle> = env
-                .obstacles
-                .iter()
-                .filter(|o| {
-                    !matches!(o.motion, crate::model::Motion::Fixed { .. })
-                        || [l.end_a, l.end_b].iter().any(|&p| {
-                            let centre = o.kinematics(0.0).centre;
-                            (self.points[p].position - centre).norm() - o.bounding_radius()
-                                <= longest
-                        })
-                })
-                .collect();
-            let mut rows = vec![NodeRows::default(); n + 1];
-            let describe = |what: &str, at: String, s: &crate::formulation::SectionProperties| {
-                format!(
-                    "{what} at line {} {at} (element length {:.4} m, axial wave speed {:.1} m/s)",
-                    l.name,
-                    s.element_length,
-                    (s.law.stiffness.max_tangent() / s.line_type.mass_per_length).sqrt()
-                )
-            };
-            for e in 0..n {
-                let s = mesh.section(e);
-                let lt = &s.line_type;
-                let l0 = s.element_length;
-                let gamma = lt.mass_per_length
-                    + rho * s.area * lt.normal_added_mass.min(lt.tangential_added_mass).max(0.0);
-                let mut add = NodeRows {
-                    mass: gamma * 0.5 * l0 * mass_factor,
-                    axial_damping: 2.0 * s.law.damping / l0,
-                    axial_stiffness: 2.0 * s.law.stiffness.max_tangent() / l0,
-                    ..Default::default()
-                };
-                if reaches_bed {
-                    let kd = seabed.stiffness * lt.diameter;
-                    add.contact_stiffness = kd * 0.5 * l0;
-                    add.contact_damping =
-                        seabed.damping_per_length(lt.diameter, lt.mass_per_length) * 0.5 * l0;
-                    let wet = (lt.mass_per_length - rho * s.area) * env.gravity;
-                    if seabed.friction_coefficient > 0.0 && wet > 0.0 {
-                        // per node: the node carries at least half this element
-                        add.friction_damping = seabed.friction_slope(wet, 0.5 * l0) * 0.5 * l0;
-                    }
-                }
-                for o in &touching {
-                    add.obstacle_stiffness += o.stiffness * 0.5 * l0;
-                    add.obstacle_damping += o.damping_per_length(lt.mass_per_length) * 0.5 * l0;
-                }
-                if hermite {
-                    // Element bound (Irons): the assembled line's frequencies are below the
-                    // element's, whose pencils scale as λ EA/(γ l²) and λ_b EI/(γ l⁴); the
-                    // contact, integrated with the mass's own quadrature, as K_g d/γ.
-                    let element = NodeRows {
-                        mass: gamma * l0,
-                        axial_damping: lambda_axial * s.law.damping / l0,
-                        axial_stiffness: lambda_axial * s.law.stiffness.max_tangent() / l0,
-                        bending_stiffness: lambda_bending * lt.bending_stiffness / (l0 * l0 * l0),
-                        bending_damping: lambda_bending * lt.bending_damping / (l0 * l0 * l0),
-                        contact_stiffness: 2.0 * add.contact_stiffness,
-                        contact_damping: 2.0 * add.contact_damping,
-                        friction_damping: 2.0 * add.friction_damping,
-                        obstacle_damping: 2.0 * add.obstacle_damping,
-                        obstacle_stiffness: 2.0 * add.obstacle_stiffness,
-                    };
-                    let (lambda, what) = element.bound();
+            match &l.discretisation {
+                Discretisation::Dg(dg) => {
+                    // The DG CFL limit (calibrated for SSP-RK3, whose stability region RK4's
+                    // contains on both axes, so it serves RK4 too), as a rate for this scheme.
+                    let lambda = radius / crate::formulation::dg::stable_step(dg, 1.0);
                     if lambda > worst {
                         worst = lambda;
-                        culprit = describe(what, format!("element {e}"), s);
+                        culprit = format!(
+                            "the dg CFL limit (axial waves, bending and damping at orders {}) of line {}",
+                            dg.sections
+                                .iter()
+                                .map(|s| s.basis.order.to_string())
+                                .collect::<Vec<_>>()
+                                .join(", "),
+                            l.name
+                        );
+                    }
+                    // A free point at a dg end feels the flux's axial impedance Z = γ0 c as a
+                    // damper (T̂ = T⁺ + Z (ν_point − ν⁺)).
+                    let n = dg.elements.len();
+                    for (p, e) in [(l.end_a, 0), (l.end_b, n - 1)] {
+                        let sec = dg.section(e);
+                        point_rows[p].axial_damping +=
+                            sec.properties.line_type.mass_per_length * sec.wave_speed;
                     }
                 }
-                rows[e].add(&add);
-                rows[e + 1].add(&add);
-            }
-            for (node, row) in rows.iter().enumerate() {
-                let end = if node == 0 {
-                    Some(l.end_a)
-                } else if node == n {
-                    Some(l.end_b)
-                } else {
-                    None
-                };
-                if let Some(p) = end {
-                    // End nodes move with their point: only free points are unknowns.
-                    if self.points[p].free_index.is_some() || self.point_slot[p].is_some() {
-                        point_rows[p].add(row);
+                Discretisation::Fe { .. } | Discretisation::Hermite(_) => {
+                    // A line on a winch: its shortest elements (at its shortest length over the
+                    // schedule) give the largest stiffness and damping rows, 2 EA/l₀ and 2c/l₀ over a
+                    // mass ∝ l₀ (the rate grows as 1/l₀); its longest reaches the seabed first.
+                    let scaled;
+                    let (mesh, longest) = match &l.winch {
+                        Some(w) => {
+                            let ((low, _), (high, _)) = w.payout_range();
+                            let length = l.mesh.length();
+                            let mut m = l.mesh.clone();
+                            m.rescale(&l.mesh, (length + low) / length, 0.0);
+                            scaled = m;
+                            (&scaled, length + high)
+                        }
+                        None => (&l.mesh, l.mesh.length()),
+                    };
+                    let n = mesh.elements();
+                    let hermite = matches!(l.discretisation, Discretisation::Hermite(_));
+                    let mass_factor = if l.discretisation.consistent_mass() {
+                        1.0 / 3.0
+                    } else {
+                        1.0
+                    };
+                    // Can this line touch the seabed? Its lowest possible point is its lower end minus
+                    // its length.
+                    let low = self.points[l.end_a]
+                        .position
+                        .z
+                        .min(self.points[l.end_b].position.z);
+                    let reaches_bed = env.depth.is_finite()
+                        && seabed.stiffness > 0.0
+                        && low - longest <= env.seabed_z();
+                    // The obstacles this line may touch, as the seabed: a fixed one within its length
+                    // of an end (its bounding ball), a moving one always. Each adds its contact
+                    // stiffness k and damping c per unit length over a node's share of the line;
+                    // several add (a node wedged between two). Friction is left out: its slope
+                    // μ N π / v_μ grows with the normal force N, which here is the tension's pull
+                    // round the obstacle, unknown before the run (the seabed's is the wet weight).
+                    let touching: Vec<&crate::physics::obstacles::Obstacle> = env
+                        .obstacles
+                        .iter()
+                        .filter(|o| {
+                            !matches!(o.motion, crate::model::Motion::Fixed { .. })
+                                || [l.end_a, l.end_b].iter().any(|&p| {
+                                    let centre = o.kinematics(0.0).centre;
+                                    (self.points[p].position - centre).norm() - o.bounding_radius()
+                                        <= longest
+                                })
+                        })
+                        .collect();
+                    let mut rows = vec![NodeRows::default(); n + 1];
+                    let describe =
+                        |what: &str, at: String, s: &crate::formulation::SectionProperties| {
+                            format!(
+                                "{what} at line {} {at} (element length {:.4} m, axial wave speed {:.1} m/s)",
+                                l.name,
+                                s.element_length,
+                                (s.law.stiffness.max_tangent() / s.line_type.mass_per_length)
+                                    .sqrt()
+                            )
+                        };
+                    for e in 0..n {
+                        let s = mesh.section(e);
+                        let lt = &s.line_type;
+                        let l0 = s.element_length;
+                        let gamma = lt.mass_per_length
+                            + rho
+                                * s.area
+                                * lt.normal_added_mass.min(lt.tangential_added_mass).max(0.0);
+                        let mut add = NodeRows {
+                            mass: gamma * 0.5 * l0 * mass_factor,
+                            axial_damping: 2.0 * s.law.damping / l0,
+                            axial_stiffness: 2.0 * s.law.stiffness.max_tangent() / l0,
+                            ..Default::default()
+                        };
+                        if reaches_bed {
+                            let kd = seabed.stiffness * lt.diameter;
+                            add.contact_stiffness = kd * 0.5 * l0;
+                            add.contact_damping = seabed
+                                .damping_per_length(lt.diameter, lt.mass_per_length)
+                                * 0.5
+                                * l0;
+                            let wet = (lt.mass_per_length - rho * s.area) * env.gravity;
+                            if seabed.friction_coefficient > 0.0 && wet > 0.0 {
+                                // per node: the node carries at least half this element
+                                add.friction_damping =
+                                    seabed.friction_slope(wet, 0.5 * l0) * 0.5 * l0;
+                            }
+                        }
+                        for o in &touching {
+                            add.obstacle_stiffness += o.stiffness * 0.5 * l0;
+                            add.obstacle_damping +=
+                                o.damping_per_length(lt.mass_per_length) * 0.5 * l0;
+                        }
+                        if hermite {
+                            // Element bound (Irons): the assembled line's frequencies are below the
+                            // element's, whose pencils scale as λ EA/(γ l²) and λ_b EI/(γ l⁴); the
+                            // contact, integrated with the mass's own quadrature, as K_g d/γ.
+                            let element = NodeRows {
+                                mass: gamma * l0,
+                                axial_damping: lambda_axial * s.law.damping / l0,
+                                axial_stiffness: lambda_axial * s.law.stiffness.max_tangent() / l0,
+                                bending_stiffness: lambda_bending * lt.bending_stiffness
+                                    / (l0 * l0 * l0),
+                                bending_damping: lambda_bending * lt.bending_damping
+                                    / (l0 * l0 * l0),
+                                contact_stiffness: 2.0 * add.contact_stiffness,
+                                contact_damping: 2.0 * add.contact_damping,
+                                friction_damping: 2.0 * add.friction_damping,
+                                obstacle_damping: 2.0 * add.obstacle_damping,
+                                obstacle_stiffness: 2.0 * add.obstacle_stiffness,
+                            };
+                            let (lambda, what) = element.bound();
+                            if lambda > worst {
+                                worst = lambda;
+                                culprit = describe(what, format!("element {e}"), s);
+                            }
+                        }
+                        rows[e].add(&add);
+                        rows[e + 1].add(&add);
                     }
-                    continue;
-                }
-                if hermite {
-                    continue;
-                }
-                let (lambda, what) = row.bound();
-                if lambda > worst {
-                    worst = lambda;
-                    culprit = describe(what, format!("node {node}"), mesh.section(node.min(n - 1)));
+                    for (node, row) in rows.iter().enumerate() {
+                        let end = if node == 0 {
+                            Some(l.end_a)
+                        } else if node == n {
+                            Some(l.end_b)
+                        } else {
+                            None
+                        };
+                        if let Some(p) = end {
+                            // End nodes move with their point: only free points are unknowns.
+                            if self.points[p].free_index.is_some() || self.point_slot[p].is_some() {
+                                point_rows[p].add(row);
+                            }
+                            continue;
+                        }
+                        if hermite {
+                            continue;
+                        }
+                        let (lambda, what) = row.bound();
+                        if lambda > worst {
+                            worst = lambda;
+                            culprit = describe(
+                                what,
+                                format!("node {node}"),
+                                mesh.section(node.min(n - 1)),
+                            );
+                        }
+                    }
                 }
             }
         }

@@ -3,7 +3,6 @@
 //! evaluation time, and hands each line its points ([`FluidPoints`]).
 
 use super::{System, Workspace};
-use crate::formulation::LineKind;
 use crate::math::{Real, Vec3};
 use crate::physics::static_kinematics::{
     FluidPoints, StaticPositionKinematics, WaveKinematicsMethod,
@@ -48,15 +47,7 @@ impl System {
     /// Number of quadrature points at which line `l` evaluates the fluid: 2 per `fe` element,
     /// 4 per `hermite` element, the Gauss points of a `dg` line.
     pub fn fluid_points(&self, l: usize) -> usize {
-        let line = &self.lines[l];
-        if let Some(dg) = &line.dg {
-            return dg.point_len();
-        }
-        let n = line.mesh.elements();
-        match line.kind {
-            LineKind::Fe { .. } | LineKind::Dg => 2 * n,
-            LineKind::Hermite(_) => crate::formulation::hermite::GAUSS.len() * n,
-        }
+        self.lines[l].fluid_points()
     }
 
     /// Starts a run's wave kinematics at time `t` [s] from state `y`: with

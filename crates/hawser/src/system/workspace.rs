@@ -80,33 +80,11 @@ impl System {
             (None, Some(s)) => EndKind::Free(s),
             (None, None) => EndKind::Known,
         };
-        let lines = self
-            .lines
-            .iter()
-            .map(|l| {
-                let n = l.mesh.elements();
-                let m = l.vectors();
-                LineWork {
-                    position: vec![Vec3::zeros(); m],
-                    velocity: vec![Vec3::zeros(); m],
-                    force: vec![Vec3::zeros(); m],
-                    elements: ElementState::new(n),
-                    node_tension: vec![0.0; if l.dg.is_some() { n + 1 } else { 0 }],
-                }
-            })
-            .collect();
+        let lines = self.lines.iter().map(SystemLine::work).collect();
         let blocks = self
             .lines
             .iter()
-            .map(|l| {
-                LineBlocks::banded(
-                    l.block_vectors(),
-                    l.kind.bandwidth(),
-                    end_kind(l.end_a),
-                    end_kind(l.end_b),
-                    l.kind.consistent_mass(),
-                )
-            })
+            .map(|l| l.blocks(end_kind(l.end_a), end_kind(l.end_b)))
             .collect();
         Workspace {
             lines,
@@ -117,11 +95,7 @@ impl System {
                 self.free_bodies.len(),
                 self.point_slot.iter().flatten().count(),
             ),
-            dg: self
-                .lines
-                .iter()
-                .map(|l| l.dg.as_deref().map(DgWorkspace::new))
-                .collect(),
+            dg: self.lines.iter().map(SystemLine::dg_work).collect(),
             bodies: self.bodies.iter().map(|b| b.initial_kinematics()).collect(),
             winches: self
                 .lines

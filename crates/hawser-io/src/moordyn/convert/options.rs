@@ -415,6 +415,7 @@ pub(super) fn simulation_of(
         } else {
             None
         },
+        formats: None,
         initial_condition: Some(spanned(&anchor, InitialConditionSpec::Statics)),
         release: Vec::new(),
         channels,

@@ -34,7 +34,8 @@ use motions::{build_motion, build_rigid_motion};
 use obstacles::build_obstacles;
 use points::build_points;
 pub use sea::{read_elevation_file, record_components};
-use settings::{build_release, build_settings, check_steady_tow};
+pub use settings::OutputFormats;
+use settings::{build_formats, build_release, build_settings, check_steady_tow};
 use statistics::build_statistics;
 use toml_errors::schema_errors;
 
@@ -52,6 +53,8 @@ pub struct LoadedScenario {
     /// The window, storm duration and linked columns of the design statistics
     /// (`[statistics]`); linked columns index `model.outputs`.
     pub statistics: hawser::analysis::statistics::StatisticsOptions,
+    /// The result formats a run writes besides CSV and JSON.
+    pub formats: OutputFormats,
 }
 
 /// The format of an input file.
@@ -306,6 +309,7 @@ pub fn build_scenario(
     let mut environment = environment;
     environment.obstacles = build_obstacles(&mut b, scenario, &environment);
     let (settings, time_step_span) = build_settings(&mut b, scenario.simulation.as_ref());
+    let formats = build_formats(&mut b, scenario.simulation.as_ref());
     let mut model = Model {
         environment,
         line_types,
@@ -345,6 +349,7 @@ pub fn build_scenario(
         time_step_span,
         format: InputFormat::Toml,
         statistics,
+        formats,
     })
 }
 

@@ -7,6 +7,64 @@ use crate::scenario::schema::*;
 use hawser::model::*;
 use std::ops::Range;
 
+/// The result formats a run writes besides CSV and JSON (`simulation.formats`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct OutputFormats {
+    /// `timeseries.parquet` (needs this crate's `parquet` feature).
+    pub parquet: bool,
+    /// ParaView files at each snapshot (`vtk/run.pvd`).
+    pub vtk: bool,
+}
+
+impl Default for OutputFormats {
+    /// Every format this build can write: Parquet when built with it, and VTK.
+    fn default() -> Self {
+        Self {
+            parquet: cfg!(feature = "parquet"),
+            vtk: true,
+        }
+    }
+}
+
+/// `simulation.formats`: the defaults when absent; Parquet refused when this build has not
+/// got it; VTK without `snapshot_interval` refused (it would write nothing).
+pub(super) fn build_formats(b: &mut Builder, spec: Option<&SimulationSpec>) -> OutputFormats {
+    let Some(formats) = spec.and_then(|s| s.formats.as_ref()) else {
+        return OutputFormats::default();
+    };
+    let chosen = |f| formats.get_ref().contains(&f);
+    let out = OutputFormats {
+        parquet: chosen(FormatSpec::Parquet),
+        vtk: chosen(FormatSpec::Vtk),
+    };
+    if out.parquet && !cfg!(feature = "parquet") {
+        let d = b
+            .diag(
+                Some(formats.span()),
+                "simulation.formats",
+                "this hawser was built without Parquet",
+            )
+            .expected("\"vtk\" in this build")
+            .hint(
+                "remove \"parquet\", or build hawser with the cargo feature `parquet` (the \
+                 command-line tool has it by default)",
+            );
+        b.push(d);
+    }
+    if out.vtk && spec.is_some_and(|s| s.snapshot_interval.is_none()) {
+        let d = b
+            .diag(
+                Some(formats.span()),
+                "simulation.formats",
+                "\"vtk\" writes the snapshots for ParaView, and there are none",
+            )
+            .expected("`snapshot_interval` with \"vtk\"")
+            .hint("add `snapshot_interval = ...` (s) to [simulation], or remove \"vtk\"");
+        b.push(d);
+    }
+    out
+}
+
 pub(super) fn build_settings(
     b: &mut Builder,
     spec: Option<&SimulationSpec>,

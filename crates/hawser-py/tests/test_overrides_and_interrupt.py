@@ -1,0 +1,76 @@
+"""Scenarios as dicts and overrides; Ctrl-C during a run keeps the results so far."""
+
+from __future__ import annotations
+
+import json
+import os
+import signal
+import threading
+
+import numpy as np
+import pytest
+
+import hawser
+from conftest import EXAMPLES
+
+
+def test_dict_round_trip_and_overrides():
+    sc = hawser.load(EXAMPLES / "catenary_mooring.toml")
+    d = sc.to_dict()
+    same = hawser.Scenario.from_dict(d, base_dir=EXAMPLES)
+    a, b = sc.statics(), same.statics()
+    assert np.array_equal(a.lines["chain"].tension, b.lines["chain"].tension)
+    longer = sc.with_overrides({"lines.chain.length": 700.0, "environment.current": None})
+    ld = longer.to_dict()
+    assert ld["lines"][0]["length"] == 700.0 and "current" not in ld["environment"]
+    assert longer.statics().lines["chain"].end_b_tension < a.lines["chain"].end_b_tension
+    # Arrays of numbers by index, and the source is unchanged.
+    moved = sc.with_overrides({"points.fairlead.position.2": -20.0})
+    assert moved.to_dict()["points"][1]["position"] == [0.0, 0.0, -20.0]
+    assert sc.to_dict() == d
+    # numpy values are scenario values.
+    np_amp = sc.with_overrides({"points.fairlead.motion.amplitude": np.array([1.0, 0.0, 0.0])})
+    assert np_amp.to_dict()["points"][1]["motion"]["amplitude"] == [1.0, 0.0, 0.0]
+
+
+def test_ctrl_c_stops_a_run_and_keeps_its_results(tmp_path):
+    sc = hawser.load(EXAMPLES / "catenary_mooring.toml")
+    sc.statics()  # warm up: the run below must be stepping when the signal comes
+    timer = threading.Timer(2.0, lambda: os.kill(os.getpid(), signal.SIGINT))
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt) as info:
+            sc.run(duration=600.0, out=tmp_path / "run", progress=False)
+    finally:
+        timer.cancel()
+    res = info.value.results
+    assert res.interrupted and not res.complete
+    assert 0 < res.end_time < 600.0
+    status = json.loads((tmp_path / "run" / "status.json").read_text())
+    assert status["state"] == "interrupted"
+    rows = (tmp_path / "run" / "timeseries.csv").read_text().splitlines()
+    assert len(rows) - 1 == len(res.time)
+    summary = json.loads((tmp_path / "run" / "summary.json").read_text())
+    assert summary["complete"] is False and summary["end_time"] == res.end_time
+
+
+def test_runs_release_the_gil():
+    """Another Python thread keeps running while a run computes (it would not get a single
+    bytecode in if the run held the GIL)."""
+    sc = hawser.load(EXAMPLES / "catenary_mooring.toml")
+    ticks, done = [0], threading.Event()
+
+    def count():
+        while not done.is_set():
+            ticks[0] += 1
+
+    t = threading.Thread(target=count)
+    t.start()
+    try:
+        before = ticks[0]
+        sc.run(duration=0.5, progress=False)
+        during = ticks[0] - before
+    finally:
+        done.set()
+        t.join()
+    assert during > 1000, during
