@@ -64,7 +64,11 @@ def test_statics_equal_the_cli(hawser_bin, name):
 def short_copy(tmp_path: Path, name: str, duration: float) -> tuple[hawser.Scenario, Path]:
     """The example with `simulation.duration` overridden, and the same scenario written to a
     file for the command line."""
-    sc = hawser.load(EXAMPLES / name).with_overrides({"simulation.duration": duration})
+    overrides = {"simulation.duration": duration}
+    if name == "catenary_mooring.toml":
+        # Its statistics window starts after its 24 s ramp: within the shortened run.
+        overrides["statistics.start"] = 0.0
+    sc = hawser.load(EXAMPLES / name).with_overrides(overrides)
     f = tmp_path / name
     f.write_text(sc.to_toml())
     return hawser.load(f), f
