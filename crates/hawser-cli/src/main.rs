@@ -86,7 +86,8 @@ enum Command {
         /// Output directory.
         #[arg(long, short, default_value = "out")]
         out: PathBuf,
-        /// Hide the progress bar.
+        /// Hide the progress bar (on a terminal) or the progress lines (otherwise: every
+        /// 10 s and every tenth of the run) and the notes.
         #[arg(long)]
         quiet: bool,
         /// Accept a `time_step` above the stability estimate (expert use; the run stops with
@@ -108,7 +109,7 @@ enum Command {
     Resume {
         /// The output directory of the interrupted run.
         dir: PathBuf,
-        /// Hide the progress bar.
+        /// Hide the progress bar or lines.
         #[arg(long)]
         quiet: bool,
     },
@@ -123,6 +124,20 @@ enum Command {
         /// iteration, each change of method) to standard error.
         #[arg(long)]
         trace: bool,
+    },
+    /// Draw a run's figures (PNG and SVG in DIR/plots) and DIR/report.html, finished or
+    /// running.
+    Plot {
+        /// The output directory of `hawser run`.
+        dir: PathBuf,
+        /// Also draw the amplitude spectrum of this channel (a column of timeseries.csv,
+        /// e.g. `L1.end_b.tension`); repeat for more.
+        #[arg(long, value_name = "CHANNEL")]
+        spectrum: Vec<String>,
+        /// Upper frequency of the spectra [Hz] (default: 1.5 times the frequency below which
+        /// 99.5 % of the variance lies).
+        #[arg(long, value_name = "HZ")]
+        max_frequency: Option<Real>,
     },
     /// Validate a scenario file or MoorDyn deck without running it.
     Check {
@@ -176,6 +191,11 @@ fn main() -> ExitCode {
         ),
         Command::Resume { dir, quiet } => run::resume(&dir, quiet),
         Command::Statics { file, json, trace } => statics(&file, json, trace),
+        Command::Plot {
+            dir,
+            spectrum,
+            max_frequency,
+        } => plot(&dir, spectrum, max_frequency),
         Command::Check { file, deck } => check(&file, &deck),
         Command::Convert { file, out, deck } => convert(&file, out.as_deref(), &deck),
         Command::Schema => {
@@ -343,6 +363,10 @@ fn statics(file: &Path, json: bool, trace: bool) -> Result<ExitCode> {
             .fold(0.0, Real::max);
         out!("{:<16} {:>14.2} {:>14.2} {:>14.2}", l.name, ta, tb, tmax);
     }
+    strength_table(&system, &ws);
+    for w in strength_warnings(&system, &ws, "static") {
+        eprintln!("{w}");
+    }
     for (i, p) in system.points.iter().enumerate() {
         if p.free_index.is_some() {
             let x = ws.points[i].position;
@@ -373,6 +397,81 @@ fn statics(file: &Path, json: bool, trace: bool) -> Result<ExitCode> {
         steady_tow_report(&system, &ws);
     }
     Ok(ExitCode::SUCCESS)
+}
+
+/// The strength check of every section of every line in the state evaluated in `ws`, as a
+/// table, when some line type has a minimum breaking load.
+fn strength_table(system: &System, ws: &Workspace) {
+    use hawser::analysis::strength::line_strength;
+    let lines: Vec<_> = (0..system.lines.len())
+        .map(|li| line_strength(system, ws, li))
+        .collect();
+    if !lines
+        .iter()
+        .flatten()
+        .any(|s| s.minimum_breaking_load.is_some())
+    {
+        return;
+    }
+    out!(
+        "{:<16} {:>3} {:<16} {:>14} {:>10} {:>14} {:>8} {:>11}",
+        "strength: line",
+        "sec",
+        "line type",
+        "max T [N]",
+        "at s [m]",
+        "MBL [N]",
+        "T/MBL",
+        "T/(MBL/SF)"
+    );
+    let ratio = |x: Option<Real>| x.map_or("-".to_string(), |x| format!("{x:.4}"));
+    for (l, sections) in system.lines.iter().zip(&lines) {
+        for s in sections {
+            out!(
+                "{:<16} {:>3} {:<16} {:>14.2} {:>10.3} {:>14} {:>8} {:>11}",
+                l.name,
+                s.section,
+                s.line_type,
+                s.max_tension,
+                s.at,
+                s.minimum_breaking_load
+                    .map_or("-".to_string(), |m| format!("{m:.4e}")),
+                ratio(s.utilisation()),
+                ratio(s.design_utilisation())
+            );
+        }
+    }
+}
+
+/// Warnings for every section whose largest tension in the state evaluated in `ws` (`what`:
+/// "static", "initial") exceeds its permissible tension MBL / SF or its MBL.
+fn strength_warnings(system: &System, ws: &Workspace, what: &str) -> Vec<String> {
+    use hawser::analysis::strength::line_strength;
+    let mut out = Vec::new();
+    for (li, l) in system.lines.iter().enumerate() {
+        for s in line_strength(system, ws, li) {
+            let (Some(mbl), Some(permissible)) = (s.minimum_breaking_load, s.permissible_tension())
+            else {
+                continue;
+            };
+            let limit = if s.max_tension > mbl {
+                format!("its minimum breaking load {mbl:.4e} N")
+            } else if s.max_tension > permissible {
+                format!(
+                    "its permissible tension MBL/SF = {permissible:.4e} N (design utilisation {:.3})",
+                    s.max_tension / permissible
+                )
+            } else {
+                continue;
+            };
+            out.push(format!(
+                "warning: line `{}` section {} ({}): the {what} tension {:.4e} N at s = {:.3} m \
+                 exceeds {limit}",
+                l.name, s.section, s.line_type, s.max_tension, s.at
+            ));
+        }
+    }
+    out
 }
 
 /// `hawser statics` on a steady tow: the tow velocity, and every free point's and free
@@ -435,6 +534,39 @@ fn steady_tow_report(system: &System, ws: &Workspace) {
             c,
             h
         );
+    }
+}
+
+/// `hawser plot DIR`.
+fn plot(dir: &Path, spectra: Vec<String>, max_frequency: Option<Real>) -> Result<ExitCode> {
+    if let Some(f) = max_frequency
+        && !(f > 0.0 && f.is_finite())
+    {
+        eprintln!("error: --max-frequency {f}: expected a positive frequency in Hz");
+        return Ok(ExitCode::from(2));
+    }
+    let options = hawser_io::plot::PlotOptions {
+        spectra,
+        max_frequency,
+    };
+    match hawser_io::plot::plot_run(dir, &options) {
+        Ok(w) => {
+            for f in &w.figures {
+                out!(
+                    "{}",
+                    dir.join("plots").join(format!("{}.png", f.stem)).display()
+                );
+            }
+            for n in &w.notes {
+                eprintln!("note: {n}");
+            }
+            out!("{}", w.report.display());
+            Ok(ExitCode::SUCCESS)
+        }
+        Err(e) => {
+            eprintln!("error: {e}");
+            Ok(ExitCode::from(2))
+        }
     }
 }
 

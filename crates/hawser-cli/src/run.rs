@@ -53,21 +53,28 @@ impl Invocation {
     }
 }
 
-/// Shows progress while a run goes: the bar on a terminal.
+/// Shows progress while a run goes: the bar on a terminal, progress lines otherwise (a log
+/// file, CI, a batch job), so that a log shows the run is alive.
 struct Progress {
     bar: Option<ProgressBar>,
+    log: Option<ProgressLog>,
     start: Instant,
 }
 
 impl Observer for Progress {
     fn sample(&mut self, view: &View<'_>) -> Result<(), ObserverError> {
         let time = view.time;
+        let wall = self.start.elapsed().as_secs_f64();
         if let Some(bar) = &self.bar {
-            let wall = self.start.elapsed().as_secs_f64();
             bar.set_position((time * 1000.0) as u64);
             if wall > 0.0 {
                 bar.set_message(format!("t = {time:.2} s, {:.1}× real time", time / wall));
             }
+        }
+        if let Some(log) = &mut self.log
+            && log.due(time, wall)
+        {
+            eprintln!("{}", log.line(time, wall));
         }
         Ok(())
     }
@@ -81,8 +88,12 @@ impl Observer for Progress {
 }
 
 impl Progress {
+    /// Progress of a run to `duration` [s] that starts at `done` [s]: nothing when `quiet`,
+    /// the bar when standard error is a terminal, progress lines otherwise.
     fn new(quiet: bool, duration: Real, done: Real) -> Self {
-        let bar = (!quiet).then(|| {
+        use std::io::IsTerminal;
+        let terminal = std::io::stderr().is_terminal();
+        let bar = (!quiet && terminal).then(|| {
             let bar = ProgressBar::new((duration * 1000.0) as u64);
             bar.set_style(
                 ProgressStyle::with_template(
@@ -95,8 +106,126 @@ impl Progress {
         });
         Self {
             bar,
+            log: (!quiet && !terminal).then(|| ProgressLog::new(duration, done, LOG_INTERVAL)),
             start: Instant::now(),
         }
+    }
+}
+
+/// Wall time between progress lines off a terminal [s].
+const LOG_INTERVAL: f64 = 10.0;
+
+/// When to print a progress line off a terminal: at the first sample after every
+/// `interval` seconds of wall time, and after every tenth of the simulated duration.
+struct ProgressLog {
+    duration: Real,
+    /// Simulated time at the start (a resumed run's checkpoint) [s].
+    done: Real,
+    interval: f64,
+    next_wall: f64,
+    /// The next tenth of the duration to report (1 … 10).
+    next_tenth: u32,
+}
+
+impl ProgressLog {
+    fn new(duration: Real, done: Real, interval: f64) -> Self {
+        let tenths = if duration > 0.0 {
+            (10.0 * done / duration).floor() as u32
+        } else {
+            10
+        };
+        Self {
+            duration,
+            done,
+            interval,
+            next_wall: interval,
+            next_tenth: tenths + 1,
+        }
+    }
+
+    /// Whether a line is due at simulated time `time` [s] after `wall` seconds.
+    fn due(&mut self, time: Real, wall: f64) -> bool {
+        let mut due = false;
+        // A sample within a millionth of the duration of a tenth reaches it (sample times
+        // carry round-off).
+        while self.next_tenth <= 10
+            && time >= (self.next_tenth as Real / 10.0 - 1e-6) * self.duration
+        {
+            self.next_tenth += 1;
+            due = true;
+        }
+        if wall >= self.next_wall {
+            while self.next_wall <= wall {
+                self.next_wall += self.interval;
+            }
+            due = true;
+        }
+        due
+    }
+
+    /// The progress line: simulated time, fraction, real-time factor, elapsed time and ETA.
+    fn line(&self, time: Real, wall: f64) -> String {
+        let rate = (time - self.done) / wall.max(1e-9);
+        let percent = if self.duration > 0.0 {
+            100.0 * time / self.duration
+        } else {
+            100.0
+        };
+        let eta = if rate > 0.0 {
+            clock((self.duration - time).max(0.0) / rate)
+        } else {
+            "unknown".to_string()
+        };
+        format!(
+            "progress: t = {time:.2} s of {:.2} s ({percent:.0} %), {rate:.2}× real time, \
+             elapsed {}, ETA {eta}",
+            self.duration,
+            clock(wall)
+        )
+    }
+}
+
+/// A duration [s] as `1h02m03s`, `2m03s` or `3s`.
+fn clock(seconds: f64) -> String {
+    let s = seconds.round() as u64;
+    match (s / 3600, s / 60 % 60, s % 60) {
+        (0, 0, s) => format!("{s}s"),
+        (0, m, s) => format!("{m}m{s:02}s"),
+        (h, m, s) => format!("{h}h{m:02}m{s:02}s"),
+    }
+}
+
+#[cfg(test)]
+mod progress_tests {
+    use super::*;
+
+    /// Lines at every tenth of the duration and every 10 s of wall time, whichever comes
+    /// first; a resumed run starts after the tenths it has done.
+    #[test]
+    fn progress_lines_at_tenths_and_wall_intervals() {
+        let mut log = ProgressLog::new(100.0, 0.0, 10.0);
+        // Fast: tenths come before the 10 s.
+        assert!(!log.due(0.0, 0.0));
+        assert!(!log.due(9.9, 0.5));
+        assert!(log.due(10.0 - 1e-9, 0.6));
+        assert!(!log.due(15.0, 1.0));
+        // Slow: the wall interval comes first.
+        assert!(log.due(16.0, 10.2));
+        assert!(!log.due(16.5, 15.0));
+        assert!(log.due(17.0, 20.0));
+        // Several tenths in one sample: one line.
+        assert!(log.due(45.0, 21.0));
+        assert!(!log.due(49.0, 22.0));
+        assert!(log.due(50.0, 23.0));
+        let line = log.line(50.0, 25.0);
+        assert_eq!(
+            line,
+            "progress: t = 50.00 s of 100.00 s (50 %), 2.00× real time, elapsed 25s, ETA 25s"
+        );
+        let resumed = ProgressLog::new(100.0, 35.0, 10.0);
+        assert_eq!(resumed.next_tenth, 4);
+        assert_eq!(clock(3725.0), "1h02m05s");
+        assert_eq!(clock(125.4), "2m05s");
     }
 }
 
@@ -239,6 +368,12 @@ pub(crate) fn run(
     for w in session.warnings() {
         err!("warning: {w}");
     }
+    {
+        let view = session.view()?;
+        for w in crate::strength_warnings(view.system, view.workspace, "initial") {
+            eprintln!("{w}");
+        }
+    }
     let (limit, culprit) = session.stable_step();
     let (limit, culprit) = (limit, culprit.to_string());
     if session.step_size() > limit {
@@ -305,7 +440,7 @@ pub(crate) fn run(
     };
     let text = serde_json::to_string_pretty(&invocation.to_json())? + "\n";
     write_atomically(&out.join("run.json"), text.as_bytes())?;
-    let writer = RunWriter::create(out, &session, file, &loaded.formats)?;
+    let writer = RunWriter::create(out, &session, file, &loaded.formats, &loaded.statistics)?;
     let writer = session.attach(writer);
     session.attach(Progress::new(quiet, model.settings.duration, 0.0));
     drive(session, writer, out, checkpoint_every, &signals, quiet)
@@ -364,7 +499,14 @@ pub(crate) fn resume(dir: &Path, quiet: bool) -> Result<ExitCode> {
         Ok(s) => s,
         Err(e) => return refuse(format!("{e} (scenario {})", file.display())),
     };
-    let writer = match RunWriter::resume(dir, &session, file, &loaded.formats, writer_bytes) {
+    let writer = match RunWriter::resume(
+        dir,
+        &session,
+        file,
+        &loaded.formats,
+        &loaded.statistics,
+        writer_bytes,
+    ) {
         Ok(w) => w,
         Err(e) => return refuse(e.to_string()),
     };

@@ -357,3 +357,53 @@ fn bench_compares_bodies_with_points_and_seas_with_still_water() {
         assert_eq!(out.status.code(), Some(2), "{bad:?}");
     }
 }
+
+/// Off a terminal (here standard error is a pipe) a run prints a progress line at every
+/// tenth of its duration (and every 10 s of wall time): simulated time, fraction, real-time
+/// factor, elapsed time and ETA; `--quiet` hides them.
+#[test]
+fn run_off_a_terminal_prints_progress_lines() {
+    let dir = temp_dir("progress");
+    let file = write(&dir, "valid.toml", VALID);
+    let out_dir = dir.join("out");
+    let out = hawser(&[
+        "run",
+        file.to_str().unwrap(),
+        "--out",
+        out_dir.to_str().unwrap(),
+    ]);
+    assert!(out.status.success(), "{}", stderr(&out, &dir));
+    let err = stderr(&out, &dir);
+    let lines: Vec<&str> = err
+        .lines()
+        .filter(|l| l.starts_with("progress: "))
+        .collect();
+    assert!(lines.len() >= 10, "{err}");
+    for tenth in 1..=10 {
+        let at = format!(
+            "t = {:.2} s of 1.00 s ({} %)",
+            tenth as f64 / 10.0,
+            10 * tenth
+        );
+        assert!(
+            lines.iter().any(|l| l.contains(&at)),
+            "no line at {at}:\n{err}"
+        );
+    }
+    assert!(
+        lines
+            .iter()
+            .all(|l| l.contains("× real time, elapsed ") && l.contains(", ETA "))
+    );
+    let out = hawser(&[
+        "run",
+        file.to_str().unwrap(),
+        "--out",
+        out_dir.to_str().unwrap(),
+        "--overwrite",
+        "--quiet",
+    ]);
+    assert!(out.status.success());
+    assert!(!stderr(&out, &dir).contains("progress: "));
+    std::fs::remove_dir_all(&dir).unwrap();
+}

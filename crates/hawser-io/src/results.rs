@@ -1,6 +1,7 @@
 //! Result writers: `timeseries.csv` (and from it `timeseries.parquet`), per-line shape
-//! snapshots as CSV and as ParaView files, `channels.json` (units), `summary.json` (statistics,
-//! slack intervals, snap events), `final_state.json` and `status.json`. Rows are written whole
+//! snapshots as CSV and as ParaView files, `channels.json` (units), `summary.json` (design
+//! statistics, slack intervals, snap events, line strength), `line_ranges.json` (range graphs
+//! of tension along each line), `final_state.json` and `status.json`. Rows are written whole
 //! as the run goes, so a run that stops early keeps what it wrote, marked incomplete in
 //! `status.json` and `summary.json`; the JSON files are replaced atomically. docs/outputs.md
 //! describes every file; [`FORMAT_VERSION`] names their layout.
@@ -11,17 +12,22 @@
 mod csv;
 #[cfg(feature = "parquet")]
 mod parquet;
+mod summary;
 mod vtk;
 
 pub use csv::{RowSink, RowWriter, SampleTimes, Table, TableReader, push_number, read_table};
 #[cfg(feature = "parquet")]
 pub use parquet::write_parquet;
+pub use summary::{
+    RunSummary, section_json, statistics_json, statistics_options_json, strength_json,
+    timeseries_statistics,
+};
 pub use vtk::{PVD_FILE, VTK_DIR, VtkWriter};
 
 use crate::scenario::OutputFormats;
 use csv::cannot;
 pub use hawser::analysis::OutputChannel;
-use hawser::analysis::{Channel, RunningStats, SlackSnapDetector};
+use hawser::analysis::statistics::StatisticsOptions;
 use hawser::math::Real;
 use hawser::session::{Observer, ObserverError, RunEnd, Session, View};
 use hawser::system::{System, Workspace};
@@ -48,215 +54,6 @@ pub const SNAPSHOT_COLUMNS: [(&str, &str); 7] = [
     ("z", "m"),
     ("tension", "N"),
 ];
-
-/// What a run's results are computed from its samples, whatever keeps them: the row of
-/// channel values, the running statistics of every channel, the slack and snap detectors of
-/// every line, and the snapshot schedule. [`RunWriter`] writes it into files
-/// (`summary.json`); the Python package keeps it in memory.
-#[derive(Clone, Debug)]
-pub struct RunSummary {
-    channels: Vec<Channel>,
-    names: Vec<String>,
-    stats: Vec<RunningStats>,
-    detectors: Vec<SlackSnapDetector>,
-    snapshot_interval: Option<Real>,
-    next_snapshot: Real,
-    last_time: Real,
-    samples: u64,
-    /// The channel values of the sample being taken.
-    row: Vec<Real>,
-    /// The run's warnings, written into `summary.json` and `status.json` at its end.
-    warnings: Vec<hawser::Warning>,
-}
-
-impl RunSummary {
-    /// A summary of the run of `system` with output channels `outputs`, shape snapshots every
-    /// `snapshot_interval` [s] (none without it).
-    pub fn new(
-        system: &System,
-        outputs: &[OutputChannel],
-        snapshot_interval: Option<Real>,
-    ) -> Self {
-        Self {
-            names: outputs.iter().map(|c| c.name(system)).collect(),
-            channels: outputs.iter().map(|c| c.channel).collect(),
-            stats: vec![RunningStats::default(); outputs.len()],
-            detectors: vec![SlackSnapDetector::default(); system.lines.len()],
-            row: vec![0.0; outputs.len()],
-            snapshot_interval,
-            next_snapshot: 0.0,
-            last_time: 0.0,
-            samples: 0,
-            warnings: Vec::new(),
-        }
-    }
-
-    /// The run's warnings ([`RunEnd::warnings`]), written into `summary.json` at its end.
-    pub fn set_warnings(&mut self, warnings: &[hawser::Warning]) {
-        self.warnings = warnings.to_vec();
-    }
-
-    /// The run's warnings set by [`RunSummary::set_warnings`].
-    pub fn warnings(&self) -> &[hawser::Warning] {
-        &self.warnings
-    }
-
-    /// Reads the channel values of `view` into [`RunSummary::row`] without recording them.
-    pub fn read(&mut self, view: &View<'_>) -> &[Real] {
-        for (v, c) in self.row.iter_mut().zip(&self.channels) {
-            *v = view.value(c);
-        }
-        &self.row
-    }
-
-    /// Records the row read last ([`RunSummary::read`]) as the sample at `time` [s]: into the
-    /// statistics, and the element tensions and strains of `view` into the slack and snap
-    /// detectors. Returns whether a shape snapshot is due at this sample.
-    pub fn record(&mut self, view: &View<'_>, time: Real) -> bool {
-        let (system, ws) = (view.system, view.workspace);
-        for (v, s) in self.row.iter().zip(self.stats.iter_mut()) {
-            s.push(*v);
-        }
-        self.last_time = time;
-        self.samples += 1;
-        for li in 0..system.lines.len() {
-            let lw = &ws.lines[li];
-            // The current mesh: a line on a winch changes its unstretched length.
-            let mesh = system.line_mesh(ws, li);
-            self.detectors[li].push(time, &lw.elements.tension, &lw.elements.strain, |e| {
-                0.5 * (mesh.arc_length(e) + mesh.arc_length(e + 1))
-            });
-        }
-        match self.snapshot_interval {
-            Some(interval) if time >= self.next_snapshot - 1e-9 * interval => {
-                while self.next_snapshot <= time + 1e-9 * interval {
-                    self.next_snapshot += interval;
-                }
-                true
-            }
-            _ => false,
-        }
-    }
-
-    /// Takes one sample at `time` [s]: [`RunSummary::read`] then [`RunSummary::record`].
-    pub fn sample(&mut self, view: &View<'_>, time: Real) -> bool {
-        self.read(view);
-        self.record(view, time)
-    }
-
-    /// The channel values of the last sample, in column order.
-    pub fn row(&self) -> &[Real] {
-        &self.row
-    }
-
-    /// Column names of the output channels.
-    pub fn names(&self) -> &[String] {
-        &self.names
-    }
-
-    /// The output channels, in column order.
-    pub fn channels(&self) -> &[Channel] {
-        &self.channels
-    }
-
-    /// Time of the last sample [s].
-    pub fn last_time(&self) -> Real {
-        self.last_time
-    }
-
-    /// Samples taken.
-    pub fn samples(&self) -> u64 {
-        self.samples
-    }
-
-    /// Closes the slack intervals and snap events still open at the last sample.
-    pub fn finish(&mut self) {
-        for d in &mut self.detectors {
-            d.finish(self.last_time);
-        }
-    }
-
-    /// The summary as `summary.json` holds it: the result format, per channel its unit, min,
-    /// max, mean and standard deviation; per line its slack intervals and snap events;
-    /// `error` (the reason the run stopped early) marks it incomplete.
-    pub fn to_json(&self, system: &System, error: Option<&str>) -> Value {
-        let channels: serde_json::Map<String, Value> = self
-            .names
-            .iter()
-            .zip(&self.stats)
-            .zip(&self.channels)
-            .map(|((n, s), c)| {
-                (n.clone(), json!({"unit": c.unit(), "min": s.min, "max": s.max, "mean": s.mean(), "std": s.std()}))
-            })
-            .collect();
-        let lines: serde_json::Map<String, Value> = system
-            .lines
-            .iter()
-            .zip(&self.detectors)
-            .map(|(l, d)| {
-                (
-                    l.name.clone(),
-                    json!({
-                        "slack_intervals": d.intervals.iter().map(|s| json!({"start": s.start, "end": s.end, "min_strain": s.min_strain})).collect::<Vec<_>>(),
-                        "snap_events": d.snaps.iter().map(|s| json!({
-                            "time": s.time, "peak_time": s.peak_time, "peak_tension": s.peak_tension,
-                            "location": s.location, "rise_rate": s.rise_rate})).collect::<Vec<_>>(),
-                    }),
-                )
-            })
-            .collect();
-        json!({
-            "format_version": FORMAT_VERSION,
-            "complete": error.is_none(),
-            "error": error,
-            "end_time": self.last_time,
-            "samples": self.samples,
-            "warnings": warnings_json(&self.warnings),
-            "channels": channels,
-            "lines": lines,
-            "definitions": {
-                "slack": "some element of the line has strain ≤ 0",
-                "snap": "a slack → taut transition; peak is the largest element tension until the tension falls again",
-                "location": "unstretched arc length from end A [m] of the element carrying the peak",
-            },
-        })
-    }
-
-    /// Saves the summary exactly (statistics, detectors, snapshot schedule), for a checkpoint.
-    pub fn encode(&self, e: &mut hawser::session::Encoder) {
-        e.u64(self.stats.len() as u64);
-        self.stats.iter().for_each(|s| s.encode(e));
-        e.u64(self.detectors.len() as u64);
-        self.detectors.iter().for_each(|d| d.encode(e));
-        e.f64(self.next_snapshot);
-        e.f64(self.last_time);
-        e.u64(self.samples);
-    }
-
-    /// Restores a summary saved by [`RunSummary::encode`] into this new one (of the same
-    /// system and channels); the error says what does not fit.
-    pub fn decode(&mut self, d: &mut hawser::session::Decoder) -> Result<(), &'static str> {
-        const TRUNCATED: &str = "is truncated";
-        let n = d.u64().map_err(|_| TRUNCATED)? as usize;
-        if n != self.channels.len() {
-            return Err("has another number of channels");
-        }
-        self.stats = (0..n)
-            .map(|_| RunningStats::decode(d).map_err(|_| TRUNCATED))
-            .collect::<Result<Vec<_>, _>>()?;
-        let n = d.u64().map_err(|_| TRUNCATED)? as usize;
-        if n != self.detectors.len() {
-            return Err("has another number of lines");
-        }
-        self.detectors = (0..n)
-            .map(|_| SlackSnapDetector::decode(d).map_err(|_| TRUNCATED))
-            .collect::<Result<Vec<_>, _>>()?;
-        self.next_snapshot = d.f64().map_err(|_| TRUNCATED)?;
-        self.last_time = d.f64().map_err(|_| TRUNCATED)?;
-        self.samples = d.u64().map_err(|_| TRUNCATED)?;
-        Ok(())
-    }
-}
 
 /// Writes a dynamic run's results into a directory while it runs.
 pub struct RunWriter {
@@ -293,9 +90,10 @@ pub fn write_atomically(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
 
 /// The files and folders a run writes into its output folder: what `--overwrite` removes and
 /// what marks a folder as holding a run.
-pub const RUN_FILES: [&str; 10] = [
+pub const RUN_FILES: [&str; 13] = [
     "status.json",
     "summary.json",
+    "line_ranges.json",
     "timeseries.csv",
     "timeseries.parquet",
     "channels.json",
@@ -304,6 +102,8 @@ pub const RUN_FILES: [&str; 10] = [
     "run.json",
     "snapshots",
     VTK_DIR,
+    "plots",
+    "report.html",
 ];
 
 /// The run files present in `dir` ([`RUN_FILES`]).
@@ -315,8 +115,8 @@ pub fn run_files_in(dir: &Path) -> Vec<&'static str> {
         .collect()
 }
 
-/// Removes the run files ([`RUN_FILES`]) from `dir` (the whole `snapshots/` and `vtk/`
-/// folders included, so that nothing stale is left beside new results; other files are left
+/// Removes the run files ([`RUN_FILES`]) from `dir` (the whole `snapshots/`, `vtk/` and
+/// `plots/` folders included, so that nothing stale is left beside new results; other files are left
 /// alone). Nothing to do for a folder that does not exist.
 pub fn remove_run_files(dir: &Path) -> std::io::Result<()> {
     for f in run_files_in(dir) {
@@ -410,12 +210,14 @@ impl RunWriter {
     /// `channels.json` and the headers of the CSV files at once (so that a folder that cannot
     /// take them is found before the run starts, with the file's name) and the empty ParaView
     /// collection. `scenario` is the file the run came from; `formats` the formats written
-    /// besides CSV and JSON.
+    /// besides CSV and JSON; `statistics` what the design statistics and range graphs cover
+    /// (the scenario's `[statistics]`, [`crate::scenario::LoadedScenario::statistics`]).
     pub fn create(
         dir: &Path,
         session: &Session,
         scenario: &Path,
         formats: &OutputFormats,
+        statistics: &StatisticsOptions,
     ) -> std::io::Result<Self> {
         check_formats(formats)?;
         std::fs::create_dir_all(dir).map_err(|e| cannot("create", dir, e))?;
@@ -442,7 +244,7 @@ impl RunWriter {
         write_json(&dir.join("channels.json"), &units)?;
         let header = std::iter::once("time").chain(names.iter().map(String::as_str));
         let timeseries = RowWriter::create(&dir.join("timeseries.csv"), header)?;
-        let mut w = Self::new(dir, session, scenario, formats, timeseries)?;
+        let mut w = Self::new(dir, session, scenario, formats, statistics, timeseries)?;
         if w.summary.snapshot_interval.is_some() {
             let sd = dir.join("snapshots");
             std::fs::create_dir_all(&sd).map_err(|e| cannot("create", &sd, e))?;
@@ -465,6 +267,7 @@ impl RunWriter {
         session: &Session,
         scenario: &Path,
         formats: &OutputFormats,
+        statistics: &StatisticsOptions,
         timeseries: RowWriter,
     ) -> std::io::Result<Self> {
         let system = session.system();
@@ -472,7 +275,7 @@ impl RunWriter {
         let settings = &session.model().settings;
         Ok(Self {
             dir: dir.to_path_buf(),
-            summary: RunSummary::new(system, outputs, settings.snapshot_interval),
+            summary: RunSummary::new(system, outputs, settings.snapshot_interval, statistics),
             timeseries,
             snapshots: Vec::new(),
             vtk: None,
@@ -485,16 +288,16 @@ impl RunWriter {
 
     /// Time of the last sample written [s].
     pub fn last_time(&self) -> Real {
-        self.summary.last_time
+        self.summary.last_time()
     }
 
-    /// The statistics, slack intervals and snap events so far.
+    /// The range graphs, slack intervals and snap events so far.
     pub fn summary(&self) -> &RunSummary {
         &self.summary
     }
 
     /// What [`RunWriter::resume`] needs to go on from here: the result format, the length of
-    /// every file written, the statistics, the slack and snap detectors and the snapshot
+    /// every file written, the range graphs, the slack and snap detectors and the snapshot
     /// schedule.
     pub fn progress(&mut self) -> std::io::Result<Vec<u8>> {
         let mut e = hawser::session::Encoder::default();
@@ -520,6 +323,7 @@ impl RunWriter {
         session: &Session,
         scenario: &Path,
         formats: &OutputFormats,
+        statistics: &StatisticsOptions,
         progress: &[u8],
     ) -> std::io::Result<Self> {
         let bad = |what: &str| {
@@ -541,7 +345,7 @@ impl RunWriter {
         }
         let timeseries =
             RowWriter::reopen(&dir.join("timeseries.csv"), d.u64().map_err(truncated)?)?;
-        let mut w = Self::new(dir, session, scenario, formats, timeseries)?;
+        let mut w = Self::new(dir, session, scenario, formats, statistics, timeseries)?;
         let system = session.system();
         let count = d.u64().map_err(truncated)? as usize;
         let expected = if w.summary.snapshot_interval.is_some() {
@@ -567,7 +371,7 @@ impl RunWriter {
         }
         w.summary.decode(&mut d).map_err(bad)?;
         w.write_status(
-            json!({"complete": false, "state": "running", "resumed_at": w.summary.last_time}),
+            json!({"complete": false, "state": "running", "resumed_at": w.summary.last_time()}),
         )?;
         Ok(w)
     }
@@ -612,6 +416,25 @@ impl RunWriter {
         Ok(())
     }
 
+    /// The design statistics of the channels of `timeseries.csv` as written.
+    fn channel_statistics(
+        &self,
+    ) -> std::io::Result<Vec<hawser::analysis::statistics::ChannelStatistics>> {
+        let (names, stats) = timeseries_statistics(&self.dir, self.summary.statistics())?;
+        if names != self.summary.names {
+            return Err(std::io::Error::new(
+                std::io::ErrorKind::InvalidData,
+                format!(
+                    "{}: its columns are not the run's channels ({} columns, {} channels)",
+                    self.dir.join("timeseries.csv").display(),
+                    names.len(),
+                    self.summary.names.len()
+                ),
+            ));
+        }
+        Ok(stats)
+    }
+
     /// Writes `timeseries.parquet` (when chosen) from the CSV.
     #[cfg(feature = "parquet")]
     fn write_parquet(&self, complete: bool) -> std::io::Result<()> {
@@ -649,8 +472,9 @@ impl RunWriter {
         Ok(())
     }
 
-    /// Writes `timeseries.parquet` (when chosen), `summary.json`, `final_state.json` and
-    /// `status.json` from the last state `view`. `error` marks the run incomplete with its
+    /// Writes `timeseries.parquet` (when chosen), `summary.json` (its design statistics from
+    /// `timeseries.csv` read back: exact across a resume), `line_ranges.json`,
+    /// `final_state.json` and `status.json` from the last state `view`. `error` marks the run incomplete with its
     /// message; `interrupted` says it was stopped from outside (it can be resumed). A file
     /// that cannot be written marks the run incomplete with its error in the files after it,
     /// and is the error returned.
@@ -667,16 +491,26 @@ impl RunWriter {
             error.get_or_insert_with(|| e.to_string());
             failure = Some(e);
         }
-        let written = write_json(
-            &self.dir.join("summary.json"),
-            &self.summary.to_json(view.system, error.as_deref()),
-        )
-        .and_then(|()| {
-            write_json(
-                &self.dir.join("final_state.json"),
-                &state_json(view, self.summary.last_time),
-            )
-        });
+        let written = self
+            .channel_statistics()
+            .and_then(|stats| {
+                write_json(
+                    &self.dir.join("summary.json"),
+                    &self.summary.to_json(view.system, error.as_deref(), &stats),
+                )
+            })
+            .and_then(|()| {
+                write_json(
+                    &self.dir.join("line_ranges.json"),
+                    &self.summary.line_ranges_json(view.system),
+                )
+            })
+            .and_then(|()| {
+                write_json(
+                    &self.dir.join("final_state.json"),
+                    &state_json(view, self.summary.last_time()),
+                )
+            });
         if let Err(e) = written {
             error.get_or_insert_with(|| e.to_string());
             failure.get_or_insert(e);
@@ -686,8 +520,8 @@ impl RunWriter {
             "complete": complete,
             "state": if complete { "finished" } else if interrupted { "interrupted" } else { "stopped" },
             "error": error,
-            "end_time": self.summary.last_time,
-            "warnings": warnings_json(&self.summary.warnings),
+            "end_time": self.summary.last_time(),
+            "warnings": warnings_json(self.summary.warnings()),
         }));
         match failure {
             Some(e) => Err(e),
@@ -788,10 +622,10 @@ pub fn state_json(view: &View<'_>, time: Real) -> Value {
     })
 }
 
-/// The static solution as JSON: per line node positions, node tensions and the force each end
-/// exerts on its attachment; per point its position; per body (when there are any) the
-/// position of its origin, its roll, pitch and yaw [deg] (R = R_z R_y R_x) and the lines' load
-/// on it [N, N·m about its origin].
+/// The static solution as JSON: per line node positions, node tensions, the force each end
+/// exerts on its attachment and the strength check of its sections; per point its position;
+/// per body (when there are any) the position of its origin, its roll, pitch and yaw [deg]
+/// (R = R_z R_y R_x) and the lines' load on it [N, N·m about its origin].
 /// A steady tow adds `tow_velocity` [m/s], the velocity of the frame it was solved in.
 pub fn statics_json(system: &System, ws: &Workspace) -> Value {
     let view = View {
@@ -804,6 +638,10 @@ pub fn statics_json(system: &System, ws: &Workspace) -> Value {
     };
     let mut v =
         json!({"lines": lines_json(&view, false), "points": points_json(system, ws, false)});
+    for (li, l) in system.lines.iter().enumerate() {
+        let sections = hawser::analysis::strength::line_strength(system, ws, li);
+        v["lines"][&l.name]["strength"] = strength_json(&sections, None);
+    }
     if !system.bodies.is_empty() {
         let bodies: serde_json::Map<String, Value> = system
             .bodies

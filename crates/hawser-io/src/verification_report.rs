@@ -230,7 +230,7 @@ pub fn write_report(results: &[CaseResult], report: &Path, preamble: &str) -> st
 
 /// Tick labels for an axis spanning lo..hi: scientific notation for very small or large
 /// values, otherwise as many decimals as the span needs.
-fn tick_format(lo: f64, hi: f64) -> impl Fn(&f64) -> String {
+pub(crate) fn tick_format(lo: f64, hi: f64) -> impl Fn(&f64) -> String {
     let big = lo.abs().max(hi.abs());
     let sci = !(1e-2..1e5).contains(&big);
     let decimals = (2.0 - (hi - lo).log10().floor()).clamp(0.0, 6.0) as usize;
@@ -248,6 +248,10 @@ fn tick_format(lo: f64, hi: f64) -> impl Fn(&f64) -> String {
 
 /// A plot as an SVG document; logarithmic plots are drawn as log10 of both axes.
 pub fn plot_svg(plot: &Plot, title: &str) -> Result<String, String> {
+    // With the `plot` feature plotters measures text with ab_glyph, which knows only the
+    // fonts registered with it.
+    #[cfg(feature = "plot")]
+    crate::plot::register_fonts();
     let tr = |v: Real| if plot.log { v.log10() } else { v };
     // (label, points, markers)
     type Curve = (String, Vec<(f64, f64)>, bool);

@@ -1,8 +1,8 @@
 //! Behaviour guard for refactors: every bundled example, run for 20 output intervals (snapshots
 //! every 5), writes the same `timeseries.csv`, `channels.json`, `summary.json`,
-//! `final_state.json`, snapshot and ParaView files, bit for bit, as when the hashes in
-//! `tests/data/example_hashes.txt` were recorded (`timeseries.parquet` is made from the CSV;
-//! its own test reads it back).
+//! `line_ranges.json`, `final_state.json`, snapshot and ParaView files, bit for bit, as when the
+//! hashes in `tests/data/example_hashes.txt` were recorded (`timeseries.parquet` is made from
+//! the CSV; its own test reads it back).
 //!
 //! A change that is meant to change the numbers (new physics, a different summation order)
 //! regenerates the file with `HAWSER_BLESS=1 cargo test --release -p hawser-io --test

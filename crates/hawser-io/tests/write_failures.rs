@@ -33,7 +33,7 @@ fn a_file_on_a_full_disk_is_refused_at_creation_with_its_name() {
         let target = dir.join(file);
         std::fs::create_dir_all(target.parent().unwrap()).unwrap();
         std::os::unix::fs::symlink("/dev/full", &target).unwrap();
-        let e = match RunWriter::create(&dir, &session, &scenario, &formats) {
+        let e = match RunWriter::create(&dir, &session, &scenario, &formats, &Default::default()) {
             Ok(_) => panic!("{file} on /dev/full was accepted"),
             Err(e) => e.to_string(),
         };

@@ -10,6 +10,7 @@
 
 use hawser::Model;
 use hawser::analysis::OutputChannel;
+use hawser::analysis::statistics::StatisticsOptions;
 use hawser::math::Real;
 use hawser::session::{Observer, ObserverError, RunEnd, Session, SessionOptions, View};
 use hawser::system::System;
@@ -65,11 +66,12 @@ pub struct LineSnapshots {
     pub tension: Vec<Real>,
 }
 
-/// An observer keeping a run in memory: every sample's channel values, the summary
-/// (statistics, slack intervals, snap events) and the shape snapshots; the simulated time
+/// An observer keeping a run in memory: every sample's channel values, the summary (design
+/// statistics, range graphs, line strength, slack intervals, snap events) and the shape
+/// snapshots; the simulated time
 /// reached goes to `progress` (the bits of an f64) for the progress bar.
 pub struct Recorder {
-    /// Statistics, detectors, snapshot schedule: the same as `summary.json`'s.
+    /// Range graphs, detectors, snapshot schedule: the same as `summary.json`'s.
     pub summary: RunSummary,
     /// Column names.
     pub names: Vec<String>,
@@ -87,6 +89,8 @@ pub struct Recorder {
     pub final_state: Option<serde_json::Value>,
     /// The summary as `summary.json` holds it.
     pub summary_json: Option<serde_json::Value>,
+    /// The range graphs as `line_ranges.json` holds them.
+    pub line_ranges_json: Option<serde_json::Value>,
     /// How the run ended.
     pub end: Option<RunEnd>,
     /// Sample times from the sample counter, as `timeseries.csv` writes them.
@@ -99,13 +103,14 @@ impl Recorder {
         system: &System,
         outputs: &[OutputChannel],
         snapshot_interval: Option<Real>,
+        statistics: &StatisticsOptions,
         sample_times: SampleTimes,
         samples: usize,
         progress: Arc<AtomicU64>,
     ) -> Self {
         Self {
             sample_times,
-            summary: RunSummary::new(system, outputs, snapshot_interval),
+            summary: RunSummary::new(system, outputs, snapshot_interval, statistics),
             names: outputs.iter().map(|c| c.name(system)).collect(),
             units: outputs.iter().map(|c| c.channel.unit()).collect(),
             lines: system.lines.iter().map(|l| l.name.clone()).collect(),
@@ -115,6 +120,7 @@ impl Recorder {
             snapshots: vec![LineSnapshots::default(); system.lines.len()],
             final_state: None,
             summary_json: None,
+            line_ranges_json: None,
             end: None,
             progress,
         }
@@ -148,8 +154,15 @@ impl Observer for Recorder {
     fn finish(&mut self, view: &View<'_>, end: &RunEnd) -> Result<(), ObserverError> {
         self.summary.finish();
         self.summary.set_warnings(&end.warnings);
-        self.summary_json = Some(self.summary.to_json(view.system, end.error.as_deref()));
-        self.final_state = Some(state_json(view, view.time));
+        // The design statistics of the samples kept, as `hawser run` computes them from its
+        // time series read back.
+        let stats = self.summary.statistics_of_rows(&self.times, &self.values);
+        self.summary_json = Some(
+            self.summary
+                .to_json(view.system, end.error.as_deref(), &stats),
+        );
+        self.line_ranges_json = Some(self.summary.line_ranges_json(view.system));
+        self.final_state = Some(state_json(view, self.summary.last_time()));
         self.end = Some(end.clone());
         Ok(())
     }
@@ -199,8 +212,14 @@ pub fn execute(
     let snapshot_interval = model.settings.snapshot_interval;
     if let Some(out) = &job.out {
         hawser_io::results::prepare_output_dir(out, true).map_err(Failure::Io)?;
-        let writer = RunWriter::create(out, &session, &job.path, &job.loaded.formats)
-            .map_err(Failure::Io)?;
+        let writer = RunWriter::create(
+            out,
+            &session,
+            &job.path,
+            &job.loaded.formats,
+            &job.loaded.statistics,
+        )
+        .map_err(Failure::Io)?;
         session.attach(writer);
     }
     let samples = (session.end_time() / session.sample_interval()).round() as usize + 1;
@@ -208,6 +227,7 @@ pub fn execute(
         session.system(),
         session.channels(),
         snapshot_interval,
+        &job.loaded.statistics,
         SampleTimes::new(
             &model.settings,
             session.step_size(),

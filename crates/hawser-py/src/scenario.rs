@@ -680,6 +680,9 @@ fn results_to_py<'py>(py: Python<'py>, o: &Outcome) -> PyResult<Bound<'py, PyAny
     if let Some(s) = &r.summary_json {
         raw.set_item("summary", json_to_py(py, s)?)?;
     }
+    if let Some(s) = &r.line_ranges_json {
+        raw.set_item("line_ranges", json_to_py(py, s)?)?;
+    }
     if let Some(s) = &r.final_state {
         raw.set_item("final_state", json_to_py(py, s)?)?;
     }

@@ -10,8 +10,9 @@
 //! scheme (generalized-α with adaptive steps); the same with a fixed sphere and a moving cylinder in contact with a line; and the
 //! same with one `hermite` line with bending (and the obstacles), the same with both lines on
 //! winches, and with one `dg` line; the same over a sloping bed and over a grid of depths,
-//! with a box body resting on the bed (dg and fe). And a `Session` with a coupled fairlead, an observer that
-//! reads every channel and line sample, and repeated coupling intervals: 290 intervals of a
+//! with a box body resting on the bed (dg and fe). And a `Session` with a coupled fairlead, an
+//! observer that reads every channel and line sample (and keeps range graphs), and repeated
+//! coupling intervals: 290 intervals of a
 //! step the interval does not divide, allocation-free (RK4 and the three-level scheme).
 
 mod alloc_count;
@@ -365,6 +366,7 @@ fn time_loop_does_not_allocate() {
 struct Reader {
     values: Vec<f64>,
     tension: f64,
+    ranges: Vec<hawser::analysis::range_graph::RangeGraph>,
 }
 
 impl hawser::session::Observer for Reader {
@@ -379,6 +381,7 @@ impl hawser::session::Observer for Reader {
             for n in view.line_samples(l) {
                 self.tension = self.tension.max(n.tension);
             }
+            self.ranges[l].push(view, l, view.time);
         }
         Ok(())
     }
@@ -408,9 +411,13 @@ fn session_stepping_coupling_and_observers_do_not_allocate() {
         model.settings.scheme = scheme;
         let mut session = hawser::Session::new(model.clone()).unwrap();
         let channels = session.channels().len();
+        let ranges = (session.system().lines.iter())
+            .map(|l| hawser::analysis::range_graph::RangeGraph::new(l.nodes()))
+            .collect();
         session.attach(Reader {
             values: vec![0.0; channels],
             tension: 0.0,
+            ranges,
         });
         let p = session.coupled_points()[0];
         let dt_c = 0.013;

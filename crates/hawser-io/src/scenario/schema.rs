@@ -62,6 +62,31 @@ pub struct Scenario {
     /// Spheres and cylinders, fixed or moving, that lines touch.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub obstacles: Vec<ObstacleSpec>,
+    /// The window, storm duration and linked channels of the design statistics a run
+    /// reports in `summary.json`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub statistics: Option<StatisticsSpec>,
+}
+
+/// `[statistics]`.
+#[derive(Debug, Deserialize, Serialize, JsonSchema, Default)]
+#[serde(deny_unknown_fields)]
+pub struct StatisticsSpec {
+    /// Samples before this time are left out of the statistics and the range graphs (the
+    /// build-up) [s], default 0.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub start: Option<Spanned<f64>>,
+    /// Storm duration of the most probable maximum [s], default 10800 (3 h).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub storm_duration: Option<Spanned<f64>>,
+    /// Channels whose values are reported at the time of every channel's minimum and
+    /// maximum, e.g. `"L1.end_b.tension"`, `"buoy.z"`, or a column name of
+    /// `simulation.channels`; recorded if they are not already.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    #[schemars(with = "Vec<String>")]
+    pub linked_channels: Vec<Spanned<String>>,
 }
 
 /// Integration scheme.
@@ -518,6 +543,15 @@ pub struct LineTypeSpec {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<f64>")]
     pub bending_damping: Option<Spanned<f64>>,
+    /// Minimum breaking load MBL [N]: runs and statics report the utilisation T_max / MBL.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub minimum_breaking_load: Option<Spanned<f64>>,
+    /// Design safety factor SF [-] (≥ 1; needs `minimum_breaking_load`): the permissible
+    /// tension is MBL / SF.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub design_safety_factor: Option<Spanned<f64>>,
 }
 
 /// Kind of point.

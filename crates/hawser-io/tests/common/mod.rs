@@ -97,7 +97,8 @@ pub fn run_example_briefly(path: &Path, dir: &Path, samples: usize, snapshot_eve
         vtk: true,
     };
     let writer =
-        hawser_io::results::RunWriter::create(dir, &session, path, &formats).expect("writer");
+        hawser_io::results::RunWriter::create(dir, &session, path, &formats, &loaded.statistics)
+            .expect("writer");
     session.attach(writer);
     let result = session.run();
     session.finish(result.as_ref().err()).expect("finish");

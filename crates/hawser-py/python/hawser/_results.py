@@ -36,8 +36,12 @@ class Results:
         time: sample times [s].
         names: output channel names (plain, as in ``summary.json``; units in ``units``).
         units: unit of each channel, ``{name: unit}``.
-        summary: ``summary.json`` as a dict: per channel unit, min, max, mean, std; per line
-            its slack intervals and snap events; whether the run is complete.
+        summary: ``summary.json`` as a dict: per channel unit and design statistics (min, max
+            and their times, mean, std, zero-up-crossing period, most probable extremes,
+            linked values); per line its slack intervals, snap events and strength check;
+            whether the run is complete.
+        line_ranges: ``line_ranges.json`` as a dict: per line the minimum, mean and maximum
+            tension at every node over the statistics window, and its sections.
         final_state: ``final_state.json`` as a dict (positions, velocities, tensions and end
             forces of every line, every point, the state vector).
         complete: whether the run reached its end time.
@@ -52,6 +56,7 @@ class Results:
         self.names: List[str] = list(raw["names"])
         self.units: Dict[str, str] = dict(zip(self.names, raw["units"]))
         self.summary: Dict[str, Any] = raw.get("summary", {})
+        self.line_ranges: Dict[str, Any] = raw.get("line_ranges", {})
         self.final_state: Dict[str, Any] = raw.get("final_state", {})
         self._snapshots: Dict[str, Dict[str, np.ndarray]] = raw.get("snapshots", {})
         self.complete: bool = raw["complete"]
@@ -93,8 +98,10 @@ class Results:
 
     @property
     def statistics(self) -> Any:
-        """Per channel its unit, min, max, mean and standard deviation over the samples (a
-        DataFrame indexed by channel, or a dict of dicts)."""
+        """Per channel its unit and design statistics over the statistics window (min and
+        max with their times, mean, standard deviation, zero-up-crossing period, most
+        probable extremes, linked values; a DataFrame indexed by channel, or a dict of
+        dicts)."""
         ch = self.summary.get("channels", {})
         rows = {n: ch[n] for n in self.names if n in ch}
         if _pd is None:

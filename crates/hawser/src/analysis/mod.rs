@@ -1,12 +1,17 @@
 //! Results analysis: output channels, running statistics, slack intervals and snap events;
 //! natural modes about the static state ([`modes`]) and the resonance report ([`resonance`]);
-//! the independent steady-towing reference ([`steady_cable`]).
+//! the independent steady-towing reference ([`steady_cable`]); design statistics
+//! ([`statistics`]), range graphs of tension along each line ([`range_graph`]) and the
+//! strength check against the breaking load ([`strength`]).
 
 pub mod channels;
 pub mod modes;
 pub mod obstacles;
+pub mod range_graph;
 pub mod resonance;
+pub mod statistics;
 pub mod steady_cable;
+pub mod strength;
 
 use crate::math::Real;
 

@@ -29,12 +29,25 @@ pub struct LineType {
     pub normal_added_mass: Real,
     /// Tangential added-mass coefficient C_at [-].
     pub tangential_added_mass: Real,
+    /// Minimum breaking load MBL [N]: the strength the line's utilisation is measured
+    /// against ([`crate::analysis::strength`]); `None`: not given, no utilisation.
+    pub minimum_breaking_load: Option<Real>,
+    /// Design safety factor SF [-] (≥ 1): the permissible tension is MBL / SF (the
+    /// elastic-link paper's "permissible tension at each point"); `None`: not given.
+    pub design_safety_factor: Option<Real>,
 }
 
 impl LineType {
     /// Cross-section area A = π d²/4 [m²] used for buoyancy and added mass.
     pub fn area(&self) -> Real {
         std::f64::consts::PI * self.diameter * self.diameter / 4.0
+    }
+
+    /// Permissible tension MBL / SF [N] (MBL alone without a safety factor); `None` without
+    /// a minimum breaking load.
+    pub fn permissible_tension(&self) -> Option<Real> {
+        self.minimum_breaking_load
+            .map(|mbl| mbl / self.design_safety_factor.unwrap_or(1.0))
     }
 }
 

@@ -408,6 +408,8 @@ pub fn line_type(diameter: Real, mass_per_length: Real, axial_stiffness: Real) -
         },
         normal_added_mass: 1.0,
         tangential_added_mass: 0.0,
+        minimum_breaking_load: None,
+        design_safety_factor: None,
     }
 }
 

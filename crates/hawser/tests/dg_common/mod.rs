@@ -25,6 +25,8 @@ pub fn beam_type(gamma: Real, ea: Real, ei: Real) -> LineType {
         },
         normal_added_mass: 0.0,
         tangential_added_mass: 0.0,
+        minimum_breaking_load: None,
+        design_safety_factor: None,
     }
 }
 

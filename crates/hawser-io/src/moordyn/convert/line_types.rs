@@ -197,6 +197,8 @@ pub(super) fn convert_line_types(c: &mut Converter, s: &Section, dir: &Path) -> 
             compression: None,
             bending_stiffness: f(ei.filter(|&x| x != 0.0), &t[5]),
             bending_damping: None,
+            minimum_breaking_load: None,
+            design_safety_factor: None,
         });
     }
     out

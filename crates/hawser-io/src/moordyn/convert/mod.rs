@@ -420,6 +420,7 @@ pub fn convert(
             lines,
             bodies,
             obstacles: Vec::new(),
+            statistics: None,
         },
         notes: c.notes,
         key_names: c.key_names,

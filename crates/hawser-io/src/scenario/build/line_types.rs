@@ -254,6 +254,40 @@ pub(super) fn build_line_types(
                 }
             }
         };
+        let minimum_breaking_load = t.minimum_breaking_load.as_ref().map(|v| {
+            b.num(
+                v,
+                &k("minimum_breaking_load"),
+                Check {
+                    ok: POSITIVE,
+                    expected: "N, > 0",
+                },
+                "the catalogue's minimum breaking load, e.g. 6.4e6 N for a 76 mm R3 chain",
+            )
+        });
+        let design_safety_factor = t.design_safety_factor.as_ref().map(|v| {
+            let sf = b.num(
+                v,
+                &k("design_safety_factor"),
+                Check {
+                    ok: |x| x >= 1.0,
+                    expected: "-, ≥ 1",
+                },
+                "the permissible tension is MBL / SF, e.g. 1.67 for an intact mooring",
+            );
+            if minimum_breaking_load.is_none() {
+                let d = b
+                    .diag(
+                        Some(v.span()),
+                        &k("design_safety_factor"),
+                        format!("line type `{name}` has a design safety factor but no minimum breaking load"),
+                    )
+                    .expected("`minimum_breaking_load` in N beside it")
+                    .hint("add e.g. `minimum_breaking_load = 6.4e6`, or remove the safety factor");
+                b.push(d);
+            }
+            sf
+        });
         out.push(LineType {
             name,
             diameter,
@@ -302,6 +336,8 @@ pub(super) fn build_line_types(
                 },
                 "usually 0",
             ),
+            minimum_breaking_load,
+            design_safety_factor,
         });
     }
     (out, index)

@@ -21,6 +21,7 @@ mod points;
 mod ranges;
 mod sea;
 mod settings;
+mod statistics;
 mod toml_errors;
 mod winch;
 pub use bodies::orientation_from_degrees;
@@ -35,6 +36,7 @@ use points::build_points;
 pub use sea::{read_elevation_file, record_components};
 pub use settings::OutputFormats;
 use settings::{build_formats, build_release, build_settings, check_steady_tow};
+use statistics::build_statistics;
 use toml_errors::schema_errors;
 
 /// A scenario read from a file: the model (with its output channels) and where things are.
@@ -48,6 +50,9 @@ pub struct LoadedScenario {
     pub time_step_span: Option<Range<usize>>,
     /// What the file was.
     pub format: InputFormat,
+    /// The window, storm duration and linked columns of the design statistics
+    /// (`[statistics]`); linked columns index `model.outputs`.
+    pub statistics: hawser::analysis::statistics::StatisticsOptions,
     /// The result formats a run writes besides CSV and JSON.
     pub formats: OutputFormats,
 }
@@ -331,6 +336,12 @@ pub fn build_scenario(
     };
     model.settings.release = build_release(&mut b, scenario.simulation.as_ref(), &model);
     model.outputs = build_channels(&mut b, scenario.simulation.as_ref(), &model);
+    let statistics = build_statistics(
+        &mut b,
+        scenario.statistics.as_ref(),
+        scenario.simulation.is_some(),
+        &mut model,
+    );
     check_steady_tow(&mut b, scenario.simulation.as_ref(), &model);
     if b.errors.is_empty()
         && let Err(e) = model.validate()
@@ -352,6 +363,7 @@ pub fn build_scenario(
         has_simulation: scenario.simulation.is_some(),
         time_step_span,
         format: InputFormat::Toml,
+        statistics,
         formats,
     })
 }

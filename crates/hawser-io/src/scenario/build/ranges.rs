@@ -67,6 +67,9 @@ pub(super) const RANGES: &[(&str, Range)] = &[
     ("simulation.tolerance", all(0.0, 1.0, "-")),
     ("simulation.output_interval", TIME),
     ("simulation.snapshot_interval", TIME),
+    // [statistics]
+    ("statistics.start", TIME),
+    ("statistics.storm_duration", TIME),
     // [environment]
     ("environment.gravity", all(0.0, 100.0, "m/s²")),
     ("environment.water_density", all(0.0, 1e5, "kg/m³")),
@@ -136,6 +139,8 @@ pub(super) const RANGES: &[(&str, Range)] = &[
     ("line_types[].tangential_added_mass", COEFFICIENT),
     ("line_types[].bending_stiffness", all(0.0, 1e14, "N·m²")),
     ("line_types[].bending_damping", all(0.0, 1e14, "N·m²·s")),
+    ("line_types[].minimum_breaking_load", all(0.0, 1e12, "N")),
+    ("line_types[].design_safety_factor", all(1.0, 100.0, "-")),
     ("loading_functions.normal.cos", all(-1e3, 1e3, "-")),
     ("loading_functions.normal.sin", all(-1e3, 1e3, "-")),
     ("loading_functions.tangential.cos", all(-1e3, 1e3, "-")),
