@@ -365,7 +365,7 @@ fn statics(file: &Path, json: bool, trace: bool) -> Result<ExitCode> {
     }
     strength_table(&system, &ws);
     for w in strength_warnings(&system, &ws, "static") {
-        eprintln!("{w}");
+        err!("{w}");
     }
     for (i, p) in system.points.iter().enumerate() {
         if p.free_index.is_some() {
@@ -542,7 +542,7 @@ fn plot(dir: &Path, spectra: Vec<String>, max_frequency: Option<Real>) -> Result
     if let Some(f) = max_frequency
         && !(f > 0.0 && f.is_finite())
     {
-        eprintln!("error: --max-frequency {f}: expected a positive frequency in Hz");
+        err!("error: --max-frequency {f}: expected a positive frequency in Hz");
         return Ok(ExitCode::from(2));
     }
     let options = hawser_io::plot::PlotOptions {
@@ -558,13 +558,13 @@ fn plot(dir: &Path, spectra: Vec<String>, max_frequency: Option<Real>) -> Result
                 );
             }
             for n in &w.notes {
-                eprintln!("note: {n}");
+                err!("note: {n}");
             }
             out!("{}", w.report.display());
             Ok(ExitCode::SUCCESS)
         }
         Err(e) => {
-            eprintln!("error: {e}");
+            err!("error: {e}");
             Ok(ExitCode::from(2))
         }
     }

@@ -52,7 +52,7 @@ pub fn run(args: &ModesArgs) -> Result<ExitCode> {
     };
     let (model, notes) = hawser_io::modes::modal_model(&loaded.model);
     for n in &notes {
-        eprintln!("note: {n}");
+        err!("note: {n}");
     }
     let system = super::system_of(&model)?;
     let analysis = match ModalAnalysis::compute(&system, args.count, args.margin / 100.0) {
@@ -94,7 +94,7 @@ pub fn run(args: &ModesArgs) -> Result<ExitCode> {
         );
     }
     if let Some(c) = analysis.spectrum.as_ref().filter(|c| c.warning()) {
-        eprintln!(
+        err!(
             "warning: {} mode(s) inside the band holding {} % of the wave energy ({:.4}–{:.4} Hz): {}",
             c.inside.len(),
             100.0 * c.band.fraction,

@@ -74,7 +74,7 @@ impl Observer for Progress {
         if let Some(log) = &mut self.log
             && log.due(time, wall)
         {
-            eprintln!("{}", log.line(time, wall));
+            err!("{}", log.line(time, wall));
         }
         Ok(())
     }
@@ -306,7 +306,7 @@ pub(crate) fn run(
     // --overwrite removes the earlier run's results before anything else: a run refused or
     // failed from here on leaves no earlier summary saying "complete" in its folder.
     if overwrite && let Err(e) = remove_run_files(out) {
-        eprintln!("error: {e}");
+        err!("error: {e}");
         return Ok(ExitCode::from(2));
     }
     if let Some(c) = checkpoint_every
@@ -371,7 +371,7 @@ pub(crate) fn run(
     {
         let view = session.view()?;
         for w in crate::strength_warnings(view.system, view.workspace, "initial") {
-            eprintln!("{w}");
+            err!("{w}");
         }
     }
     let (limit, culprit) = session.stable_step();
@@ -597,9 +597,9 @@ fn drive(
         // The files could not all be written: say so after what stopped the run, if
         // something did (a write failure stops the run, and the end files then fail too).
         if let Err(e) = &result {
-            eprintln!("error: {e}");
+            err!("error: {e}");
         }
-        eprintln!(
+        err!(
             "error: {failed}\n  = the results in {} are incomplete (results up to t = {:.6} s; \
              status.json may not say so if it could not be written either)",
             out.display(),
@@ -618,10 +618,13 @@ fn drive(
                     out.display()
                 );
                 if let Some(s) = session.implicit_statistics() {
-                    eprintln!(
+                    err!(
                         "generalized-α: {} steps ({} refused), {} Newton iterations, {} \
                          Jacobians",
-                        s.steps, s.rejected, s.iterations, s.jacobians
+                        s.steps,
+                        s.rejected,
+                        s.iterations,
+                        s.jacobians
                     );
                 }
             }
