@@ -74,7 +74,7 @@ def test_overrides_that_name_nothing_name_the_key():
 
 def test_a_time_step_above_the_limit_is_refused_at_its_key(hawser_bin, tmp_path):
     sc = hawser.load(EXAMPLES / "catenary_mooring.toml").with_overrides(
-        {"simulation.time_step": 0.5, "simulation.duration": 1.0})
+        {"simulation.time_step": 0.5, "simulation.duration": 1.0, "statistics.start": 0.0})
     f = tmp_path / "big_step.toml"
     f.write_text(sc.to_toml())
     cli = run_cli(hawser_bin, "run", str(f), "--out", str(tmp_path / "o"), check=False)

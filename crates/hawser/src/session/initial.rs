@@ -43,7 +43,14 @@ pub fn initial_state(
 /// stability limit (the automatic step is then lowered to divide the output interval). For a
 /// check of the run's length before anything is solved ([`super::check_run_length`]).
 pub fn planned_step(system: &System, settings: &Settings) -> (Real, String) {
-    let (limit, culprit) = system.stable_step(settings.scheme);
+    let scheme = crate::integrate::choose_scheme(system, settings).scheme;
+    if scheme == crate::model::Scheme::GeneralizedAlpha && settings.time_step == TimeStep::Auto {
+        // Adaptive generalized-α has no stability limit: its first step is the accuracy step
+        // (as the stepper takes it), no longer than the output interval.
+        let (step, culprit) = crate::integrate::choice::accuracy_step(system, settings);
+        return (step.min(settings.output_interval), culprit);
+    }
+    let (limit, culprit) = system.stable_step(scheme);
     match settings.time_step {
         TimeStep::Fixed(dt) if step_fallback(system, settings).is_none() => {
             (dt, "the scenario's time_step".to_string())
