@@ -16,8 +16,8 @@ use hawser_io::results::{RunWriter, prepare_output_dir, run_files_in};
 use hawser_io::scenario::ScenarioError;
 use hawser_io::scenario::tables::read_text_file;
 use hawser_io::sweep::{
-    Case, CaseOutcome, CaseScenario, CaseStatus, read_case_table, summary_columns,
-    validate_case, write_summary,
+    Case, CaseOutcome, CaseScenario, CaseStatus, read_case_table, summary_columns, validate_case,
+    write_summary,
 };
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
@@ -106,7 +106,12 @@ struct Setup<'a> {
 
 /// Runs one case into `dir` as `hawser run` runs a scenario: the same session, the same
 /// writer, driven to its end (or stopped by `setup.stop`).
-fn run_case(setup: &Setup, case: &Case, scenario: &CaseScenario, progress: &Arc<AtomicU64>) -> CaseOutcome {
+fn run_case(
+    setup: &Setup,
+    case: &Case,
+    scenario: &CaseScenario,
+    progress: &Arc<AtomicU64>,
+) -> CaseOutcome {
     let failed = |error: String| CaseOutcome {
         status: CaseStatus::Failed,
         error: Some(error),
@@ -286,8 +291,7 @@ pub(crate) fn run(args: &SweepArgs) -> Result<ExitCode> {
         );
         return Ok(ExitCode::from(2));
     }
-    let source =
-        read_text_file(base).with_context(|| format!("cannot read {}", base.display()))?;
+    let source = read_text_file(base).with_context(|| format!("cannot read {}", base.display()))?;
     let table = match read_case_table(&args.cases) {
         Ok(t) => t,
         Err(e) => return Ok(refuse(&e)),
@@ -338,8 +342,10 @@ pub(crate) fn run(args: &SweepArgs) -> Result<ExitCode> {
         err!(
             "sweep: {} case(s){} of {}, {} at a time",
             scenarios.len(),
-            args.shard
-                .map_or(String::new(), |s| format!(" (shard {} of {})", s.index, s.count)),
+            args.shard.map_or(String::new(), |s| format!(
+                " (shard {} of {})",
+                s.index, s.count
+            )),
             table.file.display(),
             jobs.min(scenarios.len().max(1))
         );
@@ -385,13 +391,15 @@ pub(crate) fn run(args: &SweepArgs) -> Result<ExitCode> {
                 .join(" and ")
         );
     }
-    Ok(if signals.any.load(Ordering::Relaxed) && interrupted + not_run > 0 {
-        ExitCode::from(signals.exit_code())
-    } else if failed + interrupted + not_run > 0 {
-        ExitCode::from(1)
-    } else {
-        ExitCode::SUCCESS
-    })
+    Ok(
+        if signals.any.load(Ordering::Relaxed) && interrupted + not_run > 0 {
+            ExitCode::from(signals.exit_code())
+        } else if failed + interrupted + not_run > 0 {
+            ExitCode::from(1)
+        } else {
+            ExitCode::SUCCESS
+        },
+    )
 }
 
 /// Refuses (exit 2) output folders that hold an earlier run, and an earlier summary of this

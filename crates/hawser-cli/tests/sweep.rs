@@ -115,7 +115,9 @@ fn sweep(base: &Path, cases: &Path, out: &Path, extra: &[&str]) -> Output {
 /// A summary table without quoted cells, as (header, rows of cells).
 fn read_summary(path: &Path) -> (Vec<String>, Vec<Vec<String>>) {
     let text = std::fs::read_to_string(path).expect("the summary table");
-    let mut lines = text.lines().map(|l| l.split(',').map(str::to_string).collect());
+    let mut lines = text
+        .lines()
+        .map(|l| l.split(',').map(str::to_string).collect());
     let header = lines.next().expect("a header");
     (header, lines.collect())
 }
@@ -135,7 +137,9 @@ fn run_files(dir: &Path) -> Vec<(String, Vec<u8>)> {
             let p = e.unwrap().path();
             if p.is_dir() {
                 stack.push(p);
-            } else if !["status.json", "run.json"].contains(&p.file_name().unwrap().to_str().unwrap()) {
+            } else if !["status.json", "run.json"]
+                .contains(&p.file_name().unwrap().to_str().unwrap())
+            {
                 let rel = p.strip_prefix(dir).unwrap().display().to_string();
                 files.push((rel, std::fs::read(&p).unwrap()));
             }
@@ -175,8 +179,16 @@ fn a_case_is_bit_identical_to_a_run_of_its_scenario() {
         (
             "long",
             BASE.replacen("length = 420.0", "length = 425.0", 1)
-                .replacen("amplitude = [2.0, 0.0, 0.0]", "amplitude = [3.0, 0.0, 1.0]", 1)
-                .replacen("velocity = [0.3, 0.0, 0.0]", "velocity = [0.5, 0.1, 0.0]", 1),
+                .replacen(
+                    "amplitude = [2.0, 0.0, 0.0]",
+                    "amplitude = [3.0, 0.0, 1.0]",
+                    1,
+                )
+                .replacen(
+                    "velocity = [0.3, 0.0, 0.0]",
+                    "velocity = [0.5, 0.1, 0.0]",
+                    1,
+                ),
         ),
         ("short", BASE.replacen("length = 420.0", "length = 418", 1)),
     ];
@@ -347,7 +359,11 @@ fn a_bad_table_is_refused_before_any_case_runs() {
     assert_eq!(out.status.code(), Some(2), "{err}");
     assert!(err.contains("[TMP]/cases.toml:2:8"), "{err}");
     assert!(err.contains("`a/b`"), "{err}");
-    let short = write(&dir, "short.csv", "lines.L1.length,environment.depth\n425.0\n");
+    let short = write(
+        &dir,
+        "short.csv",
+        "lines.L1.length,environment.depth\n425.0\n",
+    );
     let out = sweep(&base, &short, &out_dir, &[]);
     let err = stderr(&out, &dir);
     assert_eq!(out.status.code(), Some(2), "{err}");
@@ -379,7 +395,11 @@ fn a_failed_case_is_a_row_with_its_error() {
     let rows: Vec<&str> = text.lines().collect();
     assert_eq!(rows.len(), 4, "{text}");
     assert!(rows[1].starts_with("fine,complete,,1.0,"), "{}", rows[1]);
-    assert!(rows[3].starts_with("also_fine,complete,,1.0,"), "{}", rows[3]);
+    assert!(
+        rows[3].starts_with("also_fine,complete,,1.0,"),
+        "{}",
+        rows[3]
+    );
     assert!(rows[2].starts_with("unstable,failed,"), "{}", rows[2]);
     assert!(rows[2].contains("diverged at t = "), "{}", rows[2]);
     // No extremes for the failed case: after its end time and override, only empty cells.
@@ -397,10 +417,14 @@ fn a_failed_case_is_a_row_with_its_error() {
 #[test]
 fn sigint_stops_the_sweep_with_a_summary() {
     let dir = temp_dir("sigint");
-    let base = write(&dir, "base.toml", &BASE.replacen("duration = 1.0", "duration = 600.0", 1));
+    let base = write(
+        &dir,
+        "base.toml",
+        &BASE.replacen("duration = 1.0", "duration = 600.0", 1),
+    );
     let cases = write(&dir, "cases.csv", "name\na\nb\nc\nd\n");
     let out_dir = dir.join("out");
-    let mut child = Command::new(env!("CARGO_BIN_EXE_hawser"))
+    let child = Command::new(env!("CARGO_BIN_EXE_hawser"))
         .args([
             "sweep",
             base.to_str().unwrap(),
@@ -428,7 +452,11 @@ fn sigint_stops_the_sweep_with_a_summary() {
     let err = stderr(&out, &dir);
     assert_eq!(out.status.code(), Some(130), "{err}");
     let text = std::fs::read_to_string(out_dir.join("sweep_summary.csv")).unwrap();
-    let rows: Vec<Vec<&str>> = text.lines().skip(1).map(|l| l.split(',').collect()).collect();
+    let rows: Vec<Vec<&str>> = text
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').collect())
+        .collect();
     assert_eq!(rows.len(), 4, "{text}");
     let interrupted: Vec<&str> = rows
         .iter()
@@ -437,7 +465,8 @@ fn sigint_stops_the_sweep_with_a_summary() {
         .collect();
     assert!(!interrupted.is_empty(), "{text}");
     assert!(
-        rows.iter().all(|r| r[1] == "interrupted" || r[1] == "not_run"),
+        rows.iter()
+            .all(|r| r[1] == "interrupted" || r[1] == "not_run"),
         "{text}"
     );
     for c in interrupted {

@@ -72,12 +72,7 @@ impl CaseTable {
             .collect()
     }
 
-    fn diagnostic(
-        &self,
-        span: Range<usize>,
-        key: &str,
-        message: impl Into<String>,
-    ) -> Diagnostic {
+    fn diagnostic(&self, span: Range<usize>, key: &str, message: impl Into<String>) -> Diagnostic {
         Diagnostic::new(&self.file, &self.source, Some(span), key, message)
     }
 }
@@ -91,7 +86,9 @@ pub fn read_case_table(path: &Path) -> Result<CaseTable, ScenarioError> {
 
 /// [`read_case_table`] of the text `source`, as if read from `path`.
 pub fn parse_case_table(path: &Path, source: &str) -> Result<CaseTable, ScenarioError> {
-    let toml = path.extension().is_some_and(|e| e.eq_ignore_ascii_case("toml"));
+    let toml = path
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("toml"));
     let mut table = CaseTable {
         file: path.to_path_buf(),
         source: source.to_string(),
@@ -141,7 +138,11 @@ pub fn parse_case_table(path: &Path, source: &str) -> Result<CaseTable, Scenario
             let line = crate::scenario::diagnostics::line_number(source, first.span.start);
             errors.push(
                 table
-                    .diagnostic(c.span.clone(), "name", format!("a second case named `{}`", c.name))
+                    .diagnostic(
+                        c.span.clone(),
+                        "name",
+                        format!("a second case named `{}`", c.name),
+                    )
                     .value(c.name.clone())
                     .hint(format!(
                         "case names must be unique: each is a folder of the results (the first \
@@ -202,10 +203,13 @@ struct Field {
     span: Range<usize>,
 }
 
+/// A CSV record: the span of its start and its fields.
+type Record = (Range<usize>, Vec<Field>);
+
 /// The records of a CSV text (RFC 4180: `"` quotes, `""` inside quotes is a quote, quoted
 /// fields may span lines; blank lines and lines starting with `#` skipped), each as (span of
 /// its start, fields).
-fn csv_records(table: &CaseTable) -> Result<Vec<(Range<usize>, Vec<Field>)>, ScenarioError> {
+fn csv_records(table: &CaseTable) -> Result<Vec<Record>, ScenarioError> {
     let s = table.source.as_str();
     let b = s.as_bytes();
     let mut i = if s.starts_with('\u{feff}') { 3 } else { 0 };
@@ -312,7 +316,11 @@ fn csv_rows(table: &mut CaseTable) -> Result<(Vec<Row>, Vec<Diagnostic>), Scenar
         } else if keys.iter().any(|k| k == key) {
             errors.push(
                 table
-                    .diagnostic(f.span.clone(), key, format!("the key `{key}` has a second column"))
+                    .diagnostic(
+                        f.span.clone(),
+                        key,
+                        format!("the key `{key}` has a second column"),
+                    )
                     .hint("give each key one column"),
             );
             columns.push(None);
@@ -509,7 +517,12 @@ pub fn validate_case(
         let Some(cell) = cell else { continue };
         let alone = [(key.clone(), Some(cell.value.clone()))];
         if let Err(e) = with_overrides(base, source, deck, &alone) {
-            out.push(report(cell.span.clone(), key, &cell.text, &e.diagnostics[0]));
+            out.push(report(
+                cell.span.clone(),
+                key,
+                &cell.text,
+                &e.diagnostics[0],
+            ));
         }
     }
     if out.is_empty() {
@@ -610,7 +623,8 @@ pub fn summary_columns(
     cases: &[&Case],
     outcomes: &[CaseOutcome],
 ) -> Vec<(String, Column)> {
-    let text = |f: &dyn Fn(usize) -> Option<String>| Column::Text((0..cases.len()).map(f).collect());
+    let text =
+        |f: &dyn Fn(usize) -> Option<String>| Column::Text((0..cases.len()).map(f).collect());
     let mut columns = vec![
         ("case".to_string(), text(&|i| Some(cases[i].name.clone()))),
         (
@@ -760,7 +774,11 @@ mod tests {
         .unwrap();
         assert_eq!(
             t.keys,
-            ["lines.chain.length", "points.f.motion.amplitude", "simulation.time_step"]
+            [
+                "lines.chain.length",
+                "points.f.motion.amplitude",
+                "simulation.time_step"
+            ]
         );
         assert_eq!(t.cases.len(), 2);
         let (a, b) = (&t.cases[0], &t.cases[1]);
@@ -771,10 +789,16 @@ mod tests {
         assert_eq!(amp.text, "[2.0, 0.0, 0.0]");
         assert_eq!(&t.source[amp.span.clone()], "\"[2.0, 0.0, 0.0]\"");
         assert_eq!(amp.value.as_array().map(Vec::len), Some(3));
-        assert_eq!(a.cells[2].as_ref().unwrap().value, Value::String("auto".into()));
+        assert_eq!(
+            a.cells[2].as_ref().unwrap().value,
+            Value::String("auto".into())
+        );
         assert_eq!(b.cells[0].as_ref().unwrap().value, Value::Float(700.5));
         assert!(b.cells[1].is_none());
-        assert_eq!(b.cells[2].as_ref().unwrap().value, Value::String("auto".into()));
+        assert_eq!(
+            b.cells[2].as_ref().unwrap().value,
+            Value::String("auto".into())
+        );
         assert_eq!(t.overrides(b).len(), 2);
     }
 
@@ -789,7 +813,10 @@ mod tests {
         assert_eq!(t.keys, ["lines.chain.length", "environment.waves.seed"]);
         assert_eq!(t.cases[0].name, "a");
         assert_eq!(t.cases[1].name, "case_0002");
-        assert_eq!(t.cases[0].cells[1].as_ref().unwrap().value, Value::Integer(3));
+        assert_eq!(
+            t.cases[0].cells[1].as_ref().unwrap().value,
+            Value::Integer(3)
+        );
         assert!(t.cases[1].cells[1].is_none());
     }
 
@@ -798,7 +825,10 @@ mod tests {
         let e = csv("lines.chain.length,name\n690.0\n700,a/b\n1,x\n2,x\n").unwrap_err();
         let d = &e.diagnostics;
         assert_eq!(d.len(), 3, "{e}");
-        assert_eq!((d[0].line, d[0].message.as_str()), (2, "this row has 1 cells, the header 2"));
+        assert_eq!(
+            (d[0].line, d[0].message.as_str()),
+            (2, "this row has 1 cells, the header 2")
+        );
         assert_eq!(d[1].line, 3);
         assert!(d[1].message.contains("`a/b`"), "{}", d[1].message);
         assert_eq!(d[2].line, 5);
@@ -814,7 +844,10 @@ mod tests {
     #[test]
     fn summary_csv_quotes_text_and_leaves_missing_values_empty() {
         let columns = vec![
-            ("case".to_string(), Column::Text(vec![Some("a".into()), Some("b".into())])),
+            (
+                "case".to_string(),
+                Column::Text(vec![Some("a".into()), Some("b".into())]),
+            ),
             (
                 "error".to_string(),
                 Column::Text(vec![None, Some("diverged at t = 1, \"x\"".into())]),

@@ -101,8 +101,11 @@ pub fn write_columns_parquet(
         match c {
             Column::Text(v) => {
                 let levels: Vec<i16> = v.iter().map(|x| i16::from(x.is_some())).collect();
-                let values: Vec<ByteArray> =
-                    v.iter().flatten().map(|s| ByteArray::from(s.as_str())).collect();
+                let values: Vec<ByteArray> = v
+                    .iter()
+                    .flatten()
+                    .map(|s| ByteArray::from(s.as_str()))
+                    .collect();
                 column
                     .typed::<ByteArrayType>()
                     .write_batch(&values, Some(&levels), None)
@@ -258,20 +261,42 @@ mod tests {
         std::fs::create_dir_all(&dir).unwrap();
         let pq = dir.join("s.parquet");
         let columns = vec![
-            ("case".to_string(), Column::Text(vec![Some("a".into()), Some("b, c".into())])),
-            ("error".to_string(), Column::Text(vec![None, Some("diverged".into())])),
-            ("x.max".to_string(), Column::Number(vec![Some(0.1 + 0.2), None])),
+            (
+                "case".to_string(),
+                Column::Text(vec![Some("a".into()), Some("b, c".into())]),
+            ),
+            (
+                "error".to_string(),
+                Column::Text(vec![None, Some("diverged".into())]),
+            ),
+            (
+                "x.max".to_string(),
+                Column::Number(vec![Some(0.1 + 0.2), None]),
+            ),
         ];
         write_columns_parquet(&pq, &columns, &[]).unwrap();
         let reader = SerializedFileReader::new(std::fs::File::open(&pq).unwrap()).unwrap();
-        let rows: Vec<_> = reader.get_row_iter(None).unwrap().map(|r| r.unwrap()).collect();
+        let rows: Vec<_> = reader
+            .get_row_iter(None)
+            .unwrap()
+            .map(|r| r.unwrap())
+            .collect();
         assert_eq!(rows.len(), 2);
         assert_eq!(rows[0].get_string(0).unwrap(), "a");
         assert_eq!(rows[1].get_string(0).unwrap(), "b, c");
-        assert!(matches!(rows[0].get_column_iter().nth(1).unwrap().1, Field::Null));
+        assert!(matches!(
+            rows[0].get_column_iter().nth(1).unwrap().1,
+            Field::Null
+        ));
         assert_eq!(rows[1].get_string(1).unwrap(), "diverged");
-        assert_eq!(rows[0].get_double(2).unwrap().to_bits(), (0.1f64 + 0.2).to_bits());
-        assert!(matches!(rows[1].get_column_iter().nth(2).unwrap().1, Field::Null));
+        assert_eq!(
+            rows[0].get_double(2).unwrap().to_bits(),
+            (0.1f64 + 0.2).to_bits()
+        );
+        assert!(matches!(
+            rows[1].get_column_iter().nth(2).unwrap().1,
+            Field::Null
+        ));
         let _ = std::fs::remove_dir_all(&dir);
     }
 }
