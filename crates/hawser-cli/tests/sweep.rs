@@ -475,3 +475,23 @@ fn sigint_stops_the_sweep_with_a_summary() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// `--duration` sets every case's duration as it sets a run's; a `simulation.duration` column
+/// wins over it.
+#[test]
+fn duration_sets_every_case_unless_the_table_does() {
+    let dir = temp_dir("duration");
+    let base = write(&dir, "base.toml", BASE);
+    let cases = write(
+        &dir,
+        "cases.csv",
+        "name,simulation.duration\nflag,\nown,0.3\n",
+    );
+    let out_dir = dir.join("out");
+    let out = sweep(&base, &cases, &out_dir, &["--duration", "0.5"]);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out, &dir));
+    let (_, rows) = read_summary(&out_dir.join("sweep_summary.csv"));
+    assert_eq!(rows[0][..4], ["flag", "complete", "", "0.5"]);
+    assert_eq!(rows[1][..4], ["own", "complete", "", "0.3"]);
+    let _ = std::fs::remove_dir_all(&dir);
+}

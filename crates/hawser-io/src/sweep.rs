@@ -481,7 +481,9 @@ pub struct CaseScenario {
 }
 
 /// Applies the overrides of `case` to the base scenario `base` (text `source`; `deck` the
-/// choices for a MoorDyn deck) and validates the result. A refusal is reported at the table's
+/// choices for a MoorDyn deck, whose `duration` [s] sets every case's `simulation.duration`,
+/// before the case's own keys, as `--duration` does for `hawser run`) and validates the
+/// result. A refusal is reported at the table's
 /// cell: each cell the base refuses on its own gets a diagnostic with the scenario's message,
 /// expected unit and range, and hint; when no cell is refused alone, the row gets one with
 /// the first of the scenario's diagnostics.
@@ -492,7 +494,12 @@ pub fn validate_case(
     table: &CaseTable,
     case: &Case,
 ) -> Result<CaseScenario, Vec<Diagnostic>> {
-    let overrides = table.overrides(case);
+    let leading: Vec<Override> = deck
+        .duration
+        .map(|d| ("simulation.duration".to_string(), Some(Value::Float(d))))
+        .into_iter()
+        .collect();
+    let overrides = [leading.clone(), table.overrides(case)].concat();
     let e = match with_overrides(base, source, deck, &overrides) {
         Ok((path, text, loaded)) => return Ok(CaseScenario { path, text, loaded }),
         Err(e) => e,
@@ -515,7 +522,11 @@ pub fn validate_case(
     let mut out = Vec::new();
     for (key, cell) in table.keys.iter().zip(&case.cells) {
         let Some(cell) = cell else { continue };
-        let alone = [(key.clone(), Some(cell.value.clone()))];
+        let alone = [
+            leading.clone(),
+            vec![(key.clone(), Some(cell.value.clone()))],
+        ]
+        .concat();
         if let Err(e) = with_overrides(base, source, deck, &alone) {
             out.push(report(
                 cell.span.clone(),
