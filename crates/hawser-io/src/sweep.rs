@@ -172,6 +172,11 @@ pub fn parse_case_table(path: &Path, source: &str) -> Result<CaseTable, Scenario
 
 /// Why `name` cannot name a case's folder, if it cannot.
 fn check_name(name: &str) -> Result<(), String> {
+    if name.starts_with("sweep_summary") {
+        return Err(format!(
+            "the case name `{name}` is taken by the summary table's files"
+        ));
+    }
     if safe_file_name(name) != name || name.trim() != name || name == "." {
         return Err(format!(
             "the case name `{name}` cannot name a folder of the results"
@@ -844,6 +849,8 @@ mod tests {
         assert!(d[1].message.contains("`a/b`"), "{}", d[1].message);
         assert_eq!(d[2].line, 5);
         assert!(d[2].hint.contains("line 4"), "{}", d[2].hint);
+        let e = csv("name\nsweep_summary.csv\n").unwrap_err();
+        assert!(e.diagnostics[0].message.contains("summary"), "{e}");
         let e = csv("a,a\n1,2\n").unwrap_err();
         assert!(e.diagnostics[0].message.contains("second column"), "{e}");
         let e = csv("a\n\"1,2\n").unwrap_err();
