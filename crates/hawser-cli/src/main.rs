@@ -41,6 +41,7 @@ macro_rules! err {
 mod bench;
 mod modes;
 mod run;
+mod sweep;
 mod validate;
 
 #[derive(Parser)]
@@ -105,6 +106,9 @@ enum Command {
         #[command(flatten)]
         deck: DeckArgs,
     },
+    /// Run a table of load cases (dotted-key overrides of a scenario) in parallel, each into
+    /// OUT/CASE, with a summary table of their extremes (OUT/sweep_summary.csv).
+    Sweep(sweep::SweepArgs),
     /// Continue an interrupted run from its checkpoint, appending to its results.
     Resume {
         /// The output directory of the interrupted run.
@@ -189,6 +193,7 @@ fn main() -> ExitCode {
             checkpoint_every,
             &deck,
         ),
+        Command::Sweep(args) => sweep::run(&args),
         Command::Resume { dir, quiet } => run::resume(&dir, quiet),
         Command::Statics { file, json, trace } => statics(&file, json, trace),
         Command::Plot {

@@ -117,7 +117,7 @@ const LOG_INTERVAL: f64 = 10.0;
 
 /// When to print a progress line off a terminal: at the first sample after every
 /// `interval` seconds of wall time, and after every tenth of the simulated duration.
-struct ProgressLog {
+pub(crate) struct ProgressLog {
     duration: Real,
     /// Simulated time at the start (a resumed run's checkpoint) [s].
     done: Real,
@@ -128,7 +128,7 @@ struct ProgressLog {
 }
 
 impl ProgressLog {
-    fn new(duration: Real, done: Real, interval: f64) -> Self {
+    pub(crate) fn new(duration: Real, done: Real, interval: f64) -> Self {
         let tenths = if duration > 0.0 {
             (10.0 * done / duration).floor() as u32
         } else {
@@ -144,7 +144,7 @@ impl ProgressLog {
     }
 
     /// Whether a line is due at simulated time `time` [s] after `wall` seconds.
-    fn due(&mut self, time: Real, wall: f64) -> bool {
+    pub(crate) fn due(&mut self, time: Real, wall: f64) -> bool {
         let mut due = false;
         // A sample within a millionth of the duration of a tenth reaches it (sample times
         // carry round-off).
@@ -186,7 +186,7 @@ impl ProgressLog {
 }
 
 /// A duration [s] as `1h02m03s`, `2m03s` or `3s`.
-fn clock(seconds: f64) -> String {
+pub(crate) fn clock(seconds: f64) -> String {
     let s = seconds.round() as u64;
     match (s / 3600, s / 60 % 60, s % 60) {
         (0, 0, s) => format!("{s}s"),
@@ -231,14 +231,14 @@ mod progress_tests {
 
 /// The stop flags of SIGINT and SIGTERM. A second signal of the same kind ends the process at
 /// once (exit 130 or 143), for a run that does not stop quickly enough.
-struct Signals {
-    any: Arc<AtomicBool>,
+pub(crate) struct Signals {
+    pub(crate) any: Arc<AtomicBool>,
     interrupt: Arc<AtomicBool>,
     terminate: Arc<AtomicBool>,
 }
 
 impl Signals {
-    fn install() -> Self {
+    pub(crate) fn install() -> Self {
         use signal_hook::consts::{SIGINT, SIGTERM};
         let s = Self {
             any: Arc::new(AtomicBool::new(false)),
@@ -255,7 +255,7 @@ impl Signals {
     }
 
     /// The exit code of the signal that stopped the run.
-    fn exit_code(&self) -> u8 {
+    pub(crate) fn exit_code(&self) -> u8 {
         if self.terminate.load(Ordering::Relaxed) {
             143
         } else {

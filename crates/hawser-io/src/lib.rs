@@ -17,4 +17,5 @@ pub mod plot;
 pub mod results;
 pub mod run_files;
 pub mod scenario;
+pub mod sweep;
 pub mod verification_report;

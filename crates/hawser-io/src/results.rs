@@ -17,7 +17,7 @@ mod vtk;
 
 pub use csv::{RowSink, RowWriter, SampleTimes, Table, TableReader, push_number, read_table};
 #[cfg(feature = "parquet")]
-pub use parquet::write_parquet;
+pub use parquet::{write_columns_parquet, write_parquet};
 pub use summary::{
     RunSummary, section_json, statistics_json, statistics_options_json, strength_json,
     timeseries_statistics,
@@ -54,6 +54,15 @@ pub const SNAPSHOT_COLUMNS: [(&str, &str); 7] = [
     ("z", "m"),
     ("tension", "N"),
 ];
+
+/// A column of a table of mixed types (the summary table of a sweep), one value per row.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Column {
+    /// Text per row (`None`: empty).
+    Text(Vec<Option<String>>),
+    /// A number per row (`None`: empty).
+    Number(Vec<Option<Real>>),
+}
 
 /// Writes a dynamic run's results into a directory while it runs.
 pub struct RunWriter {

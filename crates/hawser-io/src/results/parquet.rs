@@ -10,9 +10,10 @@
 //! behind this crate's `parquet` feature: the Arrow crates would add minutes to a clean build
 //! for nothing a table of f64 needs (docs/outputs.md has the numbers).
 
+use super::Column;
 use super::csv::{TableReader, cannot};
-use parquet::basic::{Compression, Repetition, Type as PhysicalType};
-use parquet::data_type::DoubleType;
+use parquet::basic::{Compression, LogicalType, Repetition, Type as PhysicalType};
+use parquet::data_type::{ByteArray, ByteArrayType, DoubleType};
 use parquet::errors::ParquetError;
 use parquet::file::metadata::KeyValue;
 use parquet::file::properties::WriterProperties;
@@ -24,6 +25,107 @@ use std::sync::Arc;
 /// Values per row group (rows × columns), which bounds the memory the conversion takes
 /// (about 32 MB of f64).
 const ROW_GROUP_VALUES: usize = 1 << 22;
+
+/// A Parquet error as an I/O error naming the file `path`.
+fn io_error(path: &Path, e: ParquetError) -> std::io::Error {
+    let e = match e {
+        ParquetError::External(e) => match e.downcast::<std::io::Error>() {
+            Ok(io) => *io,
+            Err(e) => std::io::Error::other(e),
+        },
+        e => std::io::Error::other(e),
+    };
+    cannot("write", path, e)
+}
+
+/// The writer properties of hawser's Parquet files: Snappy, no dictionary, `metadata` as the
+/// key-value metadata.
+fn properties(metadata: &[(String, String)]) -> WriterProperties {
+    WriterProperties::builder()
+        .set_compression(Compression::SNAPPY)
+        .set_dictionary_enabled(false)
+        .set_key_value_metadata(Some(
+            metadata
+                .iter()
+                .map(|(k, v)| KeyValue::new(k.clone(), v.clone()))
+                .collect(),
+        ))
+        .build()
+}
+
+/// The temporary file beside `path` that a writer renames over it.
+fn temporary(path: &Path) -> PathBuf {
+    let mut tmp = path.as_os_str().to_owned();
+    tmp.push(".tmp");
+    PathBuf::from(tmp)
+}
+
+/// Writes a table of named columns of mixed types ([`Column`]: optional text as UTF-8
+/// strings, optional numbers as doubles; a missing value is a null) into `path` (atomically),
+/// in one row group, with `metadata` as the file's key-value metadata. For small tables (the
+/// summary of a sweep: one row per case).
+pub fn write_columns_parquet(
+    path: &Path,
+    columns: &[(String, Column)],
+    metadata: &[(String, String)],
+) -> std::io::Result<()> {
+    let tmp = temporary(path);
+    let failed = |e: ParquetError| io_error(&tmp, e);
+    let fields = columns
+        .iter()
+        .map(|(name, c)| {
+            let builder = match c {
+                Column::Text(_) => Type::primitive_type_builder(name, PhysicalType::BYTE_ARRAY)
+                    .with_logical_type(Some(LogicalType::String)),
+                Column::Number(_) => Type::primitive_type_builder(name, PhysicalType::DOUBLE),
+            };
+            builder
+                .with_repetition(Repetition::OPTIONAL)
+                .build()
+                .map(Arc::new)
+        })
+        .collect::<Result<Vec<_>, _>>()
+        .map_err(failed)?;
+    let schema = Type::group_type_builder("schema")
+        .with_fields(fields)
+        .build()
+        .map_err(failed)?;
+    let file = std::fs::File::create(&tmp).map_err(|e| cannot("create", &tmp, e))?;
+    let mut writer =
+        SerializedFileWriter::new(file, Arc::new(schema), Arc::new(properties(metadata)))
+            .map_err(failed)?;
+    let mut group = writer.next_row_group().map_err(failed)?;
+    let mut data = columns.iter();
+    while let Some(mut column) = group.next_column().map_err(failed)? {
+        let (_, c) = data.next().expect("one column per field");
+        match c {
+            Column::Text(v) => {
+                let levels: Vec<i16> = v.iter().map(|x| i16::from(x.is_some())).collect();
+                let values: Vec<ByteArray> = v
+                    .iter()
+                    .flatten()
+                    .map(|s| ByteArray::from(s.as_str()))
+                    .collect();
+                column
+                    .typed::<ByteArrayType>()
+                    .write_batch(&values, Some(&levels), None)
+                    .map_err(failed)?;
+            }
+            Column::Number(v) => {
+                let levels: Vec<i16> = v.iter().map(|x| i16::from(x.is_some())).collect();
+                let values: Vec<f64> = v.iter().flatten().copied().collect();
+                column
+                    .typed::<DoubleType>()
+                    .write_batch(&values, Some(&levels), None)
+                    .map_err(failed)?;
+            }
+        }
+        column.close().map_err(failed)?;
+    }
+    group.close().map_err(failed)?;
+    writer.close().map_err(failed)?;
+    std::fs::rename(&tmp, path).map_err(|e| cannot("write", path, e))
+}
 
 /// Writes `parquet` (atomically: a temporary file renamed) from the hawser CSV table `csv`:
 /// one required double column per CSV column, and `metadata` as the file's key-value
@@ -46,19 +148,8 @@ fn write_in_groups(
     rows_per_group: usize,
 ) -> std::io::Result<()> {
     let mut table = TableReader::open(csv)?;
-    let mut tmp = parquet.as_os_str().to_owned();
-    tmp.push(".tmp");
-    let tmp = PathBuf::from(tmp);
-    let failed = |e: ParquetError| {
-        let e = match e {
-            ParquetError::External(e) => match e.downcast::<std::io::Error>() {
-                Ok(io) => *io,
-                Err(e) => std::io::Error::other(e),
-            },
-            e => std::io::Error::other(e),
-        };
-        cannot("write", &tmp, e)
-    };
+    let tmp = temporary(parquet);
+    let failed = |e: ParquetError| io_error(&tmp, e);
     let fields = table
         .names()
         .iter()
@@ -74,16 +165,7 @@ fn write_in_groups(
         .with_fields(fields)
         .build()
         .map_err(failed)?;
-    let properties = WriterProperties::builder()
-        .set_compression(Compression::SNAPPY)
-        .set_dictionary_enabled(false)
-        .set_key_value_metadata(Some(
-            metadata
-                .iter()
-                .map(|(k, v)| KeyValue::new(k.clone(), v.clone()))
-                .collect(),
-        ))
-        .build();
+    let properties = properties(metadata);
     let file = std::fs::File::create(&tmp).map_err(|e| cannot("create", &tmp, e))?;
     let mut writer =
         SerializedFileWriter::new(file, Arc::new(schema), Arc::new(properties)).map_err(failed)?;
@@ -167,6 +249,54 @@ mod tests {
             row += 1;
         }
         assert_eq!(row, 5000);
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    /// Text and number columns with missing values read back as strings, doubles (bit for
+    /// bit) and nulls.
+    #[test]
+    fn mixed_columns_read_back_with_their_nulls() {
+        use parquet::record::{Field, RowAccessor};
+        let dir = std::env::temp_dir().join(format!("hawser_parquet_mixed_{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let pq = dir.join("s.parquet");
+        let columns = vec![
+            (
+                "case".to_string(),
+                Column::Text(vec![Some("a".into()), Some("b, c".into())]),
+            ),
+            (
+                "error".to_string(),
+                Column::Text(vec![None, Some("diverged".into())]),
+            ),
+            (
+                "x.max".to_string(),
+                Column::Number(vec![Some(0.1 + 0.2), None]),
+            ),
+        ];
+        write_columns_parquet(&pq, &columns, &[]).unwrap();
+        let reader = SerializedFileReader::new(std::fs::File::open(&pq).unwrap()).unwrap();
+        let rows: Vec<_> = reader
+            .get_row_iter(None)
+            .unwrap()
+            .map(|r| r.unwrap())
+            .collect();
+        assert_eq!(rows.len(), 2);
+        assert_eq!(rows[0].get_string(0).unwrap(), "a");
+        assert_eq!(rows[1].get_string(0).unwrap(), "b, c");
+        assert!(matches!(
+            rows[0].get_column_iter().nth(1).unwrap().1,
+            Field::Null
+        ));
+        assert_eq!(rows[1].get_string(1).unwrap(), "diverged");
+        assert_eq!(
+            rows[0].get_double(2).unwrap().to_bits(),
+            (0.1f64 + 0.2).to_bits()
+        );
+        assert!(matches!(
+            rows[1].get_column_iter().nth(2).unwrap().1,
+            Field::Null
+        ));
         let _ = std::fs::remove_dir_all(&dir);
     }
 }
