@@ -755,6 +755,8 @@ pub fn write_summary(
 ) -> std::io::Result<Vec<PathBuf>> {
     let csv = dir.join(format!("{stem}.csv"));
     write_atomically(&csv, summary_csv(columns).as_bytes())?;
+    // Without the `parquet` feature (the library alone) only the CSV is written.
+    #[cfg_attr(not(feature = "parquet"), allow(unused_mut))]
     let mut written = vec![csv];
     if parquet {
         #[cfg(feature = "parquet")]
