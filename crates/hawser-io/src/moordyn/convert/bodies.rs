@@ -64,6 +64,7 @@ pub(super) fn bare_body(
     BodySpec {
         name,
         kind,
+        pin: None,
         motion,
         position,
         orientation,
