@@ -738,3 +738,24 @@ fn pinned_body_without_inertia() {
     );
     insta::assert_snapshot!(msg);
 }
+
+/// The pinned-body example of docs/scenario.md is valid: a body on a prescribed pin starting
+/// at the motion's start with its own orientation, and one on a fixed pin.
+#[test]
+fn documented_pinned_example_is_valid() {
+    use hawser::model::{BodyKind, Pin};
+    let doc = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../../docs/scenario.md"),
+    )
+    .expect("docs/scenario.md");
+    let start = doc.find("# A davit arm").expect("the pinned body example");
+    let example = &doc[start..start + doc[start..].find("```").unwrap()];
+    let lines_only = &BASE[..BASE.find("[[bodies]]").unwrap()];
+    let text = format!("{lines_only}\n{example}");
+    let s = scenario::parse(Path::new(FILE), &text).unwrap_or_else(|e| panic!("{e}"));
+    let (arm, buoy) = (&s.model.bodies[0], &s.model.bodies[1]);
+    assert!(matches!(arm.kind, BodyKind::Pinned(Pin::Prescribed(_))));
+    assert_eq!(arm.position, hawser::math::Vec3::new(0.0, 0.0, 10.0));
+    assert!((arm.orientation.euler_angles().1.to_degrees() - 30.0).abs() < 1e-9);
+    assert_eq!(buoy.kind, BodyKind::Pinned(Pin::Fixed));
+}
