@@ -51,6 +51,25 @@ fn pitch(y: &[Real], o: usize) -> Real {
 /// taken about the centre of gravity would fail by orders more.
 #[test]
 fn pinned_pendulum_has_the_compound_pendulum_period() {
+    let (period, expected) = pendulum_period(Scheme::Rk4, 1e-3);
+    assert!((period / expected - 1.0).abs() < 1e-5);
+}
+
+/// The same pendulum with the implicit generalized-α scheme (Newton on the coupled system with
+/// the pin's rows held) at 5 ms = T/580: the scheme is second order, and trapezoidal Newmark,
+/// its ρ∞ = 1 member, lengthens the period by (ω h)²/12 = 9.8e-6; the default ρ∞ adds a
+/// fraction of that, so the period agrees with T₀ (1 + θ₀²/16) within (ω h)²/6 = 2e-5
+/// (measured 1.03e-5). Without the pin's rows held the body would fall: no period at all.
+#[test]
+fn pinned_pendulum_period_with_generalized_alpha() {
+    let (period, expected) = pendulum_period(Scheme::GeneralizedAlpha, 5e-3);
+    let omega_h: Real = std::f64::consts::TAU / expected * 5e-3;
+    assert!((period / expected - 1.0).abs() < omega_h * omega_h / 6.0);
+}
+
+/// The measured and expected periods [s] of the compound pendulum on a fixed pin with `scheme`
+/// at step `dt` [s].
+fn pendulum_period(scheme: Scheme, dt: Real) -> (Real, Real) {
     let (mass, d, iyy) = (100.0, 2.0, 20.0);
     let pin = Vec3::new(1.0, -2.0, 10.0);
     let model = pendulum(
@@ -70,8 +89,7 @@ fn pinned_pendulum_has_the_compound_pendulum_period() {
         Vec3::zeros(),
     );
     let o = system.layout.body_offset[0].unwrap();
-    let dt = 1e-3;
-    let mut sim = Simulation::new(&system, &fixed_step_settings(dt, Scheme::Rk4), y).unwrap();
+    let mut sim = Simulation::new(&system, &fixed_step_settings(dt, scheme), y).unwrap();
     let (mut last, mut crossings) = (pitch(&sim.state(), o), Vec::new());
     while sim.time() < 8.5 * t0 {
         sim.step().unwrap();
@@ -84,15 +102,15 @@ fn pinned_pendulum_has_the_compound_pendulum_period() {
         // The pin stays put.
         assert!((Vec3::new(state[o], state[o + 1], state[o + 2]) - pin).norm() < 1e-12);
     }
+    assert!(crossings.len() >= 8);
     let period = (crossings[crossings.len() - 1] - crossings[0]) / (crossings.len() - 1) as Real;
     let expected = t0 * (1.0 + amplitude * amplitude / 16.0);
     eprintln!(
-        "pinned pendulum: period {period:.7} s, T0 {t0:.7} s, with amplitude {expected:.7} s, \
-         error {:.2e}",
+        "pinned pendulum ({scheme:?}, dt {dt} s): period {period:.7} s, T0 {t0:.7} s, with \
+         amplitude {expected:.7} s, error {:.2e}",
         period / expected - 1.0
     );
-    assert!(crossings.len() >= 8);
-    assert!((period / expected - 1.0).abs() < 1e-5);
+    (period, expected)
 }
 
 /// Largest |E − E₀| over `duration` [s] at step `dt` [s], relative to `scale` [J].
@@ -219,4 +237,138 @@ fn accelerating_pin_tilts_the_pendulum_by_atan_a_over_g() {
     );
     assert!(smallest > -1e-9);
     assert!((largest - 2.0 * phi).abs() < 1e-5);
+}
+
+/// A pendulum on a moving pin with an elastic line from a point on it to an anchor, in a
+/// vacuum: the pin on `pin`, the line taut from the start.
+fn tethered(pin: Pin, position: Vec3, dt: Real) -> Model {
+    use hawser::verification::{dry_line_type, fixed, single_line};
+    let mut model = single_line(
+        dry_line_type(0.02, 0.5, 2.0e4),
+        11.5,
+        6,
+        (
+            Point {
+                name: "lug".into(),
+                position: Vec3::zeros(),
+                kind: PointKind::Body {
+                    body: 0,
+                    offset: Vec3::new(0.5, 0.0, -3.0),
+                },
+            },
+            fixed("anchor", Vec3::new(2.0, 1.0, -5.0)),
+        ),
+        Formulation::Fe,
+        MassMatrix::Consistent,
+    );
+    model.environment = vacuum_environment(G);
+    model.settings = fixed_step_settings(dt, Scheme::Rk4);
+    model.bodies.push(Body {
+        position,
+        centre_of_gravity: Vec3::new(0.1, 0.0, -2.0),
+        kind: BodyKind::Pinned(pin),
+        ..Body::new("arm", 120.0, Mat3::from_diagonal(&Vec3::new(30.0, 40.0, 10.0)))
+    });
+    model
+}
+
+/// The pin's track: a smooth surge and heave (x = 0.5 sin 0.8t, z = 10 + 0.3 sin 1.1t), as a
+/// 6-DOF table every 0.05 s from t = −1 s (not-a-knot cubic splines).
+fn pin_track() -> RigidMotion {
+    let times: Vec<Real> = (-20..=300).map(|i| 0.05 * i as Real).collect();
+    let positions: Vec<Vec3> = times
+        .iter()
+        .map(|t| Vec3::new(0.5 * (0.8 * t).sin(), 0.0, 10.0 + 0.3 * (1.1 * t).sin()))
+        .collect();
+    RigidMotion::TimeSeries(
+        RigidTimeSeries::new(times.clone(), &positions, &vec![[0.0; 3]; times.len()]).unwrap(),
+    )
+}
+
+/// A host that sets a coupled pin from a prescribed motion's samples at every step end (with
+/// the accelerations: the quintic interpolant, exact on each cubic piece of the spline since
+/// no 1 ms step straddles a 0.05 s knot) reproduces the run on the prescribed pin: the state
+/// after 5 s within 1e-9 relative (round-off; the coupled-point test of hawser-io measures
+/// 6e-15), the same pin position, and the force on the pin read back through the coupled
+/// degrees of freedom (3 for a coupled pinned body, as MoorDyn's `CoupledPinned`) equal to
+/// the prescribed run's `pin_load` within 1e-9 of the body's weight. At rest on a fixed pin,
+/// the same body's pin load is its weight plus the line's pull (checked against the line's
+/// end force to 1e-9 of the weight).
+#[test]
+fn coupled_pin_reproduces_the_prescribed_pin() {
+    use hawser::session::Session;
+    let dt = 1e-3;
+    let motion = pin_track();
+    let start = motion.kinematics(0.0).position;
+    let mut prescribed = Session::new(tethered(Pin::Prescribed(motion.clone()), start, dt)).unwrap();
+    let mut coupled = Session::new(tethered(Pin::Coupled, start, dt)).unwrap();
+    assert_eq!(coupled.coupled_bodies(), &[0][..]);
+    assert_eq!(coupled.coupled_dofs(), 3);
+    let feed = |s: &mut Session, t1: Real| {
+        let k = motion.kinematics(t1);
+        let x = k.position;
+        let (v, a) = (k.velocity, k.acceleration);
+        s.set_coupled(t1, x.as_slice(), v.as_slice(), Some(a.as_slice()))
+            .unwrap();
+    };
+    feed(&mut coupled, 0.0);
+    let steps = 5000;
+    let mut forces = [0.0; 3];
+    let mut worst: Real = 0.0;
+    for k in 1..=steps {
+        let t1 = k as Real * dt;
+        feed(&mut coupled, t1);
+        coupled.advance_to(t1).unwrap();
+        prescribed.advance_to(t1).unwrap();
+        if k % 500 == 0 {
+            coupled.coupled_forces(&mut forces).unwrap();
+            let expected = prescribed.pin_load(0).unwrap();
+            worst = worst.max((Vec3::from_column_slice(&forces) - expected).norm());
+        }
+    }
+    let (a, b) = (prescribed.state(), coupled.state());
+    let scale = a.iter().fold(0.0, |m: Real, x| m.max(x.abs()));
+    let d = a
+        .iter()
+        .zip(b)
+        .fold(0.0, |m: Real, (x, y)| m.max((x - y).abs()))
+        / scale;
+    let weight = 120.0 * G;
+    eprintln!(
+        "coupled pin: state difference {d:.3e} after 5 s, pin load difference {:.3e} of the weight",
+        worst / weight
+    );
+    assert!(d < 1e-9, "relative state difference {d:.3e}");
+    assert!(worst < 1e-9 * weight, "pin load difference {worst:.3e} N");
+    let pin_now = motion.kinematics(5.0).position;
+    let body = coupled.view().unwrap().body(0).position;
+    assert!((body - pin_now).norm() < 1e-9, "{body} vs {pin_now}");
+}
+
+/// The force on a fixed pin of a body at rest (static equilibrium found by the statics about
+/// the pin): its weight plus the pull of the line on it, −R = −m g ẑ + F_line; and the body
+/// hangs so that the moments about the pin of its weight and the line balance (1e-6 of m g d).
+#[test]
+fn pin_load_at_rest_is_weight_plus_line_pull() {
+    use hawser::session::Session;
+    let mut model = tethered(Pin::Fixed, Vec3::new(0.0, 0.0, 10.0), 1e-3);
+    model.settings.initial_condition = InitialCondition::Statics;
+    let mut s = Session::new(model).unwrap();
+    let view = s.view().unwrap();
+    let line = view.end_force(0, false);
+    let pin = view.pin_load(0).unwrap();
+    let k = view.body(0);
+    let cg = k.orientation * Vec3::new(0.1, 0.0, -2.0);
+    let lug = k.orientation * Vec3::new(0.5, 0.0, -3.0);
+    let weight = Vec3::new(0.0, 0.0, -120.0 * G);
+    let moment = cg.cross(&weight) + lug.cross(&line);
+    let expected = weight + line;
+    eprintln!(
+        "pin at rest: load {pin:?}, weight + line {expected:?}, moment about the pin {:.3e} N·m",
+        moment.norm()
+    );
+    assert!((k.position - Vec3::new(0.0, 0.0, 10.0)).norm() < 1e-12);
+    assert!(line.norm() > 10.0, "the line pulls: {line}");
+    assert!((pin - expected).norm() < 1e-6 * 120.0 * G, "{pin} vs {expected}");
+    assert!(moment.norm() < 1e-6 * 120.0 * G * 2.0, "moment {moment}");
 }

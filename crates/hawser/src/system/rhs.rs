@@ -155,6 +155,25 @@ impl System {
         }
     }
 
+    /// Puts the position [m] and velocity [m/s] of each pinned body's pin at time t [s] into
+    /// the body's translational state entries, which the integrator carries along the pin's
+    /// velocity and acceleration only up to its error (and from whatever velocity the state
+    /// started with): the stepper calls it after every step, so the state holds the pin exactly
+    /// (the physics reads the pin's motion anyway, [`System::point_kinematics`]).
+    pub fn hold_pins(&self, t: Real, y: &mut [Real], ws: &Workspace) {
+        for &b in &self.free_bodies {
+            let body = &self.bodies[b].body;
+            let Some(pin) = body.kind.pin() else {
+                continue;
+            };
+            let o = self.layout.body_offset[b].expect("a pinned body has a state block");
+            let track = ws.coupling.bodies[b].as_ref();
+            let (x, v, _) = crate::bodies::pin_kinematics(pin, &body.position, track, t);
+            y[o..o + 3].copy_from_slice(x.as_slice());
+            y[o + 7..o + 10].copy_from_slice(v.as_slice());
+        }
+    }
+
     /// Fills each line's node positions and velocities from the state and its ends
     /// ([`SystemLine::gather`]; `dg` lines fill theirs when evaluated).
     pub fn gather_lines(&self, y: &[Real], ws: &mut Workspace) {
