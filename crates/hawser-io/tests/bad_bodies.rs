@@ -699,7 +699,13 @@ fn prescribed_pin_without_motion() {
         "type = \"pinned\"\npin = \"prescribed\"",
     );
     let msg = error(&text);
-    assert_located(&msg, line_of(&text, "pin = "), "bodies[0].motion", true, true);
+    assert_located(
+        &msg,
+        line_of(&text, "pin = "),
+        "bodies[0].motion",
+        true,
+        true,
+    );
     insta::assert_snapshot!(msg);
 }
 

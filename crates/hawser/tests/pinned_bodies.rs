@@ -163,7 +163,10 @@ fn pinned_body_conserves_energy_at_large_amplitude() {
         "pinned body energy: drift {coarse:.3e} at dt {dt:.3e} s, {fine:.3e} at dt/2, order \
          {order:.2}"
     );
-    assert!(coarse < 1e-6, "energy drift {coarse:.3e} of the swing energy");
+    assert!(
+        coarse < 1e-6,
+        "energy drift {coarse:.3e} of the swing energy"
+    );
     assert!(order > 3.5, "drift order {order:.2}");
 }
 
@@ -210,7 +213,6 @@ fn accelerating_pin_tilts_the_pendulum_by_atan_a_over_g() {
     while sim.time() < 3.0 {
         sim.step().unwrap();
         worst = worst.max((pitch(&sim.state(), o) - phi).abs());
-
     }
     let x = sim.evaluate().unwrap().bodies[0].position.x;
     assert!(
@@ -267,7 +269,11 @@ fn tethered(pin: Pin, position: Vec3, dt: Real) -> Model {
         position,
         centre_of_gravity: Vec3::new(0.1, 0.0, -2.0),
         kind: BodyKind::Pinned(pin),
-        ..Body::new("arm", 120.0, Mat3::from_diagonal(&Vec3::new(30.0, 40.0, 10.0)))
+        ..Body::new(
+            "arm",
+            120.0,
+            Mat3::from_diagonal(&Vec3::new(30.0, 40.0, 10.0)),
+        )
     });
     model
 }
@@ -300,7 +306,8 @@ fn coupled_pin_reproduces_the_prescribed_pin() {
     let dt = 1e-3;
     let motion = pin_track();
     let start = motion.kinematics(0.0).position;
-    let mut prescribed = Session::new(tethered(Pin::Prescribed(motion.clone()), start, dt)).unwrap();
+    let mut prescribed =
+        Session::new(tethered(Pin::Prescribed(motion.clone()), start, dt)).unwrap();
     let mut coupled = Session::new(tethered(Pin::Coupled, start, dt)).unwrap();
     assert_eq!(coupled.coupled_bodies(), &[0][..]);
     assert_eq!(coupled.coupled_dofs(), 3);
@@ -369,6 +376,9 @@ fn pin_load_at_rest_is_weight_plus_line_pull() {
     );
     assert!((k.position - Vec3::new(0.0, 0.0, 10.0)).norm() < 1e-12);
     assert!(line.norm() > 10.0, "the line pulls: {line}");
-    assert!((pin - expected).norm() < 1e-6 * 120.0 * G, "{pin} vs {expected}");
+    assert!(
+        (pin - expected).norm() < 1e-6 * 120.0 * G,
+        "{pin} vs {expected}"
+    );
     assert!(moment.norm() < 1e-6 * 120.0 * G * 2.0, "moment {moment}");
 }

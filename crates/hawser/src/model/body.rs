@@ -35,6 +35,17 @@ impl BodyKind {
         matches!(self, BodyKind::Free | BodyKind::Pinned(_))
     }
 
+    /// Degrees of freedom a coupling host sets for a body of this kind: 6 for a coupled body
+    /// (pose), 3 for a body on a coupled pin (the pin's position), 0 otherwise (MoorDyn's
+    /// layout: a `CoupledPinned` body takes 3 entries).
+    pub fn coupled_dofs(&self) -> usize {
+        match self {
+            BodyKind::Coupled => 6,
+            BodyKind::Pinned(Pin::Coupled) => 3,
+            _ => 0,
+        }
+    }
+
     /// The pin's motion of a pinned body, `None` for other kinds.
     pub fn pin(&self) -> Option<&Pin> {
         match self {

@@ -10,7 +10,7 @@ use super::Session;
 use super::stepper::Saved;
 use crate::error::SimulationError;
 use crate::math::{Real, Vec3};
-use crate::model::{BodyKind, Pin, PointKind, RigidKinematics, euler_kinematics};
+use crate::model::{PointKind, RigidKinematics, euler_kinematics};
 
 /// The coupled objects and the interval in progress.
 #[derive(Clone, Debug, Default)]
@@ -31,12 +31,7 @@ impl Coupling {
     pub(crate) fn of(model: &crate::Model) -> Self {
         Self {
             bodies: (0..model.bodies.len())
-                .filter(|&b| {
-                    matches!(
-                        model.bodies[b].kind,
-                        BodyKind::Coupled | BodyKind::Pinned(Pin::Coupled)
-                    )
-                })
+                .filter(|&b| model.bodies[b].kind.coupled_dofs() > 0)
                 .collect(),
             points: (0..model.points.len())
                 .filter(|&p| model.points[p].kind == PointKind::Coupled)
@@ -56,27 +51,28 @@ impl Session {
         &self.coupling.points
     }
 
-    /// Indices of the coupled bodies ([`BodyKind::Coupled`], and the pinned bodies whose pin
-    /// is coupled, [`Pin::Coupled`]), in model order.
+    /// Indices of the coupled bodies ([`crate::model::BodyKind::Coupled`], and the pinned bodies whose pin
+    /// is coupled, [`crate::model::Pin::Coupled`]), in model order.
     pub fn coupled_bodies(&self) -> &[usize] {
         &self.coupling.bodies
     }
 
     /// Coupled degrees of freedom of body `body`: 6 for a coupled body, 3 (the pin's
-    /// translations) for a body on a coupled pin.
-    fn body_dofs(&self, body: usize) -> usize {
-        if self.system.bodies[body].body.kind.pin().is_some() {
-            3
-        } else {
-            6
-        }
+    /// translations) for a body on a coupled pin ([`crate::model::BodyKind::coupled_dofs`]).
+    pub fn coupled_body_dofs(&self, body: usize) -> usize {
+        self.system.bodies[body].body.kind.coupled_dofs()
     }
 
     /// Number of coupled degrees of freedom in the layout of [`Session::set_coupled`]: 6 per
     /// coupled body or 3 per body on a coupled pin, in model order, then 3 per coupled point
     /// (MoorDyn's order: a `CoupledPinned` body takes 3 entries).
     pub fn coupled_dofs(&self) -> usize {
-        let bodies: usize = self.coupling.bodies.iter().map(|&b| self.body_dofs(b)).sum();
+        let bodies: usize = self
+            .coupling
+            .bodies
+            .iter()
+            .map(|&b| self.coupled_body_dofs(b))
+            .sum();
         bodies + 3 * self.coupling.points.len()
     }
 
@@ -254,7 +250,7 @@ impl Session {
         let mut o = 0;
         for k in 0..self.coupling.bodies.len() {
             let b = self.coupling.bodies[k];
-            let n = self.body_dofs(b);
+            let n = self.coupled_body_dofs(b);
             let mut p = [0.0; 6];
             let mut v = [0.0; 6];
             let mut a = [0.0; 6];
@@ -337,7 +333,9 @@ impl Session {
         }
         let name = self.system.bodies[body].body.name.clone();
         self.view()?.pin_load(body).ok_or_else(|| {
-            coupling_error(format!("body {name} (#{body}) is not pinned: it has no pin load"))
+            coupling_error(format!(
+                "body {name} (#{body}) is not pinned: it has no pin load"
+            ))
         })
     }
 
@@ -357,7 +355,7 @@ impl Session {
         let mut o = 0;
         for k in 0..self.coupling.bodies.len() {
             let b = self.coupling.bodies[k];
-            if self.body_dofs(b) == 3 {
+            if self.coupled_body_dofs(b) == 3 {
                 let f = self.pin_load(b)?;
                 forces[o..o + 3].copy_from_slice(f.as_slice());
                 o += 3;

@@ -71,11 +71,7 @@ pub(super) fn build_bodies(
             && !pinned
         {
             let d = b
-                .diag(
-                    Some(p.span()),
-                    &k("pin"),
-                    "only a pinned body has a `pin`",
-                )
+                .diag(Some(p.span()), &k("pin"), "only a pinned body has a `pin`")
                 .hint(
                     "give the body `type = \"pinned\"` to pin its origin and let it turn, or \
                      remove `pin`",
@@ -177,9 +173,7 @@ pub(super) fn build_bodies(
                         "mass" => "the mass in air in kg, > 0",
                         _ => "[Ixx, Iyy, Izz] about the centre of gravity in kg·m²",
                     })
-                    .hint(
-                        "a free or pinned body moves under its mass and inertia: give both",
-                    );
+                    .hint("a free or pinned body moves under its mass and inertia: give both");
                 b.push(d);
             }
         }
@@ -338,7 +332,9 @@ pub(super) fn build_bodies(
                     .diag(
                         s.pin.as_ref().map(|p| p.span()),
                         &k("motion"),
-                        format!("body `{name}` is pinned on a prescribed motion but has no `motion`"),
+                        format!(
+                            "body `{name}` is pinned on a prescribed motion but has no `motion`"
+                        ),
                     )
                     .expected(
                         "a `[bodies.motion]` table of type `fixed`, `constant-velocity`, \
