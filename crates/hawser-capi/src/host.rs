@@ -63,7 +63,8 @@ pub struct Host {
     model: Model,
     /// The run, from [`Host::init`] on.
     session: Option<Session>,
-    /// Number of coupled degrees of freedom (6 per coupled body, then 3 per coupled point).
+    /// Number of coupled degrees of freedom (6 per coupled body, 3 per body on a coupled pin,
+    /// then 3 per coupled point).
     dofs: usize,
 }
 

@@ -367,11 +367,7 @@ fn convert_rod(
                     parts: vec![Part {
                         centre: 0.5 * (b - a),
                         mass: if kind.moves() { mass } else { 0.0 },
-                        inertia: if kind.moves() {
-                            inertia
-                        } else {
-                            Mat3::zeros()
-                        },
+                        inertia: if kind.moves() { inertia } else { Mat3::zeros() },
                         volume: 0.0,
                     }],
                 });
