@@ -90,11 +90,11 @@ fn pendulum_period(scheme: Scheme, dt: Real) -> (Real, Real) {
     );
     let o = system.layout.body_offset[0].unwrap();
     let mut sim = Simulation::new(&system, &fixed_step_settings(dt, scheme), y).unwrap();
-    let (mut last, mut crossings) = (pitch(&sim.state(), o), Vec::new());
+    let (mut last, mut crossings) = (pitch(sim.state(), o), Vec::new());
     while sim.time() < 8.5 * t0 {
         sim.step().unwrap();
         let state = sim.state();
-        let theta = pitch(&state, o);
+        let theta = pitch(state, o);
         if last > 0.0 && theta <= 0.0 {
             crossings.push(sim.time() - dt * theta / (theta - last));
         }
@@ -118,12 +118,12 @@ fn energy_drift(model: &Model, y: Vec<Real>, dt: Real, duration: Real, scale: Re
     let system = System::new(model).unwrap();
     let mut sim = Simulation::new(&system, &fixed_step_settings(dt, Scheme::Rk4), y).unwrap();
     let mut ws = system.workspace();
-    let e0 = system.mechanical_energy(0.0, &sim.state(), &mut ws).total();
+    let e0 = system.mechanical_energy(0.0, sim.state(), &mut ws).total();
     let mut worst: Real = 0.0;
     for _ in 0..(duration / dt).round() as usize {
         sim.step().unwrap();
         let e = system
-            .mechanical_energy(sim.time(), &sim.state(), &mut ws)
+            .mechanical_energy(sim.time(), sim.state(), &mut ws)
             .total();
         worst = worst.max((e - e0).abs());
     }
@@ -212,7 +212,7 @@ fn accelerating_pin_tilts_the_pendulum_by_atan_a_over_g() {
     let mut worst: Real = 0.0;
     while sim.time() < 3.0 {
         sim.step().unwrap();
-        worst = worst.max((pitch(&sim.state(), o) - phi).abs());
+        worst = worst.max((pitch(sim.state(), o) - phi).abs());
     }
     let x = sim.evaluate().unwrap().bodies[0].position.x;
     assert!(
@@ -229,7 +229,7 @@ fn accelerating_pin_tilts_the_pendulum_by_atan_a_over_g() {
     let (mut largest, mut smallest): (Real, Real) = (0.0, 0.0);
     while sim.time() < 1.5 * period {
         sim.step().unwrap();
-        let theta = pitch(&sim.state(), o);
+        let theta = pitch(sim.state(), o);
         largest = largest.max(theta);
         smallest = smallest.min(theta);
     }
