@@ -5,8 +5,10 @@
 //!
 //! Arrays of coupled kinematics and forces have [`hawser_coupled_dofs`] entries, per coupled
 //! body x, y, z [m], roll, pitch, yaw [rad] (velocities [m/s], angular velocities [rad/s] about
-//! the global axes; forces [N], moments about the body origin [N·m]), then per coupled point
-//! x, y, z. Lines and points are numbered from 0 in input order.
+//! the global axes; forces [N], moments about the body origin [N·m]) or, per body on a coupled
+//! pin, its pin's x, y, z only (velocity [m/s]; force: the one the body puts on its pin [N]),
+//! in input order (MoorDyn's layout for `CoupledPinned` bodies), then per coupled point x, y,
+//! z. Lines and points are numbered from 0 in input order.
 
 use crate::host::{Convention, ErrorKind, Host, HostError};
 use crate::{clear_error, guard, set_error};

@@ -4,7 +4,7 @@
 
 use hawser::Model;
 use hawser::math::{Real, Vec3};
-use hawser::model::{BodyKind, PointKind, euler_kinematics};
+use hawser::model::{PointKind, euler_kinematics};
 use hawser::session::{Session, SessionOptions};
 use std::path::Path;
 
@@ -63,7 +63,8 @@ pub struct Host {
     model: Model,
     /// The run, from [`Host::init`] on.
     session: Option<Session>,
-    /// Number of coupled degrees of freedom (6 per coupled body, then 3 per coupled point).
+    /// Number of coupled degrees of freedom (6 per coupled body, 3 per body on a coupled pin,
+    /// then 3 per coupled point).
     dofs: usize,
 }
 
@@ -88,11 +89,7 @@ impl Host {
 
     /// A host over a model.
     pub fn from_model(model: Model) -> Self {
-        let bodies = model
-            .bodies
-            .iter()
-            .filter(|b| b.kind == BodyKind::Coupled)
-            .count();
+        let bodies: usize = model.bodies.iter().map(|b| b.kind.coupled_dofs()).sum();
         let points = model
             .points
             .iter()
@@ -101,7 +98,7 @@ impl Host {
         Self {
             model,
             session: None,
-            dofs: 6 * bodies + 3 * points,
+            dofs: bodies + 3 * points,
         }
     }
 
@@ -134,15 +131,18 @@ impl Host {
         self.check_len("the position array", x.len())?;
         let mut model = self.model.clone();
         let mut k = 0;
-        for b in model
-            .bodies
-            .iter_mut()
-            .filter(|b| b.kind == BodyKind::Coupled)
-        {
-            let p = &x[k..k + 6];
+        for b in model.bodies.iter_mut() {
+            let n = b.kind.coupled_dofs();
+            if n == 0 {
+                continue;
+            }
+            let p = &x[k..k + n];
             b.position = Vec3::new(p[0], p[1], p[2]);
-            b.orientation = euler_kinematics([p[3], p[4], p[5]], [0.0; 3], [0.0; 3]).0;
-            k += 6;
+            // A coupled pin gives its position only: the body keeps its own orientation.
+            if n == 6 {
+                b.orientation = euler_kinematics([p[3], p[4], p[5]], [0.0; 3], [0.0; 3]).0;
+            }
+            k += n;
         }
         for p in model
             .points
@@ -383,6 +383,18 @@ impl Host {
 /// forces (about the body origin), per coupled point the sum of the net forces of the lines'
 /// end nodes on it, without their inertia (MoorDyn-C 2.7 `Point::doRHS`, `getFnet`).
 fn end_node_forces(s: &mut Session, forces: &mut [Real]) -> Result<(), hawser::SimulationError> {
+    // A coupled pin: the force the body puts on it (MoorDyn's `getFnet` of a `CPLDPIN` body,
+    // F6net − M a over the translations, the end masses' inertia included).
+    let mut o = 0;
+    for k in 0..s.coupled_bodies().len() {
+        let b = s.coupled_bodies()[k];
+        let n = s.coupled_body_dofs(b);
+        if n == 3 {
+            let f = s.pin_load(b)?;
+            forces[o..o + 3].copy_from_slice(f.as_slice());
+        }
+        o += n;
+    }
     s.view()?;
     let (system, ws, model) = (s.system(), s.workspace(), s.model());
     let node_force = |line: usize, end_b: bool| {
@@ -401,7 +413,12 @@ fn end_node_forces(s: &mut Session, forces: &mut [Real]) -> Result<(), hawser::S
         }
         f
     };
-    for (k, &b) in s.coupled_bodies().iter().enumerate() {
+    let mut o = 0;
+    for &b in s.coupled_bodies() {
+        if s.coupled_body_dofs(b) == 3 {
+            o += 3;
+            continue;
+        }
         let origin = ws.bodies[b].position;
         let mut load = [0.0; 6];
         for (p, point) in model.points.iter().enumerate() {
@@ -414,9 +431,9 @@ fn end_node_forces(s: &mut Session, forces: &mut [Real]) -> Result<(), hawser::S
                 }
             }
         }
-        forces[6 * k..6 * k + 6].copy_from_slice(&load);
+        forces[o..o + 6].copy_from_slice(&load);
+        o += 6;
     }
-    let o = 6 * s.coupled_bodies().len();
     for (k, &p) in s.coupled_points().iter().enumerate() {
         forces[o + 3 * k..o + 3 * k + 3].copy_from_slice(on_point(p).as_slice());
     }

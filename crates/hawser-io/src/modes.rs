@@ -370,12 +370,13 @@ impl ModalAnalysis {
     }
 }
 
-/// What body `b` is, in words: free, prescribed or coupled.
+/// What body `b` is, in words: free, prescribed, coupled or pinned.
 pub fn body_kind(system: &System, b: usize) -> &'static str {
     match system.bodies[b].body.kind {
         BodyKind::Free => "free",
         BodyKind::Prescribed(_) => "prescribed",
         BodyKind::Coupled => "coupled",
+        BodyKind::Pinned(_) => "pinned",
     }
 }
 

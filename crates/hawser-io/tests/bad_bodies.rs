@@ -658,3 +658,110 @@ fn bad_members() {
         assert!(msg.contains(needle), "{needle}:\n{msg}");
     }
 }
+
+/// `type = "pinned"` builds a pinned body: fixed at `position` by default, on a coupling host
+/// with `pin = "coupled"`, on its `motion` with `pin = "prescribed"` (the origin starts where
+/// the motion is at t = 0, the orientation is the body's own).
+#[test]
+fn pinned_bodies_build() {
+    use hawser::model::{BodyKind, Pin};
+    let text = mutate("type = \"free\"", "type = \"pinned\"");
+    let s = scenario::parse(Path::new(FILE), &text).expect("valid");
+    assert_eq!(s.model.bodies[0].kind, BodyKind::Pinned(Pin::Fixed));
+    let text = mutate("type = \"free\"", "type = \"pinned\"\npin = \"coupled\"");
+    let s = scenario::parse(Path::new(FILE), &text).expect("valid");
+    assert_eq!(s.model.bodies[0].kind, BodyKind::Pinned(Pin::Coupled));
+    let text = mutate(
+        "type = \"free\"\nposition = [-100.0, 0.0, -50.0]",
+        "type = \"pinned\"\npin = \"prescribed\"\n\
+         motion = { type = \"constant-velocity\", start = [-90.0, 1.0, -40.0], velocity = [2.0, 0.0, 0.0] }",
+    );
+    let s = scenario::parse(Path::new(FILE), &text).expect("valid");
+    let b = &s.model.bodies[0];
+    assert!(matches!(b.kind, BodyKind::Pinned(Pin::Prescribed(_))));
+    assert_eq!(b.position, hawser::math::Vec3::new(-90.0, 1.0, -40.0));
+    let yaw = b.orientation.euler_angles().2.to_degrees();
+    assert!((yaw.abs() - 180.0).abs() < 1e-9, "yaw {yaw}");
+}
+
+#[test]
+fn pin_on_a_free_body() {
+    let text = mutate("type = \"free\"", "type = \"free\"\npin = \"fixed\"");
+    let msg = error(&text);
+    assert_located(&msg, line_of(&text, "pin = "), "bodies[0].pin", true, false);
+    insta::assert_snapshot!(msg);
+}
+
+#[test]
+fn prescribed_pin_without_motion() {
+    let text = mutate(
+        "type = \"free\"\nposition = [-100.0, 0.0, -50.0]",
+        "type = \"pinned\"\npin = \"prescribed\"",
+    );
+    let msg = error(&text);
+    assert_located(
+        &msg,
+        line_of(&text, "pin = "),
+        "bodies[0].motion",
+        true,
+        true,
+    );
+    insta::assert_snapshot!(msg);
+}
+
+#[test]
+fn prescribed_pin_with_a_position() {
+    let text = mutate(
+        "type = \"free\"",
+        "type = \"pinned\"\npin = \"prescribed\"\n\
+         motion = { type = \"constant-velocity\", start = [-90.0, 1.0, -40.0], velocity = [2.0, 0.0, 0.0] }",
+    );
+    let msg = error(&text);
+    assert_located(
+        &msg,
+        line_of(&text, "position = [-100.0, 0.0, -50.0]\norientation"),
+        "bodies[0].position",
+        true,
+        false,
+    );
+    insta::assert_snapshot!(msg);
+}
+
+#[test]
+fn pinned_body_without_inertia() {
+    let text = replaced(
+        &mutate("type = \"free\"", "type = \"pinned\""),
+        "inertia = [4000.0, 9000.0, 9500.0]\n",
+        "",
+    );
+    let msg = error(&text);
+    assert_located(
+        &msg,
+        line_of(&text, "type = \"pinned\""),
+        "bodies[0].inertia",
+        true,
+        true,
+    );
+    insta::assert_snapshot!(msg);
+}
+
+/// The pinned-body example of docs/scenario.md is valid: a body on a prescribed pin starting
+/// at the motion's start with its own orientation, and one on a fixed pin.
+#[test]
+fn documented_pinned_example_is_valid() {
+    use hawser::model::{BodyKind, Pin};
+    let doc = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../../docs/scenario.md"),
+    )
+    .expect("docs/scenario.md");
+    let start = doc.find("# A davit arm").expect("the pinned body example");
+    let example = &doc[start..start + doc[start..].find("```").unwrap()];
+    let lines_only = &BASE[..BASE.find("[[bodies]]").unwrap()];
+    let text = format!("{lines_only}\n{example}");
+    let s = scenario::parse(Path::new(FILE), &text).unwrap_or_else(|e| panic!("{e}"));
+    let (arm, buoy) = (&s.model.bodies[0], &s.model.bodies[1]);
+    assert!(matches!(arm.kind, BodyKind::Pinned(Pin::Prescribed(_))));
+    assert_eq!(arm.position, hawser::math::Vec3::new(0.0, 0.0, 10.0));
+    assert!((arm.orientation.euler_angles().1.to_degrees() - 30.0).abs() < 1e-9);
+    assert_eq!(buoy.kind, BodyKind::Pinned(Pin::Fixed));
+}

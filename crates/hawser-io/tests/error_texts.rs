@@ -157,10 +157,12 @@ fn every_error_variant_reads_as_words() {
             iterations: 40,
             residual: 1e-6,
         },
+        ModalError::PinnedBody { body: "arm".into() },
     ];
     for e in &modal {
         match e {
             ModalError::Unsupported { .. }
+            | ModalError::PinnedBody { .. }
             | ModalError::NoDegreesOfFreedom
             | ModalError::MassNotDefinite
             | ModalError::Singular { .. }
@@ -194,6 +196,7 @@ fn coupling_errors_read_as_words() {
             .unwrap_err(),
         session.body_reaction(0).unwrap_err(),
         session.point_reaction(99).unwrap_err(),
+        session.pin_load(0).unwrap_err(),
         session
             .set_point_kinematics(0, 0.1, Default::default(), Default::default(), None)
             .unwrap_err(),

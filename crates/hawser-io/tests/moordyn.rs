@@ -575,7 +575,7 @@ bad_deck!(
     ""
 );
 bad_deck!(
-    coupled_pinned_body_refused,
+    coupled_pinned_body_without_mass,
     "oc3_lines.txt",
     "---------------------- POINT PROPERTIES",
     "---------------------- BODIES ----\nID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG* I* Volume CdA* Ca*\n(#) (-) (m) (m) (m) (deg) (deg) (deg) (kg) (m) (kg-m^2) (m^3) (m^2) (-)\n1 CoupledPinned 0 0 0 0 0 0 0 0 0 0 0 0\n---------------------- POINT PROPERTIES"
@@ -600,10 +600,10 @@ bad_deck!(
     "1     main       1        R1B"
 );
 bad_deck!(
-    pinned_rod_refused,
+    rod_pinned_on_a_body_refused,
     "rod_hanging.txt",
-    "1    rod       Free  ",
-    "1    rod       Pinned"
+    "1    rod       Free       ",
+    "1    rod       Body1Pinned"
 );
 bad_deck!(
     zero_length_rod_refused,
@@ -673,4 +673,106 @@ fn no_lines_section() {
     let end = t.find("---------------------- OPTIONS").unwrap();
     let text = format!("{}{}", &t[..start], &t[end..]);
     insta::assert_snapshot!(error_of(&text));
+}
+
+/// A `Pinned` rod becomes a rigid cylinder body pinned at end A where it is (its origin),
+/// turning freely, with the free rod's mass and inertia; `CoupledPinned` the same on a coupled
+/// pin (three coupled degrees of freedom).
+#[test]
+fn pinned_rods_convert_to_pinned_bodies() {
+    use hawser::model::{BodyKind, Pin};
+    for (word, pin) in [("Pinned", Pin::Fixed), ("CpldPin", Pin::Coupled)] {
+        let text = mutate(
+            "rod_hanging.txt",
+            "1    rod       Free  ",
+            &format!("1    rod       {word:<6}"),
+        );
+        let deck = parse(&text).unwrap_or_else(|e| panic!("{e}"));
+        let body = &deck.loaded.model.bodies[0];
+        assert_eq!(body.kind, BodyKind::Pinned(pin));
+        assert_eq!(body.position, hawser::math::Vec3::new(-10.0, 0.0, -75.0));
+        // The free rod's mass: w L = 77.7066 kg/m × 20 m.
+        assert!((body.mass - 77.7066 * 20.0).abs() < 1e-9, "{}", body.mass);
+        assert!(deck.scenario.bodies[0].pin.is_some());
+    }
+}
+
+/// A deck with a `CoupledPinned` body (OC3's buoy with its origin held by the host, 60 m
+/// down, its rotations free) converts to a pinned body on a coupled pin, solves its statics
+/// (the rotations only: the body tilts under the vessel chain's pull) and runs coupled: 3
+/// coupled degrees of freedom for the pin and 3 for the vessel point, as MoorDyn counts them.
+/// At the static start the force on the pin balances the body's own static load and the
+/// lines' (the pin takes what the body does not: wet weight (buoyant) and line pull), within
+/// 1e-3 of the buoyancy (the statics' acceptance), and the moment about the pin of those
+/// loads is small against the lines' moments (1e-3). After 1 s held still, the run is finite,
+/// the pin has not moved, and the pitch and the force on the pin (through the coupled forces)
+/// agree with MoorDyn 2.7.2's.
+#[test]
+fn coupled_pinned_body_converts_and_runs() {
+    use hawser::model::{BodyKind, Pin};
+    let text = mutate(
+        "buoy_oc3.txt",
+        "1    Free         0    0  -60",
+        "1    CoupledPinned 0   0  -60",
+    );
+    let mut deck = parse(&text).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(
+        deck.loaded.model.bodies[0].kind,
+        BodyKind::Pinned(Pin::Coupled)
+    );
+    let toml = toml::to_string(&deck.scenario).unwrap();
+    assert!(
+        toml.contains("type = \"pinned\"") && toml.contains("pin = \"coupled\""),
+        "{toml}"
+    );
+    moordyn::couple_deck_points(&mut deck.loaded);
+    let model = deck.loaded.model.clone();
+    let mut session = hawser::Session::new(model.clone()).unwrap();
+    assert_eq!(session.coupled_dofs(), 6);
+    let view = session.view().unwrap();
+    let k = *view.body(0);
+    assert!((k.position - hawser::math::Vec3::new(0.0, 0.0, -60.0)).norm() < 1e-12);
+    let tilt = k.orientation.angle();
+    let lines = view.body_line_load(0);
+    let own = model.bodies[0].loads(&k, &model.environment, 0.0);
+    let pin = view.pin_load(0).unwrap();
+    let balance = own.force + hawser::math::Vec3::new(lines[0], lines[1], lines[2]);
+    let moment = own.moment + hawser::math::Vec3::new(lines[3], lines[4], lines[5]);
+    let buoyancy = 1025.0 * 339.3 * model.environment.gravity;
+    let line_moment = hawser::math::Vec3::new(lines[3], lines[4], lines[5]).norm();
+    eprintln!(
+        "coupled pinned buoy: tilt {:.4} deg, pin load {pin:?}, own + lines {balance:?}, \
+         moment about the pin {:.3e} of the lines' {line_moment:.3e} N·m",
+        tilt.to_degrees(),
+        moment.norm()
+    );
+    assert!(tilt > 1e-3, "the vessel chain tilts the buoy");
+    assert!((pin - balance).norm() < 1e-3 * buoyancy);
+    assert!(moment.norm() < 1e-3 * line_moment);
+    let x0 = [0.0, 0.0, -60.0, -400.0, 0.0, 0.0];
+    let mut forces = [0.0; 6];
+    for k in 1..=10 {
+        let t1 = 0.1 * k as f64;
+        session.set_coupled(t1, &x0, &[0.0; 6], None).unwrap();
+        session.advance_to(t1).unwrap();
+        session.coupled_forces(&mut forces).unwrap();
+    }
+    assert!(forces.iter().all(|f| f.is_finite()));
+    let p = session.view().unwrap().body(0).position;
+    assert!((p - hawser::math::Vec3::new(0.0, 0.0, -60.0)).norm() < 1e-12);
+    // MoorDyn 2.7.2 on the same deck and host at t = 1 s (scripts/moordyn_pinned.py): pitch
+    // 8.49929°, force on the pin (−321462.55, 0, −37941.70) N. Within 0.01° and 1e-3 of the
+    // buoyancy ρ V g = 3.4 MN (the level at which the two codes' line discretisations agree
+    // on static tensions, 0.2 % of the lines' pull; measured 4e-5° and 6.3 N).
+    let moordyn_force = hawser::math::Vec3::new(-321462.55, 0.0, -37941.70);
+    let pitch = session.view().unwrap().body(0).orientation.euler_angles().1;
+    let pin = hawser::math::Vec3::new(forces[0], forces[1], forces[2]);
+    eprintln!(
+        "at 1 s: hawser pitch {:.5} deg, pin force {pin:?}; MoorDyn 2.7.2 8.49929 deg, \
+         {moordyn_force:?}: difference {:.3} N",
+        pitch.to_degrees(),
+        (pin - moordyn_force).norm()
+    );
+    assert!((pitch.to_degrees() - 8.49929).abs() < 0.01);
+    assert!((pin - moordyn_force).norm() < 1e-3 * buoyancy);
 }

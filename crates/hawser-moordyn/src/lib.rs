@@ -8,7 +8,10 @@
 //!   velocity through it ([`hawser::Session::set_coupled_constant_velocity`]); `*t` becomes
 //!   t + dt; `dt` ≤ 0 only returns the forces.
 //! - Forces: the net force of the lines' end nodes on each coupled point, without the nodes'
-//!   inertia (MoorDyn's `Fnet`); on each coupled body their force and moment about its origin.
+//!   inertia (MoorDyn's `Fnet`); on each coupled body their force and moment about its origin;
+//!   on each `CoupledPinned` body (3 entries in `x`, `xd` and `f`: its pin's position, velocity
+//!   and force) the force it puts on its pin, F6net − M a over the translations (MoorDyn's
+//!   `Body::getFnet`).
 //! - A coupled body's angles in `x` are MoorDyn's, R = R_x(r) R_y(p) R_z(y), turned into
 //!   hawser's roll, pitch, yaw of the same rotation.
 //! - Lines numbered from 1 in `MoorDyn_GetLine`; nodes from 0 (end A) to N (end B).
@@ -39,10 +42,10 @@ pub struct System {
     /// One handle per line, 1-based in `MoorDyn_GetLine`; each points back to the system.
     lines: Vec<Line>,
     /// The host's positions with every coupled body's angles in hawser's convention (sized
-    /// at creation; the coupled bodies come first, 6 entries each).
+    /// at creation; the coupled bodies come first, 6 entries each, 3 for a coupled pin).
     x: Vec<f64>,
-    /// Number of coupled bodies.
-    bodies: usize,
+    /// Offset in `x` of the angles of each coupled body with a pose (not of coupled pins).
+    angles: Vec<usize>,
 }
 
 impl System {
@@ -51,8 +54,8 @@ impl System {
     /// rotation (R = R_z R_y R_x). Angular velocities pass as they are (both global).
     fn hawser_positions(&mut self, x: &[f64]) -> &[f64] {
         self.x.copy_from_slice(x);
-        for k in 0..self.bodies {
-            let a = &mut self.x[6 * k + 3..6 * k + 6];
+        for &o in &self.angles {
+            let a = &mut self.x[o..o + 3];
             let q = Quat::from_axis_angle(&Vec3::x_axis(), a[0])
                 * Quat::from_axis_angle(&Vec3::y_axis(), a[1])
                 * Quat::from_axis_angle(&Vec3::z_axis(), a[2]);
@@ -169,15 +172,18 @@ pub unsafe extern "C" fn MoorDyn_Create(infilename: *const c_char) -> *mut Syste
         let file = unsafe { path(infilename, "Mooring/lines.txt") }?;
         let host = Host::open(Path::new(file))?;
         let n = host.lines();
-        let bodies = host
-            .model()
-            .bodies
-            .iter()
-            .filter(|b| b.kind == hawser::model::BodyKind::Coupled)
-            .count();
+        let mut angles = Vec::new();
+        let mut o = 0;
+        for b in &host.model().bodies {
+            let n = b.kind.coupled_dofs();
+            if n == 6 {
+                angles.push(o + 3);
+            }
+            o += n;
+        }
         let s = Box::into_raw(Box::new(System {
             x: vec![0.0; host.coupled_dofs()],
-            bodies,
+            angles,
             host,
             lines: Vec::with_capacity(n),
         }));

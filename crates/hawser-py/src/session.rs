@@ -7,7 +7,7 @@ use crate::convert::{array_n3, vec3};
 use crate::errors::{host_error, simulation_error};
 use crate::scenario::Scenario;
 use hawser::math::{Real, Vec3};
-use hawser::model::{BodyKind, PointKind};
+use hawser::model::PointKind;
 use hawser_capi::host::{Convention, Host};
 use numpy::{PyArray1, PyReadonlyArray1};
 use pyo3::exceptions::{PyIndexError, PyKeyError};
@@ -20,8 +20,9 @@ use std::sync::{Arc, Mutex};
 /// end of each coupling interval, advance to that time, read the forces of the lines on them.
 ///
 /// The flat layout of `x`, `xd` and the forces is MoorDyn's: every coupled body (x, y, z [m],
-/// roll, pitch, yaw [rad]; velocities [m/s, rad/s]), then every coupled point (x, y, z [m]),
-/// each in model order (`dof_names`). A MoorDyn deck's `Coupled`/`Vessel` points are coupled.
+/// roll, pitch, yaw [rad]; velocities [m/s, rad/s]; a body on a coupled pin, `CoupledPinned`,
+/// only its pin's x, y, z, and as force the one it puts on its pin), then every coupled point
+/// (x, y, z [m]), each in model order (`dof_names`). A MoorDyn deck's `Coupled`/`Vessel` points are coupled.
 ///
 /// ```python
 /// s = hawser.Session(hawser.load("tests/data/moordyn/oc3_lines.txt"))
@@ -70,8 +71,9 @@ impl Session {
         hawser_io::moordyn::couple_deck_points(&mut loaded);
         let model = &loaded.model;
         let mut dof_names = Vec::new();
-        for b in model.bodies.iter().filter(|b| b.kind == BodyKind::Coupled) {
-            for d in ["x", "y", "z", "roll", "pitch", "yaw"] {
+        // 6 per coupled body, 3 (the pin's x, y, z) per body on a coupled pin.
+        for b in &model.bodies {
+            for d in &hawser::analysis::channels::BODY_MOTION[..b.kind.coupled_dofs()] {
                 dof_names.push(format!("{}.{d}", b.name));
             }
         }
@@ -129,9 +131,10 @@ impl Session {
     fn model_positions(&self) -> Vec<Real> {
         let model = &self.model;
         let mut x = Vec::with_capacity(self.dof_names.len());
-        for b in model.bodies.iter().filter(|b| b.kind == BodyKind::Coupled) {
+        for b in &model.bodies {
             let (roll, pitch, yaw) = b.orientation.euler_angles();
-            x.extend_from_slice(&[b.position.x, b.position.y, b.position.z, roll, pitch, yaw]);
+            let pose = [b.position.x, b.position.y, b.position.z, roll, pitch, yaw];
+            x.extend_from_slice(&pose[..b.kind.coupled_dofs()]);
         }
         for p in model.points.iter().filter(|p| p.kind == PointKind::Coupled) {
             x.extend_from_slice(p.position.as_slice());
@@ -154,7 +157,8 @@ impl Session {
         self.scenario.clone_ref(py)
     }
 
-    /// Number of coupled degrees of freedom: 6 per coupled body, then 3 per coupled point.
+    /// Number of coupled degrees of freedom: 6 per coupled body (3 per body on a coupled pin),
+    /// then 3 per coupled point.
     #[getter]
     fn coupled_dofs(&self) -> usize {
         self.dof_names.len()

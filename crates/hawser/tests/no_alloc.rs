@@ -361,6 +361,50 @@ fn time_loop_does_not_allocate() {
     }
 }
 
+/// A pinned body (its pin on a prescribed 6-DOF table, turning freely) holding a line to an
+/// anchor: the pin's kinematics read at every stage, its rows held in the coupled solve and in
+/// generalized-α's Newton iterations, the pin put back into the state after every step.
+#[test]
+fn pinned_body_time_loop_does_not_allocate() {
+    let top = Vec3::new(0.0, 0.0, -10.0);
+    let mut model = single_line(
+        line_type(0.05, 20.0, 1.0e7),
+        50.0,
+        20,
+        fixed("anchor", top + Vec3::new(30.0, 0.0, -42.0)),
+        Point {
+            name: "lug".into(),
+            position: Vec3::zeros(),
+            kind: PointKind::Body {
+                body: 0,
+                offset: Vec3::new(0.0, 0.0, -2.0),
+            },
+        },
+        MassMatrix::Consistent,
+    );
+    let times: Vec<f64> = (0..=200).map(|i| -1.0 + 0.05 * i as f64).collect();
+    let positions: Vec<Vec3> = times
+        .iter()
+        .map(|t| top + Vec3::new(0.5 * (1.3 * t).sin(), 0.0, 0.2 * (0.7 * t).sin()))
+        .collect();
+    let motion = RigidMotion::TimeSeries(
+        RigidTimeSeries::new(times.clone(), &positions, &vec![[0.0; 3]; times.len()]).unwrap(),
+    );
+    model.bodies.push(Body {
+        position: top,
+        centre_of_gravity: Vec3::new(0.0, 0.0, -1.0),
+        kind: BodyKind::Pinned(Pin::Prescribed(motion)),
+        ..Body::new(
+            "arm",
+            500.0,
+            hawser::math::Mat3::from_diagonal(&Vec3::new(200.0, 200.0, 50.0)),
+        )
+    });
+    for scheme in [Scheme::Rk4, Scheme::GeneralizedAlpha] {
+        check("a pinned body on a prescribed pin", &model, scheme);
+    }
+}
+
 /// Reads every output channel and every line's samples at each sample, into buffers sized
 /// once: what a writer does.
 struct Reader {

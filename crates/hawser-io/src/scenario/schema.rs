@@ -939,6 +939,27 @@ pub enum BodyKindSpec {
     /// WEC-Sim); it starts at `position` and `orientation`, and the loads of the lines on it
     /// are read back. Run alone (the CLI), it stays at its starting pose.
     Coupled,
+    /// Pinned at its origin: the origin moves as its `pin` says (fixed at `position`, on a
+    /// prescribed `motion`, or set by a coupling host), the three rotations are free and
+    /// integrated with the lines (MoorDyn's `CoupledPinned` bodies, `Pinned` rods). Needs
+    /// `mass` and `inertia` like a free body.
+    Pinned,
+}
+
+/// How the pin of a `pinned` body moves.
+#[derive(Clone, Copy, Debug, Deserialize, Serialize, JsonSchema, PartialEq, Eq, Default)]
+#[serde(rename_all = "kebab-case")]
+pub enum PinSpec {
+    /// Held at the body's `position` (the default).
+    #[default]
+    Fixed,
+    /// On the body's `motion` (any rigid motion a prescribed body takes): the pin follows the
+    /// motion's origin; the motion's orientation is not used.
+    Prescribed,
+    /// Set by a host program at each coupling step (three translations), starting at
+    /// `position`; the force the body puts on its pin is read back. Run alone (the CLI), the
+    /// pin stays at `position`.
+    Coupled,
 }
 
 /// `[[bodies.members]]`: a rigid cylinder on the body with side drag and added mass along it,
@@ -1086,13 +1107,20 @@ pub struct BodySpec {
     /// Name, used for channels and results.
     #[schemars(with = "String")]
     pub name: Spanned<String>,
-    /// `"free"`, `"fixed"` or `"prescribed"`.
+    /// `"free"`, `"fixed"`, `"prescribed"`, `"coupled"` or `"pinned"`.
     #[serde(rename = "type")]
     #[schemars(with = "BodyKindSpec")]
     pub kind: Spanned<BodyKindSpec>,
+    /// The pin of a `pinned` body: `"fixed"` (default, at `position`), `"prescribed"` (on
+    /// `motion`) or `"coupled"` (set by a coupling host).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<PinSpec>")]
+    pub pin: Option<Spanned<PinSpec>>,
     /// The motion of a `prescribed` body: `fixed`, `constant-velocity`, `manoeuvre`,
     /// `vessel-motion` or `rao`, with the keys of `[points.motion]`; it places the body
     /// origin (`start`, `heading` or the file), so `position` and `orientation` are not given.
+    /// The motion of the pin of a `pinned` body with `pin = "prescribed"`: it places the pin
+    /// (so `position` is not given); `orientation` gives the body's initial orientation.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub motion: Option<MotionSpec>,
     /// Position of the body origin [m] (at t = 0 for free bodies; not for prescribed ones).
@@ -1104,8 +1132,8 @@ pub struct BodySpec {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<[f64; 3]>")]
     pub orientation: Option<Spanned<[f64; 3]>>,
-    /// Mass [kg]: required for a free body; a fixed, prescribed or coupled body may leave it
-    /// out (its own loads are not computed; default 0).
+    /// Mass [kg]: required for a free or pinned body; a fixed, prescribed or coupled body may
+    /// leave it out (its own loads are not computed; default 0).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<f64>")]
     pub mass: Option<Spanned<f64>>,
@@ -1114,7 +1142,7 @@ pub struct BodySpec {
     #[schemars(with = "Option<[f64; 3]>")]
     pub centre_of_gravity: Option<Spanned<[f64; 3]>>,
     /// Inertia about the centre of gravity in body axes [kg·m²]: [Ixx, Iyy, Izz] or a full
-    /// symmetric 3×3 tensor; required for a free body, default 0 for the others.
+    /// symmetric 3×3 tensor; required for a free or pinned body, default 0 for the others.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<InertiaSpec>")]
     pub inertia: Option<Spanned<InertiaSpec>>,

@@ -243,8 +243,14 @@ pub struct Modes {
 
 /// Whether the modes of this system can be computed and labelled: no `dg` line (its unknowns
 /// are modal coefficients, not linearised; compute the modes of [`modal_twin`] instead). `fe`
-/// and `hermite` lines, free points and free bodies are. Call it before linearising.
+/// and `hermite` lines, free points and free bodies are; pinned bodies are not (their
+/// translations are not degrees of freedom of the linearisation). Call it before linearising.
 pub fn supported(system: &System) -> Result<(), ModalError> {
+    if let Some(b) = system.bodies.iter().find(|b| b.body.kind.pin().is_some()) {
+        return Err(ModalError::PinnedBody {
+            body: b.body.name.clone(),
+        });
+    }
     match system.lines.iter().find(|l| l.dg().is_some()) {
         Some(l) => Err(ModalError::Unsupported {
             line: l.name.clone(),

@@ -3,7 +3,8 @@
 //!
 //! # State
 //!
-//! A free body owns [`STATE_LEN`] = 13 numbers of the state vector:
+//! A free body (and a pinned one, [`pinned`]) owns [`STATE_LEN`] = 13 numbers of the state
+//! vector:
 //!
 //! | index | quantity | unit |
 //! |---|---|---|
@@ -33,11 +34,13 @@ mod contact;
 mod hydrostatics;
 mod loads;
 mod members;
+mod pinned;
 
 pub use contact::SeabedContact;
 pub use hydrostatics::{CYLINDER_SIDES, Section, Wetted, wetted_prism};
 pub use loads::BodyLoads;
 pub use members::member_loads;
+pub use pinned::{follow_pin, initial_pin, pin_force, pin_kinematics};
 
 use crate::math::{Quat, Real, Vec3};
 use crate::model::RigidKinematics;

@@ -664,6 +664,8 @@ impl GeneralizedAlpha {
             let o = system.layout.body_offset[b].expect("free body");
             let u = Vec6::from_fn(|r, _| trial[o + 7 + r]);
             self.solver.body_x[f] = ws.coupled.body_x[f] - ws.coupled.body_diag[f] * u;
+            // A pinned body's translations: the correction that puts them on the pin.
+            self.solver.body_pin[f] = ws.coupled.body_pin[f].map(|a| a - get3(&trial[o + 7..], 0));
         }
     }
 
@@ -754,6 +756,8 @@ impl GeneralizedAlpha {
             let o = system.layout.body_offset[b].expect("free body");
             let u = Vec6::from_fn(|r, _| c * (trial[o + 7 + r] - acceleration[o + 7 + r]));
             self.solver.body_x[f] = ws.coupled.body_diag[f] * u;
+            // A pinned body's translations follow its pin exactly.
+            self.solver.body_pin[f] = ws.coupled.body_pin[f].map(|_| Vec3::zeros());
         }
         self.solve(system)?;
         let mut worst: Real = 0.0;

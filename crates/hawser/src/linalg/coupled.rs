@@ -241,6 +241,11 @@ pub struct CoupledSystem {
     /// The bodies' own right-hand sides [force; moment about the origin] on input; their
     /// solution [a_o; α] on output.
     pub body_x: Vec<Vec6>,
+    /// Per body, the known translational unknowns of a pinned body ([`crate::bodies`]'s
+    /// pinned bodies): `Some(a)` replaces the body's three force rows by a_o = a (the pin's
+    /// acceleration, or a Newton increment), keeping its rotational rows; `None` for a free
+    /// body. Set before each solve, like `body_x`.
+    pub body_pin: Vec<Option<Vec3>>,
     /// The body-point slots, numbered after the free points; set offsets and biases before
     /// each solve.
     pub body_slots: Vec<BodySlot>,
@@ -268,6 +273,7 @@ impl CoupledSystem {
             point_x: vec![Vec3::zeros(); points],
             body_diag: vec![Mat6::zeros(); bodies],
             body_x: vec![Vec6::zeros(); bodies],
+            body_pin: vec![None; bodies],
             body_slots: vec![BodySlot::default(); slots],
             slot_x: vec![Vec3::zeros(); points + slots],
             lu: DenseLu::new(n),
@@ -602,7 +608,17 @@ impl CoupledSystem {
                 }
             }
         }
-        // 3. Solve the points and bodies.
+        // 3. Solve the points and bodies, a pinned body's translations held.
+        for k in 0..self.body_diag.len() {
+            let Some(a) = self.body_pin[k] else { continue };
+            let o = self.body_row(k);
+            for r in 0..3 {
+                if self.factoring {
+                    self.lu.identity_row(o + r);
+                }
+                self.b[o + r] = a[r];
+            }
+        }
         if !self.b.is_empty() {
             if self.factoring {
                 self.lu

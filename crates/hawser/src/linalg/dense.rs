@@ -33,6 +33,12 @@ impl DenseLu {
     pub fn add(&mut self, i: usize, j: usize, v: Real) {
         self.a[i * self.n + j] += v;
     }
+    /// Replaces row i by the identity's (the equation x_i = b_i).
+    pub fn identity_row(&mut self, i: usize) {
+        let n = self.n;
+        self.a[i * n..(i + 1) * n].iter_mut().for_each(|x| *x = 0.0);
+        self.a[i * n + i] = 1.0;
+    }
     /// Factorises in place; `Err(k)` on a zero pivot in column k.
     pub fn factor(&mut self) -> Result<(), usize> {
         let n = self.n;

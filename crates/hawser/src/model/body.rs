@@ -20,6 +20,52 @@ pub enum BodyKind {
     /// or WEC-Sim): its pose starts at the body's `position` and `orientation`, and the loads
     /// of the lines on it are read back ([`crate::Session::body_reaction`]).
     Coupled,
+    /// Pinned at its origin (the reference point): the origin moves as the [`Pin`] says, the
+    /// three rotations are free and integrated with the lines (MoorDyn's `CoupledPinned`
+    /// bodies and `Pinned` rods). Its equations are the rotational rows of the free body's
+    /// about the pin ([`crate::bodies`], "Pinned bodies"); the pin supplies the force that
+    /// keeps the origin on its track ([`crate::Session::pin_reaction`]).
+    Pinned(Pin),
+}
+
+impl BodyKind {
+    /// Whether the body has rotations of its own to integrate: a free or a pinned body (it
+    /// then owns a block of the state and a row block of the coupled system).
+    pub fn integrates(&self) -> bool {
+        matches!(self, BodyKind::Free | BodyKind::Pinned(_))
+    }
+
+    /// Degrees of freedom a coupling host sets for a body of this kind: 6 for a coupled body
+    /// (pose), 3 for a body on a coupled pin (the pin's position), 0 otherwise (MoorDyn's
+    /// layout: a `CoupledPinned` body takes 3 entries).
+    pub fn coupled_dofs(&self) -> usize {
+        match self {
+            BodyKind::Coupled => 6,
+            BodyKind::Pinned(Pin::Coupled) => 3,
+            _ => 0,
+        }
+    }
+
+    /// The pin's motion of a pinned body, `None` for other kinds.
+    pub fn pin(&self) -> Option<&Pin> {
+        match self {
+            BodyKind::Pinned(p) => Some(p),
+            _ => None,
+        }
+    }
+}
+
+/// How the pin of a [`BodyKind::Pinned`] body moves: the motion of the body's origin.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Pin {
+    /// Held at the body's `position`.
+    Fixed,
+    /// On a prescribed rigid motion: the pin follows the motion's origin (position, velocity
+    /// and acceleration); the motion's orientation is not used (the body turns freely).
+    Prescribed(RigidMotion),
+    /// Set by a host program at each coupling step (three translations, MoorDyn's
+    /// `CoupledPinned`), starting at the body's `position`.
+    Coupled,
 }
 
 /// The volume a body displaces, for buoyancy and hydrostatic restoring.
@@ -273,9 +319,9 @@ impl Body {
     /// why. [`super::Model::validate`] calls it.
     pub fn check(&self) -> Result<(), (&'static str, String)> {
         let finite3 = |v: &Vec3| v.iter().all(|x| x.is_finite());
-        // Only a free body's mass and inertia enter its motion; a fixed, prescribed or
-        // coupled one may leave them zero (MoorDyn's coupled bodies do).
-        let free = self.kind == BodyKind::Free;
+        // Only a free or pinned body's mass and inertia enter its motion; a fixed, prescribed
+        // or coupled one may leave them zero (MoorDyn's coupled bodies do).
+        let free = self.kind.integrates();
         if !self.mass.is_finite() || !(self.mass > 0.0 || (!free && self.mass == 0.0)) {
             return Err((
                 "mass",

@@ -11,7 +11,7 @@ mod rigid_motion;
 mod steady_tow;
 mod winch;
 
-pub use body::{Body, BodyKind, Displacement, DragSpeed, Member, Thrust, Wind};
+pub use body::{Body, BodyKind, Displacement, DragSpeed, Member, Pin, Thrust, Wind};
 pub use coupled::{BodyTrack, PointTrack, couple_prescribed_points};
 pub use line::{Formulation, Line, LineEnd, LineType, MassMatrix, Section, StrainMeasure};
 pub use motion::{Motion, ramp};

@@ -69,10 +69,15 @@ impl Session {
             _ => t1,
         };
         let h = t1 - t0;
-        let nb = self.coupling.bodies.len();
-        for k in 0..nb {
+        // Per body 6 entries, or 3 for a coupled pin (its angles then stay zero: unused).
+        let mut o = 0;
+        for k in 0..self.coupling.bodies.len() {
             let b = self.coupling.bodies[k];
-            let (p, v) = (&x[6 * k..6 * k + 6], &xd[6 * k..6 * k + 6]);
+            let n = self.coupled_body_dofs(b);
+            let (mut p, mut v) = ([0.0; 6], [0.0; 6]);
+            p[..n].copy_from_slice(&x[o..o + n]);
+            v[..n].copy_from_slice(&xd[o..o + n]);
+            o += n;
             let (q0, _, _) = euler_kinematics([p[3], p[4], p[5]], [0.0; 3], [0.0; 3]);
             let (x0, v0, w0) = (
                 Vec3::new(p[0], p[1], p[2]),
@@ -101,7 +106,7 @@ impl Session {
         }
         for k in 0..self.coupling.points.len() {
             let p = self.coupling.points[k];
-            let o = 6 * nb + 3 * k;
+            let o = o + 3 * k;
             let x0 = Vec3::new(x[o], x[o + 1], x[o + 2]);
             let v0 = Vec3::new(xd[o], xd[o + 1], xd[o + 2]);
             self.set_point_kinematics(p, t1, x0 + v0 * h, v0, None)?;

@@ -10,7 +10,7 @@ use super::Session;
 use super::stepper::Saved;
 use crate::error::SimulationError;
 use crate::math::{Real, Vec3};
-use crate::model::{BodyKind, PointKind, RigidKinematics, euler_kinematics};
+use crate::model::{PointKind, RigidKinematics, euler_kinematics};
 
 /// The coupled objects and the interval in progress.
 #[derive(Clone, Debug, Default)]
@@ -31,7 +31,7 @@ impl Coupling {
     pub(crate) fn of(model: &crate::Model) -> Self {
         Self {
             bodies: (0..model.bodies.len())
-                .filter(|&b| model.bodies[b].kind == BodyKind::Coupled)
+                .filter(|&b| model.bodies[b].kind.coupled_dofs() > 0)
                 .collect(),
             points: (0..model.points.len())
                 .filter(|&p| model.points[p].kind == PointKind::Coupled)
@@ -51,15 +51,29 @@ impl Session {
         &self.coupling.points
     }
 
-    /// Indices of the coupled bodies ([`BodyKind::Coupled`]), in model order.
+    /// Indices of the coupled bodies ([`crate::model::BodyKind::Coupled`], and the pinned bodies whose pin
+    /// is coupled, [`crate::model::Pin::Coupled`]), in model order.
     pub fn coupled_bodies(&self) -> &[usize] {
         &self.coupling.bodies
     }
 
+    /// Coupled degrees of freedom of body `body`: 6 for a coupled body, 3 (the pin's
+    /// translations) for a body on a coupled pin ([`crate::model::BodyKind::coupled_dofs`]).
+    pub fn coupled_body_dofs(&self, body: usize) -> usize {
+        self.system.bodies[body].body.kind.coupled_dofs()
+    }
+
     /// Number of coupled degrees of freedom in the layout of [`Session::set_coupled`]: 6 per
-    /// coupled body, then 3 per coupled point (MoorDyn's order).
+    /// coupled body or 3 per body on a coupled pin, in model order, then 3 per coupled point
+    /// (MoorDyn's order: a `CoupledPinned` body takes 3 entries).
     pub fn coupled_dofs(&self) -> usize {
-        6 * self.coupling.bodies.len() + 3 * self.coupling.points.len()
+        let bodies: usize = self
+            .coupling
+            .bodies
+            .iter()
+            .map(|&b| self.coupled_body_dofs(b))
+            .sum();
+        bodies + 3 * self.coupling.points.len()
     }
 
     /// Opens the coupling interval that ends at `t1` [s], or reopens it: a first call for a
@@ -166,6 +180,8 @@ impl Session {
 
     /// Sets the pose and velocities of coupled body `body` at time `t1` [s], and its
     /// accelerations when `accelerations` (otherwise they follow from the interpolation).
+    /// For a body on a coupled pin, only the translation (position, velocity, acceleration of
+    /// the pin) is used: its rotations are its own.
     pub fn set_body_kinematics(
         &mut self,
         body: usize,
@@ -210,7 +226,8 @@ impl Session {
     /// Sets every coupled object's kinematics at `t1` [s] from flat arrays in the layout of
     /// [`Session::coupled_dofs`]: per coupled body x, y, z [m], roll, pitch, yaw [rad]
     /// (R = R_z(yaw) R_y(pitch) R_x(roll)) in `x` and the velocity [m/s] and angular velocity
-    /// [rad/s, global axes] in `xd`; then per coupled point x, y, z [m] and its velocity.
+    /// [rad/s, global axes] in `xd` (per body on a coupled pin, the pin's x, y, z and its
+    /// velocity only); then per coupled point x, y, z [m] and its velocity.
     /// `xdd`, if given, holds the accelerations in the layout of `xd` (the interpolants are
     /// then quintic, exact for the motions hosts usually prescribe).
     pub fn set_coupled(
@@ -230,15 +247,19 @@ impl Session {
                 xdd.map_or(n, |a| a.len())
             )));
         }
-        let nb = self.coupling.bodies.len();
-        for k in 0..nb {
+        let mut o = 0;
+        for k in 0..self.coupling.bodies.len() {
             let b = self.coupling.bodies[k];
-            let (p, v) = (&x[6 * k..6 * k + 6], &xd[6 * k..6 * k + 6]);
-            let a = xdd.map_or([0.0; 6], |a| {
-                let mut o = [0.0; 6];
-                o.copy_from_slice(&a[6 * k..6 * k + 6]);
-                o
-            });
+            let n = self.coupled_body_dofs(b);
+            let mut p = [0.0; 6];
+            let mut v = [0.0; 6];
+            let mut a = [0.0; 6];
+            p[..n].copy_from_slice(&x[o..o + n]);
+            v[..n].copy_from_slice(&xd[o..o + n]);
+            if let Some(xdd) = xdd {
+                a[..n].copy_from_slice(&xdd[o..o + n]);
+            }
+            o += n;
             let (orientation, _, _) = euler_kinematics([p[3], p[4], p[5]], [0.0; 3], [0.0; 3]);
             let kinematics = RigidKinematics {
                 position: Vec3::new(p[0], p[1], p[2]),
@@ -252,7 +273,7 @@ impl Session {
         }
         for k in 0..self.coupling.points.len() {
             let p = self.coupling.points[k];
-            let o = 6 * nb + 3 * k;
+            let o = o + 3 * k;
             self.set_point_kinematics(
                 p,
                 t1,
@@ -300,8 +321,27 @@ impl Session {
         Ok(self.view()?.body_line_load(body))
     }
 
+    /// The force [N] pinned body `body` exerts on its pin at the session's time, global axes
+    /// ([`crate::View::pin_load`]): its weight, buoyancy, hydrodynamic and line loads less its
+    /// inertia, over the translations.
+    pub fn pin_load(&mut self, body: usize) -> Result<Vec3, SimulationError> {
+        if body >= self.system.bodies.len() {
+            return Err(coupling_error(format!(
+                "there is no body #{body} (the model has {})",
+                self.system.bodies.len()
+            )));
+        }
+        let name = self.system.bodies[body].body.name.clone();
+        self.view()?.pin_load(body).ok_or_else(|| {
+            coupling_error(format!(
+                "body {name} (#{body}) is not pinned: it has no pin load"
+            ))
+        })
+    }
+
     /// The loads on every coupled object in the layout of [`Session::coupled_dofs`]: per
-    /// coupled body its force [N] and moment about its origin [N·m], per coupled point its
+    /// coupled body its force [N] and moment about its origin [N·m] (per body on a coupled
+    /// pin, the force it exerts on its pin, [`Session::pin_load`]), per coupled point its
     /// force [N], all in global axes.
     pub fn coupled_forces(&mut self, forces: &mut [Real]) -> Result<(), SimulationError> {
         let n = self.coupled_dofs();
@@ -312,14 +352,22 @@ impl Session {
                 forces.len()
             )));
         }
-        let nb = self.coupling.bodies.len();
-        for k in 0..nb {
-            let load = self.body_reaction(self.coupling.bodies[k])?;
-            forces[6 * k..6 * k + 6].copy_from_slice(&load);
+        let mut o = 0;
+        for k in 0..self.coupling.bodies.len() {
+            let b = self.coupling.bodies[k];
+            if self.coupled_body_dofs(b) == 3 {
+                let f = self.pin_load(b)?;
+                forces[o..o + 3].copy_from_slice(f.as_slice());
+                o += 3;
+            } else {
+                let load = self.body_reaction(b)?;
+                forces[o..o + 6].copy_from_slice(&load);
+                o += 6;
+            }
         }
         for k in 0..self.coupling.points.len() {
             let f = self.point_reaction(self.coupling.points[k])?;
-            let o = 6 * nb + 3 * k;
+            let o = o + 3 * k;
             forces[o..o + 3].copy_from_slice(f.as_slice());
         }
         Ok(())

@@ -444,6 +444,7 @@ impl Stepper {
             self.evaluated_at = None;
             return Err(e);
         }
+        system.hold_pins(self.clock.time(), &mut self.state, &self.ws);
         Ok(())
     }
 

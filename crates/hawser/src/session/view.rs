@@ -150,6 +150,24 @@ impl<'a> View<'a> {
         load
     }
 
+    /// The force [N] pinned body `body` exerts on its pin, global axes: −R with R the pin's
+    /// force on the body, R = M_tt a_pin + M_tr α − F over the body's own loads and the
+    /// lines' load on it ([`crate::bodies::pin_force`]); what a coupling host holding the pin
+    /// feels (MoorDyn's forces of a `CoupledPinned` body). `None` unless the body is pinned.
+    pub fn pin_load(&self, body: usize) -> Option<Vec3> {
+        let b = &self.system.bodies[body].body;
+        b.kind.pin()?;
+        let k = &self.workspace.bodies[body];
+        let own = b.loads(k, &self.system.environment, self.time);
+        let lines = crate::math::Vec6::from_column_slice(&self.body_line_load(body));
+        Some(-crate::bodies::pin_force(
+            &own.mass,
+            &own.generalized(),
+            &lines,
+            k,
+        ))
+    }
+
     /// Net force [N] the attached lines exert on point `point` (the sum of their end-node
     /// forces, [`Channel::PointForce`]).
     pub fn point_line_force(&self, point: usize) -> Vec3 {

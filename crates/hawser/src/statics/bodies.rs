@@ -9,6 +9,10 @@
 //! without static stiffness (a cage's yaw on a single bridle) stays where it is. Rotations
 //! move at most 0.2 rad per iteration (to the nearby stable pose, not an inverted one).
 //!
+//! A pinned body ([`crate::model::BodyKind::Pinned`]) keeps its origin on its pin: its three
+//! rotations are unknowns, its translations are not (their residual, the pin's force, is
+//! left out).
+//!
 //! Start the bodies where their lines are taut: where a line is slack the residual has no
 //! slope along it and Newton cannot move the body (reported as not converged, with a hint).
 
@@ -58,8 +62,10 @@ fn residual(
                 }
             }
         }
+        // A pinned body's pin takes the force: only its moment about the pin is unbalanced.
+        let pinned = system.bodies[b].body.kind.pin().is_some();
         for i in 0..3 {
-            r[6 * f + i] = force[i];
+            r[6 * f + i] = if pinned { 0.0 } else { force[i] };
             r[6 * f + 3 + i] = moment[i];
         }
     }
@@ -75,7 +81,10 @@ fn moved(
     let mut out = poses.to_vec();
     for (f, &b) in system.free_bodies.iter().enumerate() {
         let d = |i| Vec3::new(delta[6 * f + i], delta[6 * f + i + 1], delta[6 * f + i + 2]);
-        out[b].position += d(0);
+        // A pinned body turns about its pin, which stays where the pin is at t = 0.
+        if system.bodies[b].body.kind.pin().is_none() {
+            out[b].position += d(0);
+        }
         out[b].orientation = Quat::from_scaled_axis(d(3)) * out[b].orientation;
     }
     out

@@ -66,7 +66,8 @@ pub struct System {
     pub free_points: Vec<usize>,
     /// Rigid bodies.
     pub bodies: Vec<SystemBody>,
-    /// Indices of the free bodies.
+    /// Indices of the free and pinned bodies: those with rotations to integrate, a block of
+    /// the state and a row block of the coupled system ([`crate::model::BodyKind::integrates`]).
     pub free_bodies: Vec<usize>,
     /// Per point: its slot in the coupled system when it is on a free body (numbered after
     /// the free points, see [`crate::linalg::CoupledSystem`]).
@@ -92,13 +93,28 @@ pub struct SystemBody {
 
 impl SystemBody {
     /// Kinematics at t = 0: a free or coupled body at rest at its initial pose, a prescribed
-    /// body on its motion.
+    /// body on its motion, a pinned body at its initial orientation at rest about its pin,
+    /// the pin on its motion.
     pub fn initial_kinematics(&self) -> crate::model::RigidKinematics {
         match &self.body.kind {
             crate::model::BodyKind::Free | crate::model::BodyKind::Coupled => {
                 crate::model::RigidKinematics::at_rest(self.body.position, self.body.orientation)
             }
             crate::model::BodyKind::Prescribed(m) => m.kinematics(0.0),
+            crate::model::BodyKind::Pinned(pin) => {
+                let mut k = crate::model::RigidKinematics::at_rest(
+                    self.body.position,
+                    self.body.orientation,
+                );
+                let track = matches!(pin, crate::model::Pin::Coupled).then(|| {
+                    crate::model::BodyTrack::at_rest(self.body.position, self.body.orientation)
+                });
+                crate::bodies::follow_pin(
+                    &mut k,
+                    crate::bodies::pin_kinematics(pin, &self.body.position, track.as_ref(), 0.0),
+                );
+                k
+            }
         }
     }
 }
@@ -286,7 +302,7 @@ impl System {
         let mut free_bodies = Vec::new();
         let mut body_offset = vec![None; bodies.len()];
         for (i, b) in bodies.iter_mut().enumerate() {
-            if b.body.kind == crate::model::BodyKind::Free {
+            if b.body.kind.integrates() {
                 b.free_index = Some(free_bodies.len());
                 free_bodies.push(i);
                 body_offset[i] = Some(len);

@@ -82,13 +82,25 @@ impl System {
     /// evaluation ([`SystemLine::evaluate`]).
     /// Bodies first: free ones from the state (accelerations from the last solve are kept
     /// only by [`System::rhs`]), prescribed ones from their motion, coupled ones from the
-    /// host's track in `ws.coupling`; points on bodies follow.
+    /// host's track in `ws.coupling`, pinned ones turned as the state says about their pin's
+    /// position, velocity and acceleration at t; points on bodies follow.
     pub fn point_kinematics(&self, t: Real, y: &[Real], ws: &mut Workspace) {
         for (b, body) in self.bodies.iter().enumerate() {
             ws.bodies[b] = match (&body.body.kind, self.layout.body_offset[b]) {
+                (crate::model::BodyKind::Pinned(pin), Some(o)) => {
+                    let mut k = crate::bodies::read_state(&y[o..o + crate::bodies::STATE_LEN]);
+                    let track = ws.coupling.bodies[b].as_ref();
+                    crate::bodies::follow_pin(
+                        &mut k,
+                        crate::bodies::pin_kinematics(pin, &body.body.position, track, t),
+                    );
+                    k
+                }
                 (_, Some(o)) => crate::bodies::read_state(&y[o..o + crate::bodies::STATE_LEN]),
                 (crate::model::BodyKind::Prescribed(m), None) => m.kinematics(t),
-                (crate::model::BodyKind::Free, None) => body.initial_kinematics(),
+                (crate::model::BodyKind::Free | crate::model::BodyKind::Pinned(_), None) => {
+                    body.initial_kinematics()
+                }
                 (crate::model::BodyKind::Coupled, None) => ws.coupling.bodies[b]
                     .as_ref()
                     .expect("a coupled body has a track")
@@ -140,6 +152,25 @@ impl System {
                     }
                 }
             };
+        }
+    }
+
+    /// Puts the position [m] and velocity [m/s] of each pinned body's pin at time t [s] into
+    /// the body's translational state entries, which the integrator carries along the pin's
+    /// velocity and acceleration only up to its error (and from whatever velocity the state
+    /// started with): the stepper calls it after every step, so the state holds the pin exactly
+    /// (the physics reads the pin's motion anyway, [`System::point_kinematics`]).
+    pub fn hold_pins(&self, t: Real, y: &mut [Real], ws: &Workspace) {
+        for &b in &self.free_bodies {
+            let body = &self.bodies[b].body;
+            let Some(pin) = body.kind.pin() else {
+                continue;
+            };
+            let o = self.layout.body_offset[b].expect("a pinned body has a state block");
+            let track = ws.coupling.bodies[b].as_ref();
+            let (x, v, _) = crate::bodies::pin_kinematics(pin, &body.position, track, t);
+            y[o..o + 3].copy_from_slice(x.as_slice());
+            y[o + 7..o + 10].copy_from_slice(v.as_slice());
         }
     }
 
@@ -319,8 +350,9 @@ impl System {
         self.assemble_bodies(t, ws);
     }
 
-    /// Each free body's own loads and 6×6 mass as its block of the coupled system, and the
-    /// offsets and centripetal accelerations of its points' slots. (A prescribed body's own
+    /// Each free body's own loads and 6×6 mass as its block of the coupled system (a pinned
+    /// body's translations held at its pin's acceleration), and the offsets and centripetal
+    /// accelerations of its points' slots. (A prescribed body's own
     /// loads do not enter the equations: its points are known ends.)
     fn assemble_bodies(&self, t: Real, ws: &mut Workspace) {
         for (f, &b) in self.free_bodies.iter().enumerate() {
@@ -329,6 +361,11 @@ impl System {
                 .loads(&ws.bodies[b], &self.environment, t);
             ws.coupled.body_diag[f] = loads.mass;
             ws.coupled.body_x[f] = loads.generalized();
+            ws.coupled.body_pin[f] = self.bodies[b]
+                .body
+                .kind
+                .pin()
+                .map(|_| ws.bodies[b].acceleration);
         }
         let np = self.free_points.len();
         for (p, slot) in self.point_slot.iter().enumerate() {

@@ -123,7 +123,12 @@ impl System {
                     .bodies
                     .iter()
                     .map(|b| {
-                        matches!(b.body.kind, crate::model::BodyKind::Coupled).then(|| {
+                        matches!(
+                            b.body.kind,
+                            crate::model::BodyKind::Coupled
+                                | crate::model::BodyKind::Pinned(crate::model::Pin::Coupled)
+                        )
+                        .then(|| {
                             crate::model::BodyTrack::at_rest(b.body.position, b.body.orientation)
                         })
                     })

@@ -50,6 +50,34 @@ pub(super) enum DeckBodyKind {
     Fixed,
     /// `Coupled`, `Vessel`, `Ves`, `Cpld`: moved by the host program.
     Coupled,
+    /// `CoupledPinned`, `VesselPinned`, `VesPin`, `CpldPin`: its origin moved by the host
+    /// program (three translations), its rotations free (MoorDyn's `CPLDPIN`).
+    CoupledPinned,
+    /// A rod's `Pinned` (`Pin`): its end A held where it is, its rotations free.
+    Pinned,
+}
+
+impl DeckBodyKind {
+    /// The pin of a pinned body: fixed (a rod's `Pinned`), coupled (`CoupledPinned`), or on
+    /// the vessel's motion (`CoupledPinned` with `--vessel-motion`); `None` for other kinds.
+    pub(super) fn pin(self, on_motion: bool) -> Option<PinSpec> {
+        match self {
+            DeckBodyKind::Pinned => Some(PinSpec::Fixed),
+            DeckBodyKind::CoupledPinned if on_motion => Some(PinSpec::Prescribed),
+            DeckBodyKind::CoupledPinned => Some(PinSpec::Coupled),
+            _ => None,
+        }
+    }
+
+    /// Whether the body moves under its own loads (in some degrees of freedom): a free or a
+    /// pinned body, whose mass, inertia, volume and hydrodynamics count (MoorDyn keeps them
+    /// for `FREE` and `CPLDPIN` bodies and zeroes them for the others).
+    pub(super) fn moves(self) -> bool {
+        matches!(
+            self,
+            DeckBodyKind::Free | DeckBodyKind::CoupledPinned | DeckBodyKind::Pinned
+        )
+    }
 }
 
 /// A body of the scenario with its name, kind, motion and pose, and no mass, hydrodynamics or
@@ -64,6 +92,7 @@ pub(super) fn bare_body(
     BodySpec {
         name,
         kind,
+        pin: None,
         motion,
         position,
         orientation,
@@ -227,23 +256,7 @@ pub(super) fn convert_bodies(
             "fixed" | "fix" | "anchor" => Some(DeckBodyKind::Fixed),
             "coupled" | "vessel" | "ves" | "cpld" => Some(DeckBodyKind::Coupled),
             "coupledpinned" | "vesselpinned" | "vespin" | "cpldpin" => {
-                let d = c
-                    .diag(
-                        Some(t[1].span.clone()),
-                        &format!("{S} › {id} › Attachment"),
-                        format!(
-                            "body {id} is `{}`: its translation is the host's and its rotation \
-                             free, a body hawser does not model",
-                            t[1].text
-                        ),
-                    )
-                    .expected("Free, Fixed or Coupled (Vessel)")
-                    .hint(
-                        "make it `Coupled` to drive all six degrees of freedom from the host, or \
-                         `Free` to let it move under its lines",
-                    );
-                c.errors.push(d);
-                None
+                Some(DeckBodyKind::CoupledPinned)
             }
             _ => {
                 let d = c
@@ -252,10 +265,14 @@ pub(super) fn convert_bodies(
                         &format!("{S} › {id} › Attachment"),
                         format!("unknown body type `{}`", t[1].text),
                     )
-                    .expected("Free, Fixed (Fix, Anchor) or Coupled (Vessel, Ves, Cpld)")
+                    .expected(
+                        "Free, Fixed (Fix, Anchor), Coupled (Vessel, Ves, Cpld) or \
+                         CoupledPinned (VesselPinned, VesPin, CpldPin)",
+                    )
                     .hint(
                         "MoorDyn body types: Free (moves under its loads), Fixed (held), \
-                         Coupled (moved by the host program)",
+                         Coupled (moved by the host program), CoupledPinned (its origin moved \
+                         by the host, turning freely)",
                     );
                 c.errors.push(d);
                 None
@@ -323,7 +340,7 @@ pub(super) fn convert_bodies(
         let orientation = Spanned::new(t[5].span.start..t[7].span.end, rotated);
         let (cg, inertia) = (cg.unwrap_or_default(), inertia.unwrap_or_default());
         let (cda, ca) = (cda.unwrap_or_default(), ca.unwrap_or_default());
-        let free = kind == DeckBodyKind::Free;
+        let free = kind.moves();
         if !free
             && (mass != 0.0
                 || volume != 0.0
@@ -346,6 +363,34 @@ pub(super) fn convert_bodies(
         let (spec_kind, motion) = match kind {
             DeckBodyKind::Free => (BodyKindSpec::Free, None),
             DeckBodyKind::Fixed => (BodyKindSpec::Fixed, None),
+            DeckBodyKind::Pinned => (BodyKindSpec::Pinned, None),
+            DeckBodyKind::CoupledPinned => match vessel {
+                None => (BodyKindSpec::Pinned, None),
+                Some(v) => {
+                    if position.get_ref().iter().any(|x| *x != 0.0) {
+                        let d = c
+                            .diag(
+                                Some(pose_span.clone()),
+                                &format!("{S} › {id} › X0"),
+                                format!(
+                                    "coupled pinned body {id} is not at the vessel origin, so \
+                                     `--vessel-motion` cannot move its pin"
+                                ),
+                            )
+                            .expected("X0 Y0 Z0 = 0 0 0")
+                            .hint(
+                                "the vessel-motion file gives the track of the pin, the body's \
+                                 origin: put the body's origin at the vessel's, or run without \
+                                 --vessel-motion to hold the pin at its deck position",
+                            );
+                        c.errors.push(d);
+                    }
+                    (
+                        BodyKindSpec::Pinned,
+                        Some(rigid_motion_spec(&kind_word, Some(v))),
+                    )
+                }
+            },
             DeckBodyKind::Coupled => match vessel {
                 None => (BodyKindSpec::Coupled, None),
                 Some(v) => {
@@ -376,13 +421,16 @@ pub(super) fn convert_bodies(
             },
         };
         let prescribed = spec_kind == BodyKindSpec::Prescribed;
-        let spec = bare_body(
+        // A pin on the vessel's motion takes its position from it; the body keeps its angles.
+        let on_motion = motion.is_some();
+        let mut spec = bare_body(
             spanned(&t[0], body_name(&id)),
             spanned(&t[1], spec_kind),
             motion,
-            (!prescribed).then_some(position),
+            (!on_motion).then_some(position),
             (!prescribed && rotated != [0.0; 3]).then_some(orientation),
         );
+        spec.pin = kind.pin(on_motion).map(|p| spanned(&t[1], p));
         let mut body = DeckBody {
             name: body_name(&id),
             kind,
@@ -429,7 +477,7 @@ pub(super) fn finish_bodies(c: &mut Converter, bodies: Vec<DeckBody>) -> Vec<Bod
     let mut out = Vec::new();
     for b in bodies {
         let mut spec = b.spec;
-        if b.kind != DeckBodyKind::Free {
+        if !b.kind.moves() {
             out.push(spec);
             continue;
         }

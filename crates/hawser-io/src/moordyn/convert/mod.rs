@@ -32,7 +32,7 @@ mod options;
 mod outputs;
 mod rods;
 mod water;
-use bodies::{DeckBody, DeckBodyKind, body_name, convert_bodies, finish_bodies};
+use bodies::{DeckBody, body_name, convert_bodies, finish_bodies};
 use line_types::convert_line_types;
 use options::{environment_of, read_options, simulation_of};
 use outputs::convert_outputs;
@@ -377,7 +377,7 @@ pub fn convert(
     points.extend(rod_ends.points);
     let body_kinds: Vec<(String, bool)> = deck_bodies
         .iter()
-        .map(|b| (b.name.clone(), b.kind == DeckBodyKind::Free))
+        .map(|b| (b.name.clone(), b.kind.moves()))
         .collect();
     let bodies = finish_bodies(&mut c, deck_bodies);
     let (lines, line_outputs) = match deck.section(SectionKind::Lines) {
@@ -621,7 +621,7 @@ fn convert_points(
                     (any.then_some(1.0), "FX FY FZ", &t[2])
                 }))
                 .find(|(v, _, _)| v.is_some_and(|x| x != 0.0));
-            if body.kind == DeckBodyKind::Free {
+            if body.kind.moves() {
                 if let Some((_, col, tok)) = extra {
                     let d = c
                         .diag(

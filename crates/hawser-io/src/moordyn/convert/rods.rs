@@ -11,8 +11,12 @@
 //! - `Fixed` (`Fix`, `Anchor`): a fixed body `R#`; `Coupled` (`Vessel`, `Ves`, `Cpld`): a
 //!   coupled body `R#` (or a prescribed one on `--vessel-motion`);
 //! - `Body#`: a member of body `B#` (coordinates in its axes), its mass and inertia folded in;
-//! - `Pinned`, `Body#Pinned`, `CoupledPinned`: refused (a body pinned at a point, turning
-//!   freely, is not modelled);
+//! - `Pinned` (`Pin`): a pinned body `R#` (origin and pin at end A, held where it is, turning
+//!   freely), mass and inertia as for `Free`; `CoupledPinned` (`VesselPinned`, `VesPin`,
+//!   `CpldPin`): the same on a coupled pin (three translations set by the host), or on
+//!   `--vessel-motion`;
+//! - `Body#Pinned`: refused (a rod pinned to a moving body needs a joint between two bodies,
+//!   which hawser does not model);
 //! - `NumSegs` 0 (MoorDyn's zero-length rod, a joint that passes bending between lines):
 //!   refused.
 //!
@@ -222,21 +226,21 @@ fn convert_rod(
         let rest = &word[letters.len()..];
         let number: String = rest.chars().take_while(|ch| ch.is_ascii_digit()).collect();
         let tail = &rest[number.len()..];
-        let pinned = |c: &mut Converter| {
+        let pinned_on_body = |c: &mut Converter| {
             let d = c
                 .diag(
                     Some(t[2].span.clone()),
                     &format!("{key} › Attachment"),
                     format!(
-                        "rod {id} is `{}`: pinned at end A and turning freely, a body hawser \
-                         does not model",
+                        "rod {id} is `{}`: pinned at end A to a body that moves, a joint \
+                         between two bodies hawser does not model",
                         t[2].text
                     ),
                 )
-                .expected("Free, Fixed, Coupled or Body#")
+                .expected("Free, Fixed, Coupled, Pinned, CoupledPinned or Body#")
                 .hint(
-                    "make it `Free` to let it move under its lines, or fix it to its body \
-                     (`Body#`) or the ground (`Fixed`)",
+                    "fix it to its body (`Body#`), or pin it to the ground (`Pinned`) or to a \
+                     host-driven point (`CoupledPinned`) when the body barely moves",
                 );
             c.errors.push(d);
         };
@@ -261,7 +265,7 @@ fn convert_rod(
         };
         let (body, offset_a) = match letters.as_str() {
             "body" if tail.contains("pin") => {
-                pinned(c);
+                pinned_on_body(c);
                 return false;
             }
             "body" => {
@@ -282,7 +286,7 @@ fn convert_rod(
                 };
                 let on = &mut bodies[i];
                 on.spec.members.push(member(a, b));
-                if on.kind == DeckBodyKind::Free {
+                if on.kind.moves() {
                     on.fold(Part {
                         centre: 0.5 * (a + b),
                         mass,
@@ -292,22 +296,24 @@ fn convert_rod(
                 }
                 (i, a)
             }
-            "pinned" | "pin" | "coupledpinned" | "vesselpinned" | "vespin" | "cpldpin" => {
-                pinned(c);
-                return false;
-            }
             "free" | "point" | "con" | "fixed" | "fix" | "anchor" | "coupled" | "vessel"
-            | "ves" | "cpld" => {
+            | "ves" | "cpld" | "pinned" | "pin" | "coupledpinned" | "vesselpinned" | "vespin"
+            | "cpldpin" => {
                 let kind = match letters.as_str() {
                     "free" | "point" | "con" => DeckBodyKind::Free,
                     "fixed" | "fix" | "anchor" => DeckBodyKind::Fixed,
-                    _ => DeckBodyKind::Coupled,
+                    "pinned" | "pin" => DeckBodyKind::Pinned,
+                    "coupled" | "vessel" | "ves" | "cpld" => DeckBodyKind::Coupled,
+                    _ => DeckBodyKind::CoupledPinned,
                 };
                 let (spec_kind, motion) = match (kind, vessel) {
                     (DeckBodyKind::Free, _) => (BodyKindSpec::Free, None),
                     (DeckBodyKind::Fixed, _) => (BodyKindSpec::Fixed, None),
+                    (DeckBodyKind::Pinned, _) | (DeckBodyKind::CoupledPinned, None) => {
+                        (BodyKindSpec::Pinned, None)
+                    }
                     (DeckBodyKind::Coupled, None) => (BodyKindSpec::Coupled, None),
-                    (DeckBodyKind::Coupled, Some(v)) => {
+                    (DeckBodyKind::Coupled | DeckBodyKind::CoupledPinned, Some(v)) => {
                         if a != Vec3::zeros() {
                             let d = c
                                 .diag(
@@ -329,13 +335,16 @@ fn convert_rod(
                             text: String::new(),
                             span: t[2].span.clone(),
                         };
-                        (
-                            BodyKindSpec::Prescribed,
-                            Some(rigid_motion_spec(&word, Some(v))),
-                        )
+                        let kind = if kind == DeckBodyKind::Coupled {
+                            BodyKindSpec::Prescribed
+                        } else {
+                            BodyKindSpec::Pinned
+                        };
+                        (kind, Some(rigid_motion_spec(&word, Some(v))))
                     }
                 };
-                let prescribed = spec_kind == BodyKindSpec::Prescribed;
+                // A prescribed rod, or a pin on the vessel, takes its end A from the motion.
+                let prescribed = motion.is_some();
                 let name = rod_name(&id);
                 let pose = Spanned::new(t[3].span.start..t[5].span.end, a.into());
                 let mut spec = bare_body(
@@ -346,6 +355,7 @@ fn convert_rod(
                     None,
                 );
                 spec.members.push(member(Vec3::zeros(), b - a));
+                spec.pin = kind.pin(prescribed).map(|p| spanned(&t[2], p));
                 let span = |k: usize| t[k].span.clone();
                 bodies.push(DeckBody {
                     name,
@@ -356,16 +366,8 @@ fn convert_rod(
                     spans: [tt[2].span.clone(), span(3), tt[1].span.clone(), span(3)],
                     parts: vec![Part {
                         centre: 0.5 * (b - a),
-                        mass: if kind == DeckBodyKind::Free {
-                            mass
-                        } else {
-                            0.0
-                        },
-                        inertia: if kind == DeckBodyKind::Free {
-                            inertia
-                        } else {
-                            Mat3::zeros()
-                        },
+                        mass: if kind.moves() { mass } else { 0.0 },
+                        inertia: if kind.moves() { inertia } else { Mat3::zeros() },
                         volume: 0.0,
                     }],
                 });
@@ -378,8 +380,14 @@ fn convert_rod(
                         &format!("{key} › Attachment"),
                         format!("unknown rod attachment `{}`", t[2].text),
                     )
-                    .expected("Free (Point, Con), Fixed (Fix, Anchor), Coupled (Vessel), Body#")
-                    .hint("MoorDyn rod types: Free, Fixed, Coupled, Body# (fixed on a body)");
+                    .expected(
+                        "Free (Point, Con), Fixed (Fix, Anchor), Coupled (Vessel), Pinned \
+                         (Pin), CoupledPinned (VesselPinned), Body#",
+                    )
+                    .hint(
+                        "MoorDyn rod types: Free, Fixed, Coupled, Pinned, CoupledPinned (pinned \
+                         at end A), Body# (fixed on a body)",
+                    );
                 c.errors.push(d);
                 return false;
             }

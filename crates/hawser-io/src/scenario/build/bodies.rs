@@ -3,7 +3,9 @@
 use super::{Builder, Check, NON_NEGATIVE, POSITIVE, build_rigid_motion, span_of};
 use crate::scenario::schema::*;
 use hawser::math::{Mat3, Quat, Vec3, Vec6};
-use hawser::model::{Body, BodyKind, Displacement, DragSpeed, Member, RigidMotion, Thrust, Wind};
+use hawser::model::{
+    Body, BodyKind, Displacement, DragSpeed, Member, Pin, RigidMotion, Thrust, Wind,
+};
 use hawser::physics::environment::Environment;
 use std::collections::HashMap;
 use toml::Spanned;
@@ -63,17 +65,45 @@ pub(super) fn build_bodies(
             b.push(d);
         }
 
+        let pinned = *s.kind.get_ref() == BodyKindSpec::Pinned;
+        let pin = s.pin.as_ref().map(|p| *p.get_ref()).unwrap_or_default();
+        if let Some(p) = &s.pin
+            && !pinned
+        {
+            let d = b
+                .diag(Some(p.span()), &k("pin"), "only a pinned body has a `pin`")
+                .hint(
+                    "give the body `type = \"pinned\"` to pin its origin and let it turn, or \
+                     remove `pin`",
+                );
+            b.push(d);
+        }
+        let pinned_on_motion = pinned && pin == PinSpec::Prescribed;
         let prescribed = *s.kind.get_ref() == BodyKindSpec::Prescribed;
         // A prescribed body is placed by its motion (`start`, `heading` or the file); a pose
-        // given beside it would be a second, conflicting, answer.
-        if prescribed {
+        // given beside it would be a second, conflicting, answer. The motion of a pin places
+        // the origin only: the body's orientation is its own.
+        if prescribed || pinned_on_motion {
             for (key, span) in [
                 ("position", span_of(&s.position)),
-                ("orientation", span_of(&s.orientation)),
+                (
+                    "orientation",
+                    span_of(&s.orientation).filter(|_| prescribed),
+                ),
             ] {
                 if let Some(span) = span {
-                    let d = b
-                        .diag(
+                    let d = if pinned_on_motion {
+                        b.diag(
+                            Some(span),
+                            &k(key),
+                            "a body on a prescribed pin takes its `position` from the pin's motion",
+                        )
+                        .hint(
+                            "remove it; give the pin's place at t = 0 as `start` in \
+                             `[bodies.motion]` (the body's `orientation` stays its own)",
+                        )
+                    } else {
+                        b.diag(
                             Some(span),
                             &k(key),
                             format!("a prescribed body takes its `{key}` from its motion"),
@@ -82,14 +112,15 @@ pub(super) fn build_bodies(
                             "remove it; give the body origin's place at t = 0 as `start` and \
                              `heading` in `[bodies.motion]` (a `vessel-motion` file gives the \
                              whole pose)",
-                        );
+                        )
+                    };
                     b.push(d);
                 }
             }
         }
         let position = match &s.position {
             Some(p) => b.vec3(p, &k("position")),
-            None if prescribed => Vec3::zeros(),
+            None if prescribed || pinned_on_motion => Vec3::zeros(),
             None => {
                 let d = b
                     .diag(
@@ -124,21 +155,25 @@ pub(super) fn build_bodies(
             }
             None => Quat::identity(),
         };
-        let free = *s.kind.get_ref() == BodyKindSpec::Free;
-        // A free body needs its mass and inertia; the others' own loads are not computed.
+        let free = matches!(s.kind.get_ref(), BodyKindSpec::Free | BodyKindSpec::Pinned);
+        // A free or pinned body needs its mass and inertia; the others' own loads are not
+        // computed.
         for (key, given) in [("mass", s.mass.is_some()), ("inertia", s.inertia.is_some())] {
             if free && !given {
                 let d = b
                     .diag(
                         Some(s.kind.span()),
                         &k(key),
-                        format!("free body `{name}` has no `{key}`"),
+                        format!(
+                            "{} body `{name}` has no `{key}`",
+                            if pinned { "pinned" } else { "free" }
+                        ),
                     )
                     .expected(match key {
                         "mass" => "the mass in air in kg, > 0",
                         _ => "[Ixx, Iyy, Izz] about the centre of gravity in kg·m²",
                     })
-                    .hint("a free body moves under its mass and inertia: give both");
+                    .hint("a free or pinned body moves under its mass and inertia: give both");
                 b.push(d);
             }
         }
@@ -289,6 +324,29 @@ pub(super) fn build_bodies(
             centre: centre(b, &w.centre, "wind.centre"),
         });
         let kind = match (s.kind.get_ref(), &s.motion) {
+            (BodyKindSpec::Pinned, Some(m)) if pin == PinSpec::Prescribed => {
+                BodyKind::Pinned(Pin::Prescribed(build_rigid_motion(b, m, &k("motion"), env)))
+            }
+            (BodyKindSpec::Pinned, None) if pin == PinSpec::Prescribed => {
+                let d = b
+                    .diag(
+                        s.pin.as_ref().map(|p| p.span()),
+                        &k("motion"),
+                        format!(
+                            "body `{name}` is pinned on a prescribed motion but has no `motion`"
+                        ),
+                    )
+                    .expected(
+                        "a `[bodies.motion]` table of type `fixed`, `constant-velocity`, \
+                         `manoeuvre`, `vessel-motion` or `rao` for the pin",
+                    )
+                    .hint(
+                        "add e.g. `motion = { type = \"constant-velocity\", velocity = [2.0, \
+                         0.0, 0.0] }`, or pin it in place with `pin = \"fixed\"`",
+                    );
+                b.push(d);
+                BodyKind::Pinned(Pin::Fixed)
+            }
             (BodyKindSpec::Prescribed, Some(m)) => {
                 BodyKind::Prescribed(build_rigid_motion(b, m, &k("motion"), env))
             }
@@ -321,14 +379,18 @@ pub(super) fn build_bodies(
                                 match kind {
                                     BodyKindSpec::Free => "free",
                                     BodyKindSpec::Coupled => "coupled",
+                                    BodyKindSpec::Pinned => "pinned",
                                     _ => "fixed",
                                 }
                             ),
                         )
-                        .hint(
+                        .hint(if pinned {
+                            "give the body `pin = \"prescribed\"` to move its pin as the \
+                             motion says, or remove the `motion` table"
+                        } else {
                             "give the body `type = \"prescribed\"` to move it as the motion \
-                             says, or remove the `motion` table",
-                        );
+                             says, or remove the `motion` table"
+                        });
                     b.push(d);
                 }
                 match kind {
@@ -337,6 +399,10 @@ pub(super) fn build_bodies(
                         orientation,
                     }),
                     BodyKindSpec::Coupled => BodyKind::Coupled,
+                    BodyKindSpec::Pinned if pin == PinSpec::Coupled => {
+                        BodyKind::Pinned(Pin::Coupled)
+                    }
+                    BodyKindSpec::Pinned => BodyKind::Pinned(Pin::Fixed),
                     _ => BodyKind::Free,
                 }
             }
@@ -347,6 +413,8 @@ pub(super) fn build_bodies(
                 let k0 = m.kinematics(0.0);
                 (k0.position, k0.orientation)
             }
+            // A body on a prescribed pin starts with its origin where the pin is at t = 0.
+            BodyKind::Pinned(Pin::Prescribed(m)) => (m.kinematics(0.0).position, orientation),
             _ => (position, orientation),
         };
         out.push(Body {
