@@ -130,7 +130,7 @@ impl<'a> Simulation<'a> {
                 .map_err(|e| SimulationError::Observer { message: e.0 })
         };
         self.stepper.sample_start(system, &mut sample)?;
-        self.stepper.advance(system, end, sample)
+        self.stepper.advance(system, end, sample, false).map(|_| ())
     }
 }
 
