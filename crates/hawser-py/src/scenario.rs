@@ -398,6 +398,7 @@ impl Scenario {
             state: &sol.state,
             channels: &[],
             sample: 0,
+            releases: &[],
         };
         let raw = PyDict::new(py);
         raw.set_item("method", sol.method.to_string())?;

@@ -124,6 +124,7 @@ impl<'a> Simulation<'a> {
                 state: s.state(),
                 channels: &[],
                 sample: 0,
+                releases: s.releases(),
             };
             observer
                 .sample(&view)

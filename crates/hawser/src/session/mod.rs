@@ -548,5 +548,6 @@ fn view_of<'a>(
         state: stepper.state(),
         channels,
         sample,
+        releases: stepper.releases(),
     }
 }
