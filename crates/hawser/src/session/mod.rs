@@ -104,6 +104,11 @@ impl Session {
             let twin = System::new(&intact)?;
             let (mut state, mut statics) = initial_state(&twin, &intact, &options.statics)?;
             state.resize(system.layout.len, 0.0);
+            // A dormant free end rests where its attachment starts (what a points file shows).
+            for f in &system.failures {
+                let o = system.layout.point_offset[f.free_end].expect("a free end has a state block");
+                crate::math::set3(&mut state[o..], 0, &system.points[f.free_end].position);
+            }
             if let Some(s) = statics.as_mut() {
                 s.state.resize(system.layout.len, 0.0);
             }
