@@ -383,8 +383,7 @@ impl Scenario {
         let computed = py.detach(|| {
             // dg lines are analysed through their hermite twin, as `hawser modes` does.
             let (model, _) = hawser_io::modes::modal_model(model);
-            let system =
-                hawser::system::System::new(&model.intact()).map_err(|e| e.to_string())?;
+            let system = hawser::system::System::new(&model.intact()).map_err(|e| e.to_string())?;
             let sol = hawser::statics::solve(&system, None, &Default::default())
                 .map_err(|e| e.to_string())?;
             let mut ws = system.workspace();
@@ -458,8 +457,7 @@ impl Scenario {
         let computed = py.detach(|| {
             // dg lines are analysed through their hermite twin, as `hawser modes` does.
             let (model, _) = hawser_io::modes::modal_model(model);
-            let system =
-                hawser::system::System::new(&model.intact()).map_err(|e| e.to_string())?;
+            let system = hawser::system::System::new(&model.intact()).map_err(|e| e.to_string())?;
             let analysis = hawser_io::modes::ModalAnalysis::compute(&system, count, margin)?;
             Ok::<_, String>((system, analysis))
         });

@@ -499,7 +499,7 @@ fn session_with_failures_does_not_allocate() {
             .set_point_kinematics(p, t1, position(t1), velocity(t1), None)
             .unwrap();
         session.advance_to(t1).unwrap();
-        if k % 7 == 0 {
+        if k.is_multiple_of(7) {
             session
                 .set_point_kinematics(p, t1, position(t1), velocity(t1), None)
                 .unwrap();

@@ -106,7 +106,8 @@ impl Session {
             state.resize(system.layout.len, 0.0);
             // A dormant free end rests where its attachment starts (what a points file shows).
             for f in &system.failures {
-                let o = system.layout.point_offset[f.free_end].expect("a free end has a state block");
+                let o =
+                    system.layout.point_offset[f.free_end].expect("a free end has a state block");
                 crate::math::set3(&mut state[o..], 0, &system.points[f.free_end].position);
             }
             if let Some(s) = statics.as_mut() {
