@@ -295,8 +295,10 @@ fn deck_step_above_limit(loaded: &LoadedScenario, system: &System) -> Option<(Re
     (loaded.format == InputFormat::MoorDyn && dt > limit).then_some((dt, limit, culprit))
 }
 
+/// The assembled intact system of `model` (without its line failures, which are events of a
+/// run: statics, modes and checks analyse the intact system).
 fn system_of(model: &Model) -> Result<System> {
-    System::new(model).context("the model is invalid")
+    System::new(&model.intact()).context("the model is invalid")
 }
 
 /// Reports a step rejected by the stability check at the `time_step` key.

@@ -548,6 +548,24 @@ fn write_checkpoint(session: &mut Session, writer: ObserverId, out: &Path) -> Re
     Ok(())
 }
 
+/// A line failure as the run reports it.
+fn failure_message(f: &hawser::session::FailureEvent) -> String {
+    let why = match f.release.cause {
+        hawser::session::ReleaseCause::Time => "its failure time",
+        hawser::session::ReleaseCause::Tension => "its failure tension",
+        hawser::session::ReleaseCause::Host => "the host's call",
+    };
+    format!(
+        "failure: line {} end {} released from point {} at t = {:.6} s (end tension {:.6e} N; \
+         released by {why}); the run went on with the end free",
+        f.line,
+        f.end.name(),
+        f.attachment,
+        f.release.time,
+        f.release.tension
+    )
+}
+
 /// Runs the session to its end, checkpointing every `every` seconds of simulated time (at the
 /// first sample time at or after each multiple), and stops cleanly on a signal.
 fn drive(
@@ -606,6 +624,9 @@ fn drive(
             written,
         );
         return Ok(ExitCode::from(1));
+    }
+    for f in session.failure_events() {
+        err!("{}", failure_message(&f));
     }
     match result {
         Ok(()) => {

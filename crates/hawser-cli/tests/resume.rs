@@ -307,3 +307,59 @@ fn a_folder_holding_a_run_is_refused_without_overwrite() {
     assert!(String::from_utf8_lossy(&o.stderr).contains("the run is complete"));
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// A line failure across an interruption: the catenary mooring's chain lets go of its
+/// fairlead at 5 s; the run is stopped before that (SIGINT at a third of its rows, 4 s), and
+/// resumed, and once more killed after a checkpoint past it (every 2 s); both end
+/// byte-identical to the uninterrupted run. The uninterrupted run says so on stderr and lists
+/// the release in `summary.json` and `status.json`.
+#[test]
+fn a_line_failure_resumes_bit_for_bit() {
+    for (name, kill) in [("failure_sigint", false), ("failure_kill", true)] {
+        let (dir, path) = scenario(name, "catenary_mooring.toml", 12.0, "");
+        let mut text = std::fs::read_to_string(&path).unwrap();
+        text.push_str("\n[lines.failure]\nend = \"B\"\ntime = 5.0\n");
+        std::fs::write(&path, text).unwrap();
+        let (whole, parts) = (dir.join("whole"), dir.join("parts"));
+        let o = hawser()
+            .args(["run", path.to_str().unwrap(), "--quiet", "--out"])
+            .arg(&whole)
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&o.stderr);
+        assert!(o.status.success(), "{stderr}");
+        assert!(
+            stderr.contains("failure: line chain end b released from point fairlead at t = 5.0"),
+            "{stderr}"
+        );
+        let summary: serde_json::Value =
+            serde_json::from_str(&std::fs::read_to_string(whole.join("summary.json")).unwrap())
+                .unwrap();
+        let f = &summary["failures"][0];
+        assert_eq!(
+            (f["line"].as_str(), f["end"].as_str()),
+            (Some("chain"), Some("b"))
+        );
+        assert_eq!(f["attachment"].as_str(), Some("fairlead"));
+        assert_eq!(f["cause"].as_str(), Some("time"));
+        let t = f["time"].as_f64().unwrap();
+        assert!((5.0..5.1).contains(&t), "{t}");
+        assert!(f["tension"].as_f64().unwrap() > 1e5, "{f}");
+        let status = std::fs::read_to_string(whole.join("status.json")).unwrap();
+        assert!(
+            status.contains("\"failures\"") && status.contains("\"fairlead\""),
+            "{status}"
+        );
+        let total = rows(&whole.join("timeseries.csv"));
+        if kill {
+            let code = run_and_stop(&path, &parts, libc::SIGKILL, 2 * total / 3, Some(2.0));
+            assert_eq!(code, None, "killed by a signal");
+        } else {
+            let code = run_and_stop(&path, &parts, libc::SIGINT, total / 3, None);
+            assert_eq!(code, Some(130));
+        }
+        resume(&parts);
+        assert_same_results(&whole, &parts);
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+}

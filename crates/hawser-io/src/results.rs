@@ -525,13 +525,17 @@ impl RunWriter {
             failure.get_or_insert(e);
         }
         let complete = error.is_none();
-        let status = self.write_status(json!({
+        let mut fields = json!({
             "complete": complete,
             "state": if complete { "finished" } else if interrupted { "interrupted" } else { "stopped" },
             "error": error,
             "end_time": self.summary.last_time(),
             "warnings": warnings_json(self.summary.warnings()),
-        }));
+        });
+        if let Some(f) = self.summary.failures() {
+            fields["failures"] = failures_json(f);
+        }
+        let status = self.write_status(fields);
         match failure {
             Some(e) => Err(e),
             None => status,
@@ -542,12 +546,23 @@ impl RunWriter {
 impl Observer for RunWriter {
     fn sample(&mut self, view: &View<'_>) -> Result<(), ObserverError> {
         let time = self.times.time(view.sample, view.time);
+        // A line failed since the last sample: `status.json` says so while the run goes on.
+        let released = view.releases.iter().flatten().count();
+        if released > self.summary.failures().map_or(0, <[_]>::len) {
+            self.summary.set_failures(view);
+            self.write_status(json!({
+                "complete": false,
+                "state": "running",
+                "failures": self.summary.failures().map(failures_json),
+            }))?;
+        }
         // The error names the file.
         Ok(self.write_sample(view, time)?)
     }
 
     fn finish(&mut self, view: &View<'_>, end: &RunEnd) -> Result<(), ObserverError> {
         self.summary.set_warnings(&end.warnings);
+        self.summary.set_failures(view);
         Ok(self.write_end(view, end.error.as_deref(), end.interrupted)?)
     }
 }
@@ -598,6 +613,8 @@ fn points_json(system: &System, ws: &Workspace, velocities: bool) -> Value {
         .points
         .iter()
         .enumerate()
+        // A failure's free end not released yet is no point of the run.
+        .filter(|(_, p)| !p.dormant)
         .map(|(i, p)| {
             let k = &ws.points[i];
             let mut v = json!({"position": [k.position.x, k.position.y, k.position.z]});
@@ -644,6 +661,7 @@ pub fn statics_json(system: &System, ws: &Workspace) -> Value {
         state: &[],
         channels: &[],
         sample: 0,
+        releases: &[],
     };
     let mut v =
         json!({"lines": lines_json(&view, false), "points": points_json(system, ws, false)});
@@ -681,6 +699,26 @@ pub fn statics_json(system: &System, ws: &Workspace) -> Value {
 
 /// Warnings as JSON: an array of `{"kind": …, "message": …}` (`summary.json`, `status.json`,
 /// `hawser statics --json`).
+/// Line failures as JSON: per release, the line, end, attachment, time [s], tension [N] and
+/// cause, in the model's order of failures.
+pub fn failures_json(events: &[hawser::session::FailureEvent]) -> Value {
+    events
+        .iter()
+        .map(|e| {
+            json!({
+                "line": e.line,
+                "end": e.end.name(),
+                "attachment": e.attachment,
+                "time": e.release.time,
+                "tension": e.release.tension,
+                "cause": e.release.cause.name(),
+            })
+        })
+        .collect::<Vec<_>>()
+        .into()
+}
+
+/// The run's warnings as JSON.
 pub fn warnings_json(warnings: &[hawser::Warning]) -> Value {
     warnings
         .iter()

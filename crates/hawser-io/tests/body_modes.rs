@@ -97,6 +97,7 @@ fn line_load(model: &Model, position: Vec3, orientation: Quat) -> [Real; 6] {
         state: &sol.state,
         channels: &[],
         sample: 0,
+        releases: &[],
     };
     view.body_line_load(0)
 }

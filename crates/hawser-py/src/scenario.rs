@@ -383,7 +383,7 @@ impl Scenario {
         let computed = py.detach(|| {
             // dg lines are analysed through their hermite twin, as `hawser modes` does.
             let (model, _) = hawser_io::modes::modal_model(model);
-            let system = hawser::system::System::new(&model).map_err(|e| e.to_string())?;
+            let system = hawser::system::System::new(&model.intact()).map_err(|e| e.to_string())?;
             let sol = hawser::statics::solve(&system, None, &Default::default())
                 .map_err(|e| e.to_string())?;
             let mut ws = system.workspace();
@@ -398,6 +398,7 @@ impl Scenario {
             state: &sol.state,
             channels: &[],
             sample: 0,
+            releases: &[],
         };
         let raw = PyDict::new(py);
         raw.set_item("method", sol.method.to_string())?;
@@ -456,7 +457,7 @@ impl Scenario {
         let computed = py.detach(|| {
             // dg lines are analysed through their hermite twin, as `hawser modes` does.
             let (model, _) = hawser_io::modes::modal_model(model);
-            let system = hawser::system::System::new(&model).map_err(|e| e.to_string())?;
+            let system = hawser::system::System::new(&model.intact()).map_err(|e| e.to_string())?;
             let analysis = hawser_io::modes::ModalAnalysis::compute(&system, count, margin)?;
             Ok::<_, String>((system, analysis))
         });

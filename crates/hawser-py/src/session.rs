@@ -12,7 +12,7 @@ use hawser_capi::host::{Convention, Host};
 use numpy::{PyArray1, PyReadonlyArray1};
 use pyo3::exceptions::{PyIndexError, PyKeyError};
 use pyo3::prelude::*;
-use pyo3::types::{PyBytes, PyTuple};
+use pyo3::types::{PyBytes, PyDict, PyTuple};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Arc, Mutex};
 
@@ -330,6 +330,48 @@ impl Session {
             .forces(Convention::End, &mut f)
             .map_err(|e| host_error(py, e))?;
         Ok(PyArray1::from_vec(py, f))
+    }
+
+    /// Releases end `end` (`"A"` or `"B"`) of line `line` (name or index) from its attachment
+    /// now, between two steps: the line goes on with that end free (docs/failure.md). The
+    /// end must have a failure in the scenario (`[lines.failure]`, with or without a trigger
+    /// of its own); releasing it twice does nothing.
+    fn release(&mut self, py: Python<'_>, line: &Bound<'_, PyAny>, end: &str) -> PyResult<()> {
+        let li = self.line_index(line)?;
+        let end = match end {
+            "A" | "a" => hawser::model::End::A,
+            "B" | "b" => hawser::model::End::B,
+            other => {
+                return Err(PyKeyError::new_err(format!(
+                    "line end `{other}`: give \"A\" or \"B\""
+                )));
+            }
+        };
+        let name = self.model.lines[li].name.clone();
+        self.session(py)?
+            .release(&name, end)
+            .map_err(|e| simulation_error(py, e.to_string()))
+    }
+
+    /// The line failures so far, in the model's order: per release a dict with `line`, `end`
+    /// (`"a"` or `"b"`), `attachment` (the point it released from), `time` [s], `tension`
+    /// [N] (the end's tension just before) and `cause` (`"time"`, `"tension"` or `"host"`).
+    #[getter]
+    fn failures<'py>(&mut self, py: Python<'py>) -> PyResult<Vec<Bound<'py, PyDict>>> {
+        let events = self.session(py)?.failure_events();
+        events
+            .iter()
+            .map(|e| {
+                let d = PyDict::new(py);
+                d.set_item("line", &e.line)?;
+                d.set_item("end", e.end.name())?;
+                d.set_item("attachment", &e.attachment)?;
+                d.set_item("time", e.release.time)?;
+                d.set_item("tension", e.release.tension)?;
+                d.set_item("cause", e.release.cause.name())?;
+                Ok(d)
+            })
+            .collect()
     }
 
     /// The force [N] of the lines on point `name` now (any point).

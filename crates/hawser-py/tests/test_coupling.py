@@ -146,3 +146,36 @@ def test_scenarios_pickle():
     assert back.to_dict() == sc.to_dict()
     deck = pickle.loads(pickle.dumps(hawser.load(OC3_DECK, duration=3.0)))
     assert deck.format == "moordyn" and deck.duration == 3.0
+
+
+def test_a_host_releases_a_line_and_a_failure_row_fires(tmp_path):
+    """OC3 with a FAILURE row: line 1 lets go of fairlead P4 at 0.5 s (the row's time), the
+    host releases line 2 at P5 itself (a row with both triggers 0), and an end without a
+    failure is refused. Each fairlead then carries no line: its force is zero."""
+    deck = OC3_DECK.read_text().replace(
+        "---------------------- OPTIONS",
+        "---------------------- FAILURE ----\n"
+        "FailureID Point Line(s) FailTime FailTen\n"
+        "() () (,) (s or 0) (N or 0)\n"
+        "1 4 1 0.5 0\n"
+        "2 5 2 0 0\n"
+        "---------------------- OPTIONS",
+        1,
+    )
+    path = tmp_path / "oc3_failure.txt"
+    path.write_text(deck)
+    s = hawser.load(path).session()
+    s.init()
+    for k in range(1, 11):
+        s.step(s.time, DT_C, X0, np.zeros(9))
+    (f,) = s.failures
+    assert (f["line"], f["end"], f["attachment"], f["cause"]) == ("L1", "b", "P4", "time")
+    assert 0.5 <= f["time"] < 0.5 + DT_C and f["tension"] > 1e5
+    assert np.all(s.point_force("P4") == 0.0)
+    assert np.linalg.norm(s.point_force("P5")) > 1e5
+    with pytest.raises(hawser.SimulationError, match="no failure in the model"):
+        s.release("L3", "B")
+    s.release("L2", "B")
+    assert [e["cause"] for e in s.failures] == ["time", "host"]
+    assert np.all(s.point_force("P5") == 0.0)
+    s.step(s.time, DT_C, X0, np.zeros(9))

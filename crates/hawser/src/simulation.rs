@@ -124,13 +124,14 @@ impl<'a> Simulation<'a> {
                 state: s.state(),
                 channels: &[],
                 sample: 0,
+                releases: s.releases(),
             };
             observer
                 .sample(&view)
                 .map_err(|e| SimulationError::Observer { message: e.0 })
         };
         self.stepper.sample_start(system, &mut sample)?;
-        self.stepper.advance(system, end, sample)
+        self.stepper.advance(system, end, sample, false).map(|_| ())
     }
 }
 

@@ -497,3 +497,71 @@ fn session_stepping_coupling_and_observers_do_not_allocate() {
         assert_eq!(count, 0, "{scheme:?}: the coupled session allocated");
     }
 }
+
+/// A session with line failures steps, releases and repeats coupling intervals across the
+/// release without allocating: a tension trigger that stays pending (the end's tension is
+/// evaluated after every step) and a time trigger at 2 s, inside the counted intervals, some
+/// of which a host repeats (the release is taken back and made again).
+#[test]
+fn session_with_failures_does_not_allocate() {
+    let top = Vec3::new(0.0, 0.0, -10.0);
+    let mut model = single_line(
+        line_type(0.05, 20.0, 1.0e7),
+        50.0,
+        20,
+        fixed("anchor", top + Vec3::new(30.0, 0.0, -35.0)),
+        Point {
+            name: "fairlead".into(),
+            position: top,
+            kind: PointKind::Coupled,
+        },
+        MassMatrix::Consistent,
+    );
+    model.settings.output_interval = 0.01;
+    model.failures = vec![
+        LineFailure {
+            line: 0,
+            end: End::A,
+            time: None,
+            tension: Some(1e9),
+        },
+        LineFailure {
+            line: 0,
+            end: End::B,
+            time: Some(2.0),
+            tension: None,
+        },
+    ];
+    let mut session = hawser::Session::new(model).unwrap();
+    let p = session.coupled_points()[0];
+    let dt_c = 0.013;
+    let position = |t: f64| top + Vec3::new(0.5 * (1.3 * t).sin(), 0.0, 0.0);
+    let velocity = |t: f64| Vec3::new(0.65 * (1.3 * t).cos(), 0.0, 0.0);
+    let interval = |session: &mut hawser::Session, k: usize| {
+        let t1 = k as f64 * dt_c;
+        session
+            .set_point_kinematics(p, t1, position(t1), velocity(t1), None)
+            .unwrap();
+        session.advance_to(t1).unwrap();
+        if k.is_multiple_of(7) {
+            session
+                .set_point_kinematics(p, t1, position(t1), velocity(t1), None)
+                .unwrap();
+            session.advance_to(t1).unwrap();
+        }
+        std::hint::black_box(session.point_reaction(p).unwrap());
+    };
+    for k in 1..=10 {
+        interval(&mut session, k);
+    }
+    let count = allocations_in(|| {
+        for k in 11..=300 {
+            interval(&mut session, k);
+        }
+    });
+    let events = session.failure_events();
+    eprintln!("{count} allocations in 290 coupling intervals, releases {events:?}");
+    assert_eq!(events.len(), 1);
+    assert!(session.time() > events[0].release.time);
+    assert_eq!(count, 0, "the session with failures allocated");
+}

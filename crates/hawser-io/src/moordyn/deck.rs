@@ -54,7 +54,9 @@ pub enum SectionKind {
     Options,
     /// `OUTPUTS` / `OUTPUT LIST`.
     Outputs,
-    /// A section hawser does not read (`FAILURE`, `CONTROL`, `EXTERNAL LOADS`, ...).
+    /// `FAILURE` (MoorDyn-F): line ends that release from a point or rod end.
+    Failure,
+    /// A section hawser does not read (`CONTROL`, `EXTERNAL LOADS`, ...).
     Unsupported,
 }
 
@@ -69,6 +71,7 @@ impl SectionKind {
                 | SectionKind::Rods
                 | SectionKind::Points
                 | SectionKind::Lines
+                | SectionKind::Failure
                 | SectionKind::Unsupported
         )
     }
@@ -149,6 +152,8 @@ fn classify(line: &str) -> Option<(SectionKind, String)> {
         SectionKind::Points
     } else if has("LINE LIST") || has("LINE PROPERTIES") || has("LINES") {
         SectionKind::Lines
+    } else if has("FAILURE") {
+        SectionKind::Failure
     } else if has("OPTIONS") {
         SectionKind::Options
     } else if has("OUTPUT") {
@@ -203,16 +208,31 @@ fn is_column_row(tokens: &[Token]) -> bool {
     };
     let f = first.text.to_lowercase();
     [
-        "typename", "name", "id", "linetype", "node", "point", "line", "rod", "body", "con", "#",
+        "typename",
+        "name",
+        "id",
+        "linetype",
+        "node",
+        "point",
+        "line",
+        "rod",
+        "body",
+        "con",
+        "#",
+        "failureid",
     ]
     .iter()
     .any(|k| f == *k || (f.starts_with(k) && f.len() <= k.len() + 1))
         && tokens.iter().all(|t| t.text.parse::<f64>().is_err())
 }
 
-/// Whether a row is a unit row: every word in parentheses (`(m)`, `(kg/m)`, `(-)`).
+/// Whether a row is a unit row: every word in parentheses (`(m)`, `(kg/m)`, `(-)`), or
+/// units with spaces inside their parentheses (FAILURE's `(s or 0)`): the row starts with `(`
+/// and ends with `)`.
 fn is_unit_row(tokens: &[Token]) -> bool {
     !tokens.is_empty() && tokens.iter().all(|t| t.text.starts_with('('))
+        || tokens.first().is_some_and(|t| t.text.starts_with('('))
+            && tokens.last().is_some_and(|t| t.text.ends_with(')'))
 }
 
 /// Splits a deck into sections. Errors: a table row before any section, no closing line.

@@ -40,6 +40,8 @@ pub struct RunSummary {
     row: Vec<Real>,
     /// The run's warnings, written into `summary.json` and `status.json` at its end.
     warnings: Vec<hawser::Warning>,
+    /// The run's line failures, `None` when its model has none (no `failures` key then).
+    failures: Option<Vec<hawser::session::FailureEvent>>,
 }
 
 impl RunSummary {
@@ -68,6 +70,7 @@ impl RunSummary {
             last_time: 0.0,
             samples: 0,
             warnings: Vec::new(),
+            failures: (!system.failures.is_empty()).then(Vec::new),
         }
     }
 
@@ -75,6 +78,20 @@ impl RunSummary {
     /// `summary.json` at its end.
     pub fn set_warnings(&mut self, warnings: &[hawser::Warning]) {
         self.warnings = warnings.to_vec();
+    }
+
+    /// The line failures that happened by the end of the run (`view.releases`), written into
+    /// `summary.json` when the model has failures.
+    pub fn set_failures(&mut self, view: &View<'_>) {
+        if let Some(f) = &mut self.failures {
+            *f = hawser::session::failure_events(view.system, view.releases);
+        }
+    }
+
+    /// The run's line failures set by [`RunSummary::set_failures`] (`None`: the model has
+    /// none).
+    pub fn failures(&self) -> Option<&[hawser::session::FailureEvent]> {
+        self.failures.as_deref()
     }
 
     /// The run's warnings set by [`RunSummary::set_warnings`].
@@ -220,7 +237,7 @@ impl RunSummary {
                 )
             })
             .collect();
-        json!({
+        let mut v = json!({
             "format_version": FORMAT_VERSION,
             "complete": error.is_none(),
             "error": error,
@@ -236,7 +253,14 @@ impl RunSummary {
                 "location": "unstretched arc length from end A [m] of the element carrying the peak",
                 "strength": "per section of each line, the largest node tension over the statistics window (max_tension [N]), where (at: unstretched arc length from end A [m]) and when (time [s]); utilisation = max_tension / minimum_breaking_load, design_utilisation = max_tension / (minimum_breaking_load / design_safety_factor); worst: the section with the largest design utilisation (utilisation without a safety factor)",
             },
-        })
+        });
+        if let Some(f) = &self.failures {
+            v["failures"] = super::failures_json(f);
+            v["definitions"]["failures"] = json!(
+                "line ends that released from their attachment during the run: the line, its end (a or b), the point it released from, the time [s] and the end's tension just before [N], and what released it (time, tension or host)"
+            );
+        }
+        v
     }
 
     /// `line_ranges.json`: per line the arc length, minimum, mean and maximum tension of each

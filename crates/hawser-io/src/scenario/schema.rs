@@ -878,11 +878,42 @@ pub struct LineSpec {
     /// of one section; docs/winches.md); none by default.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub winch: Option<WinchSpec>,
+    /// One end of the line releases from its attachment during a run, at a time, above a
+    /// tension or on a host's call (docs/failure.md); none by default.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub failure: Option<FailureSpec>,
 }
 
-/// The line end a winch is at.
+/// `[lines.failure]`: one end of the line releases from the point it is attached to at the
+/// first step end where `time` is reached or the end's tension reaches `tension` (or the line
+/// type's minimum breaking load with `at_breaking_load`), whichever comes first. Without
+/// either trigger the end releases only on a host's call (Python `Session.release`). The end
+/// then moves freely with the line; the run goes on (docs/failure.md).
+#[derive(Debug, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct FailureSpec {
+    /// `"A"` or `"B"`: the end that releases.
+    #[schemars(with = "LineEndSpec")]
+    pub end: Spanned<LineEndSpec>,
+    /// Release time [s], ≥ 0; none by default.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub time: Option<Spanned<f64>>,
+    /// Release tension [N], > 0: the end releases when the force it exerts on its attachment
+    /// reaches it; none by default.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub tension: Option<Spanned<f64>>,
+    /// `true`: the release tension is the `minimum_breaking_load` of the line type of the
+    /// section at that end (instead of `tension`); default false.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<bool>")]
+    pub at_breaking_load: Option<Spanned<bool>>,
+}
+
+/// A line end (a winch's, a failure's).
 #[derive(Clone, Copy, Debug, Deserialize, Serialize, JsonSchema, PartialEq, Eq)]
-pub enum WinchEndSpec {
+pub enum LineEndSpec {
     /// End A (`end_a`).
     A,
     /// End B (`end_b`).
@@ -895,8 +926,8 @@ pub enum WinchEndSpec {
 #[serde(deny_unknown_fields)]
 pub struct WinchSpec {
     /// `"A"` or `"B"`: the end the winch is at; `LINE.winch_tension` is the tension there.
-    #[schemars(with = "WinchEndSpec")]
-    pub end: Spanned<WinchEndSpec>,
+    #[schemars(with = "LineEndSpec")]
+    pub end: Spanned<LineEndSpec>,
     /// Stages from t = 0, each `{ duration = s, payout_rate = m/s }` (> 0 pays out, < 0
     /// hauls in); the winch holds after the last.
     pub stages: Vec<WinchStageSpec>,

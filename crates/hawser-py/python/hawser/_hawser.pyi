@@ -160,6 +160,12 @@ class Session:
         """Forces [N] and moments [N·m] of the lines on the coupled objects now."""
     def point_force(self, name: str) -> np.ndarray:
         """Force [N] of the lines on a point now."""
+    def release(self, line: Union[str, int], end: str) -> None:
+        """Releases end "A" or "B" of a line from its attachment now (docs/failure.md); the
+        end needs a `[lines.failure]` in the scenario."""
+    @property
+    def failures(self) -> List[Dict[str, Any]]:
+        """The line failures so far: line, end, attachment, time [s], tension [N], cause."""
     def body_force(self, name: str) -> np.ndarray:
         """Force [N] and moment about the origin [N·m] of the lines on a body now."""
     def line_tension(self, line: Union[str, int]) -> np.ndarray:

@@ -101,6 +101,33 @@ pub enum Formulation {
     Hermite,
 }
 
+/// One of the two ends of a line.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum End {
+    /// End A (arc length 0).
+    A,
+    /// End B (arc length the full length).
+    B,
+}
+
+impl End {
+    /// 0 for end A, 1 for end B (the index of [`Line::ends`]).
+    pub fn index(self) -> usize {
+        match self {
+            End::A => 0,
+            End::B => 1,
+        }
+    }
+
+    /// `"a"` or `"b"`, as in scenario keys and channel names.
+    pub fn name(self) -> &'static str {
+        match self {
+            End::A => "a",
+            End::B => "b",
+        }
+    }
+}
+
 /// What an end of a line is attached to. The attachment owns the end node: it supplies the
 /// end's kinematics and gathers the line's end force and mass (MoorDyn's rule).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -146,6 +173,10 @@ impl Line {
     /// Total unstretched length [m].
     pub fn length(&self) -> Real {
         self.sections.iter().map(|s| s.length).sum()
+    }
+    /// The attachments of ends A and B.
+    pub fn ends(&self) -> [LineEnd; 2] {
+        [self.end_a, self.end_b]
     }
     /// Total element count.
     pub fn elements(&self) -> usize {

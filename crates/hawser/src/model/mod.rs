@@ -4,6 +4,7 @@
 
 mod body;
 mod coupled;
+mod failure;
 mod line;
 mod motion;
 mod point;
@@ -13,7 +14,8 @@ mod winch;
 
 pub use body::{Body, BodyKind, Displacement, DragSpeed, Member, Pin, Thrust, Wind};
 pub use coupled::{BodyTrack, PointTrack, couple_prescribed_points};
-pub use line::{Formulation, Line, LineEnd, LineType, MassMatrix, Section, StrainMeasure};
+pub use failure::LineFailure;
+pub use line::{End, Formulation, Line, LineEnd, LineType, MassMatrix, Section, StrainMeasure};
 pub use motion::{Motion, ramp};
 pub use point::{Point, PointKind};
 pub use rigid_motion::{
@@ -164,6 +166,9 @@ pub struct Model {
     /// Time-series channels a run records, in column order; empty: the default channels
     /// ([`crate::analysis::channels::default_channels`]).
     pub outputs: Vec<crate::analysis::OutputChannel>,
+    /// Line ends that may release from their attachments during a run ([`LineFailure`]):
+    /// at a time, above a tension, or on the host's call ([`crate::Session::release`]).
+    pub failures: Vec<LineFailure>,
 }
 
 impl Model {
@@ -175,6 +180,17 @@ impl Model {
     /// Index of the line named `name`.
     pub fn line_index(&self, name: &str) -> Option<usize> {
         self.lines.iter().position(|l| l.name == name)
+    }
+
+    /// The model without its [`Model::failures`]: the intact system that statics, modes and
+    /// the initial condition of a run analyse (a failure is an event of a dynamic run).
+    pub fn intact(&self) -> std::borrow::Cow<'_, Model> {
+        if self.failures.is_empty() {
+            return std::borrow::Cow::Borrowed(self);
+        }
+        let mut m = self.clone();
+        m.failures.clear();
+        std::borrow::Cow::Owned(m)
     }
 
     /// Checks references and physical ranges. The scenario reader gives richer messages with
@@ -337,6 +353,11 @@ impl Model {
                 if !offset.iter().all(|x| x.is_finite()) {
                     return bad(format!("point {}: offset", p.name), "must be finite");
                 }
+            }
+        }
+        for (k, f) in self.failures.iter().enumerate() {
+            if let Err((what, why)) = f.check(self, k) {
+                return bad(what, &why);
             }
         }
         self.statics_frame_velocity()?;

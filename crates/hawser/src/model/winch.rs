@@ -16,13 +16,7 @@
 use crate::math::Real;
 
 /// Which end of its line a winch is at. The winch tension is the tension at that end.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum WinchEnd {
-    /// End A (arc length 0).
-    A,
-    /// End B.
-    B,
-}
+pub type WinchEnd = super::End;
 
 /// One stage of a winch schedule.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -6,7 +6,7 @@
 //! ([`model_hash`], u64), then the run: samples taken and the last sample time, the clock, the
 //! stability limit and what sets it, the state vector, the scheme's history (the three-level
 //! scheme's previous level and last step; generalized-α's accelerations, step controller and
-//! Jacobian), the coupling tracks and interval, and the saved start of the coupling
+//! Jacobian), the line failures' releases (version 2), the coupling tracks and interval, and the saved start of the coupling
 //! interval. Every number is stored exactly (f64 bits), so a restored run steps exactly as the
 //! saved one would have. A checkpoint of another model, of another format version or a
 //! truncated one is refused with [`SimulationError::Checkpoint`].
@@ -20,7 +20,7 @@ use crate::system::CouplingTracks;
 
 const MAGIC: &[u8; 8] = b"HAWSERCK";
 /// The checkpoint format version this build writes and reads.
-pub const CHECKPOINT_VERSION: u32 = 1;
+pub const CHECKPOINT_VERSION: u32 = 2;
 
 /// FNV-1a (64 bits) of `bytes`: stable across platforms and Rust versions.
 pub fn fnv1a(bytes: &[u8]) -> u64 {
@@ -172,6 +172,23 @@ fn put_saved(e: &mut Encoder, s: &Saved) {
     put_clock(e, &s.clock);
     e.f64s(&s.history);
     e.f64(s.last_step);
+    // Line failures: per failure, whether it released, and when, at what tension, why.
+    e.u64(s.releases.len() as u64);
+    for r in &s.releases {
+        e.bool(r.is_some());
+        let r = r.unwrap_or(super::Release {
+            time: 0.0,
+            tension: 0.0,
+            cause: super::ReleaseCause::Host,
+        });
+        e.f64(r.time);
+        e.f64(r.tension);
+        e.u64(match r.cause {
+            super::ReleaseCause::Time => 0,
+            super::ReleaseCause::Tension => 1,
+            super::ReleaseCause::Host => 2,
+        });
+    }
 }
 
 fn get_saved(d: &mut Decoder) -> Result<Saved, SimulationError> {
@@ -180,6 +197,30 @@ fn get_saved(d: &mut Decoder) -> Result<Saved, SimulationError> {
         clock: get_clock(d)?,
         history: d.f64s()?,
         last_step: d.f64()?,
+        releases: {
+            let n = d.u64()? as usize;
+            // Each release takes 25 bytes: a count beyond the bytes left is corrupt.
+            if n > d.rest().len() / 25 {
+                return Err(truncated());
+            }
+            let mut releases = Vec::with_capacity(n);
+            for _ in 0..n {
+                let happened = d.bool()?;
+                let (time, tension) = (d.f64()?, d.f64()?);
+                let cause = match d.u64()? {
+                    0 => super::ReleaseCause::Time,
+                    1 => super::ReleaseCause::Tension,
+                    2 => super::ReleaseCause::Host,
+                    _ => return Err(truncated()),
+                };
+                releases.push(happened.then_some(super::Release {
+                    time,
+                    tension,
+                    cause,
+                }));
+            }
+            releases
+        },
     })
 }
 
@@ -312,9 +353,10 @@ impl Session {
         }
         if !session.stepper.restore(&saved) {
             return Err(bad(
-                "the checkpoint's integrator history does not fit this run's scheme".into(),
+                "the checkpoint's integrator history or line failures do not fit this run".into(),
             ));
         }
+        session.stepper.apply_releases(&mut session.system);
         session.stepper.save(&mut session.sampled);
         session.stepper.stable_step = (limit, culprit);
         get_tracks(&mut d, &mut session.stepper.ws.coupling)?;

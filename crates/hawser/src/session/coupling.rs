@@ -101,6 +101,7 @@ impl Session {
                 // The interval was computed: go back to its start.
                 // Saved by this run: its history fits.
                 let _ = self.stepper.restore(&self.coupling.start);
+                self.stepper.apply_releases(&mut self.system);
                 let (samples, last) = self.coupling.start_samples;
                 if self.samples > samples {
                     for o in self.observers.iter_mut().flatten() {

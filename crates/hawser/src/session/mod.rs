@@ -17,11 +17,14 @@
 mod checkpoint;
 mod constant_velocity;
 mod coupling;
+mod failure;
 mod initial;
 mod stepper;
 mod view;
 
 pub use checkpoint::{CHECKPOINT_VERSION, Decoder, Encoder, fnv1a, model_hash};
+pub(crate) use failure::Due;
+pub use failure::{FailureEvent, Release, ReleaseCause, failure_events};
 pub use initial::{StepFallback, initial_state, planned_step, step_fallback, stepped_nodes};
 pub use stepper::{MAX_STEPS, Stepper, check_run_length};
 pub use view::{Attached, LineSample, LineSamples, Observer, ObserverError, RunEnd, View};
@@ -92,7 +95,26 @@ impl Session {
             model.settings.duration,
             stepped_nodes(&system),
         )?;
-        let (state, statics) = initial_state(&system, &model, &options.statics)?;
+        let (state, statics) = if system.failures.is_empty() {
+            initial_state(&system, &model, &options.statics)?
+        } else {
+            // The intact system's state is a prefix of this one's: the failures' reserved
+            // free ends come last and rest until released.
+            let intact = model.intact();
+            let twin = System::new(&intact)?;
+            let (mut state, mut statics) = initial_state(&twin, &intact, &options.statics)?;
+            state.resize(system.layout.len, 0.0);
+            // A dormant free end rests where its attachment starts (what a points file shows).
+            for f in &system.failures {
+                let o =
+                    system.layout.point_offset[f.free_end].expect("a free end has a state block");
+                crate::math::set3(&mut state[o..], 0, &system.points[f.free_end].position);
+            }
+            if let Some(s) = statics.as_mut() {
+                s.state.resize(system.layout.len, 0.0);
+            }
+            (state, statics)
+        };
         Self::assemble(model, system, state, statics, &options)
     }
 
@@ -333,34 +355,127 @@ impl Session {
         self.advance(Some(t))
     }
 
-    /// [`Session::advance_to`] `t`, or one step.
+    /// [`Session::advance_to`] `t`, or one step. A line failure due after a step is released
+    /// before the sample at that time ([`failure`]); the run then goes on.
     fn advance(&mut self, t: Option<Real>) -> Result<(), SimulationError> {
-        let Self {
-            system,
-            stepper,
-            channels,
-            observers,
-            samples,
-            last_sample,
-            sampled,
-            ..
-        } = self;
-        let mut notify = |s: &Stepper| {
-            *samples += 1;
-            *last_sample = s.time();
-            s.save(sampled);
-            let view = view_of(system, s, channels, *samples - 1);
-            for o in observers.iter_mut().flatten() {
-                o.sample(&view)
-                    .map_err(|e| SimulationError::Observer { message: e.0 })?;
+        // Failures due before the first step (a time of 0, a tension already above its limit).
+        self.release_due()?;
+        loop {
+            let Self {
+                system,
+                stepper,
+                channels,
+                observers,
+                samples,
+                last_sample,
+                sampled,
+                ..
+            } = self;
+            let mut notify = |s: &Stepper| {
+                notify_observers(
+                    system,
+                    s,
+                    channels,
+                    observers,
+                    samples,
+                    last_sample,
+                    sampled,
+                )
+            };
+            stepper.sample_start(system, &mut notify)?;
+            let watch = stepper.failures_pending();
+            let due = match t {
+                Some(t) => stepper.advance(system, t, &mut notify, watch)?,
+                None => stepper.step_sampled(system, &mut notify, watch)?,
+            };
+            let Some((k, cause, tension)) = due else {
+                return Ok(());
+            };
+            self.stepper.release(&mut self.system, k, cause, tension)?;
+            self.release_due()?;
+            let Self {
+                system,
+                stepper,
+                channels,
+                observers,
+                samples,
+                last_sample,
+                sampled,
+                ..
+            } = self;
+            stepper.sample_due(system, |s: &Stepper| {
+                notify_observers(
+                    system,
+                    s,
+                    channels,
+                    observers,
+                    samples,
+                    last_sample,
+                    sampled,
+                )
+            })?;
+            if t.is_none() {
+                return Ok(());
             }
-            Ok(())
-        };
-        stepper.sample_start(system, &mut notify)?;
-        match t {
-            Some(t) => stepper.advance(system, t, notify),
-            None => stepper.step_sampled(system, notify),
         }
+    }
+
+    /// Releases every failure due at the current state.
+    fn release_due(&mut self) -> Result<(), SimulationError> {
+        if !self.stepper.failures_pending() {
+            return Ok(());
+        }
+        while let Some((k, cause, tension)) = self.stepper.due_failure(&self.system)? {
+            self.stepper.release(&mut self.system, k, cause, tension)?;
+        }
+        Ok(())
+    }
+
+    /// Releases end `end` of line `line` from its attachment now, between two steps (a host's
+    /// call: a line cut on purpose, a failure decided outside hawser). The end must have a
+    /// failure in the model ([`crate::model::Model::failures`], with or without a trigger of
+    /// its own), which reserves its free end's state; releasing an end twice does nothing.
+    /// The release is recorded with the end's tension at this state and
+    /// [`ReleaseCause::Host`].
+    pub fn release(&mut self, line: &str, end: crate::model::End) -> Result<(), SimulationError> {
+        let Some(k) = self
+            .system
+            .failures
+            .iter()
+            .position(|f| self.system.lines[f.line].name == line && f.end == end)
+        else {
+            let known: Vec<String> = self
+                .system
+                .failures
+                .iter()
+                .map(|f| format!("{}.end_{}", self.system.lines[f.line].name, f.end.name()))
+                .collect();
+            return Err(SimulationError::Model(crate::error::ModelError::Invalid {
+                what: format!("release of line {line}, end {}", end.name()),
+                why: format!(
+                    "that line end has no failure in the model, so no free end is reserved \
+                     for it: add one (a `[lines.NAME.failure]` table, or a MoorDyn FAILURE \
+                     row); the ends that can release are: {}",
+                    if known.is_empty() {
+                        "none".to_string()
+                    } else {
+                        known.join(", ")
+                    }
+                ),
+            }));
+        };
+        let f = &self.system.failures[k];
+        let end_b = f.end == crate::model::End::B;
+        let line_index = f.line;
+        let ws = self.stepper.evaluate(&self.system)?;
+        let tension = self.system.end_force(ws, line_index, end_b).norm();
+        self.stepper
+            .release(&mut self.system, k, ReleaseCause::Host, tension)
+    }
+
+    /// The line failures that happened so far, in the model's order.
+    pub fn failure_events(&self) -> Vec<FailureEvent> {
+        failure_events(&self.system, self.stepper.releases())
     }
 
     /// Runs to the end of the model's duration ([`Session::end_time`]).
@@ -378,6 +493,7 @@ impl Session {
         // A diverged run reports the state of its last sample, which passed the checks.
         if matches!(error, Some(SimulationError::Diverged { .. })) && self.samples > 0 {
             self.stepper.restore(&self.sampled);
+            self.stepper.apply_releases(&mut self.system);
         }
         // A state that cannot be evaluated (a singular mass matrix) reports the workspace of
         // its last evaluation.
@@ -403,6 +519,27 @@ impl Session {
     }
 }
 
+/// Gives the observers the sample of `s`'s current state.
+fn notify_observers(
+    system: &System,
+    s: &Stepper,
+    channels: &[OutputChannel],
+    observers: &mut [Option<Box<dyn Attached>>],
+    samples: &mut u64,
+    last_sample: &mut Real,
+    sampled: &mut stepper::Saved,
+) -> Result<(), SimulationError> {
+    *samples += 1;
+    *last_sample = s.time();
+    s.save(sampled);
+    let view = view_of(system, s, channels, *samples - 1);
+    for o in observers.iter_mut().flatten() {
+        o.sample(&view)
+            .map_err(|e| SimulationError::Observer { message: e.0 })?;
+    }
+    Ok(())
+}
+
 /// The view of a stepper's current state.
 fn view_of<'a>(
     system: &'a System,
@@ -417,5 +554,6 @@ fn view_of<'a>(
         state: stepper.state(),
         channels,
         sample,
+        releases: stepper.releases(),
     }
 }

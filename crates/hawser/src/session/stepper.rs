@@ -106,6 +106,8 @@ pub(crate) struct Saved {
     pub history: Vec<Real>,
     /// The three-level scheme's last step [s] (0 for the others).
     pub last_step: Real,
+    /// Per failure of the system: its release, if it happened ([`Stepper::releases`]).
+    pub releases: Vec<Option<super::Release>>,
 }
 
 /// A run in progress on some system: integrator, clock, state and scratch, sized once.
@@ -132,6 +134,8 @@ pub struct Stepper {
     scheme: SchemeChoice,
     /// Whether the next adaptive step was planned by [`Stepper::advance`].
     planned: bool,
+    /// Per failure of the system ([`System::failures`]): its release, once it happened.
+    pub(crate) releases: Vec<Option<super::Release>>,
 }
 
 /// What a step size rule found wrong.
@@ -142,6 +146,14 @@ pub(crate) fn scheme_error(system: &System, scheme: Scheme) -> Option<Simulation
         return Some(SimulationError::Model(ModelError::SchemeCannotStepDg {
             scheme: scheme.name(),
             line: l.name.clone(),
+        }));
+    }
+    if matches!(scheme, Scheme::ThreeLevel | Scheme::GeneralizedAlpha)
+        && let Some(f) = system.failures.first()
+    {
+        return Some(SimulationError::Model(ModelError::SchemeCannotRelease {
+            scheme: scheme.name(),
+            line: system.lines[f.line].name.clone(),
         }));
     }
     if scheme == Scheme::ThreeLevel && !system.free_bodies.is_empty() {
@@ -262,6 +274,7 @@ impl Stepper {
             stiffness_limit,
             scheme: choice,
             planned: false,
+            releases: vec![None; system.failures.len()],
         })
     }
 
@@ -314,6 +327,8 @@ impl Stepper {
         saved.state.clear();
         saved.state.extend_from_slice(&self.state);
         saved.clock = self.clock;
+        saved.releases.clear();
+        saved.releases.extend_from_slice(&self.releases);
         match &self.integrator {
             Integrator::ThreeLevel { scheme, .. } => {
                 let (previous, last_step) = scheme.history();
@@ -338,11 +353,17 @@ impl Stepper {
     }
 
     /// Goes back to a saved point of this run (or of a run of the same model); false when the
-    /// saved history does not fit this run's scheme.
+    /// saved history does not fit this run's scheme. The releases of line failures are taken
+    /// back as saved; the system's line ends must then follow them
+    /// ([`Stepper::apply_releases`]).
     pub(crate) fn restore(&mut self, saved: &Saved) -> bool {
         self.state.copy_from_slice(&saved.state);
         self.clock = saved.clock;
         self.evaluated_at = None;
+        if saved.releases.len() != self.releases.len() {
+            return false;
+        }
+        self.releases.copy_from_slice(&saved.releases);
         match &mut self.integrator {
             Integrator::ThreeLevel { scheme, .. } => {
                 if saved.history.len() != self.state.len() {
@@ -495,7 +516,28 @@ impl Stepper {
     }
 
     /// One step; at an output time, marks the output taken, evaluates and calls `sample`.
+    /// With `watch`, a line failure due after the step stops before the sample and is
+    /// returned (its index, cause and the end's tension [N]): the caller releases it and then
+    /// takes the sample ([`Stepper::sample_due`]).
     pub(crate) fn step_sampled<F>(
+        &mut self,
+        system: &System,
+        sample: F,
+        watch: bool,
+    ) -> Result<Option<super::Due>, SimulationError>
+    where
+        F: FnOnce(&Stepper) -> Result<(), SimulationError>,
+    {
+        self.step(system)?;
+        if watch && let Some(due) = self.due_failure(system)? {
+            return Ok(Some(due));
+        }
+        self.sample_due(system, sample)?;
+        Ok(None)
+    }
+
+    /// At an output time, marks the output taken, evaluates and calls `sample`.
+    pub(crate) fn sample_due<F>(
         &mut self,
         system: &System,
         sample: F,
@@ -503,7 +545,6 @@ impl Stepper {
     where
         F: FnOnce(&Stepper) -> Result<(), SimulationError>,
     {
-        self.step(system)?;
         if self.clock.output_due() {
             self.take_output(system);
             self.evaluate(system)?;
@@ -517,12 +558,16 @@ impl Stepper {
     /// hosts advance by whole steps are the same whatever the interval; otherwise the steps
     /// of this advance are shortened equally so that the last ends at t (none is longer than
     /// the run's step, so the stability limit holds).
+    ///
+    /// With `watch`, stops after the step at which a line failure is due and returns it
+    /// ([`Stepper::step_sampled`]); the caller releases it and calls again.
     pub(crate) fn advance<F>(
         &mut self,
         system: &System,
         t: Real,
         mut sample: F,
-    ) -> Result<(), SimulationError>
+        watch: bool,
+    ) -> Result<Option<super::Due>, SimulationError>
     where
         F: FnMut(&Stepper) -> Result<(), SimulationError>,
     {
@@ -537,7 +582,9 @@ impl Stepper {
                 let step = self.landing_step(boundary, nominal);
                 self.clock.set_step(step);
                 self.planned = true;
-                self.step_sampled(system, &mut sample)?;
+                if let Some(due) = self.step_sampled(system, &mut sample, watch)? {
+                    return Ok(Some(due));
+                }
                 continue;
             }
             let k = remaining / nominal;
@@ -548,7 +595,9 @@ impl Stepper {
                 remaining / k.ceil().max(1.0)
             };
             self.clock.set_step(step);
-            self.step_sampled(system, &mut sample)?;
+            if let Some(due) = self.step_sampled(system, &mut sample, watch)? {
+                return Ok(Some(due));
+            }
         }
         // Land on t itself (the steps sum to it within round-off).
         let off = (self.clock.time() - t).abs();
@@ -556,7 +605,7 @@ impl Stepper {
             self.clock.anchor = t;
             self.clock.since_anchor = 0;
         }
-        Ok(())
+        Ok(None)
     }
 
     /// Takes the sample at t = 0 once: marks it taken, evaluates and calls `sample`.

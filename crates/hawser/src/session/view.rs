@@ -22,6 +22,9 @@ pub struct View<'a> {
     pub channels: &'a [OutputChannel],
     /// Index of this sample (0 at t = 0).
     pub sample: u64,
+    /// Per failure of the system ([`System::failures`]): its release so far, if any (empty
+    /// outside a run).
+    pub releases: &'a [Option<super::Release>],
 }
 
 /// One node of a line as writers report it ([`View::line_samples`]).

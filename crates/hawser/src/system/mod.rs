@@ -51,6 +51,30 @@ pub struct SystemPoint {
     pub line_end: Option<(usize, usize)>,
     /// Seabed contact of a free point with a volume, fixed at assembly.
     seabed_contact: Option<SphereContact>,
+    /// Whether the point is the reserved free end of a failure not released yet
+    /// ([`SystemFailure::free_end`]): its state entries exist but rest (zero rates, a unit
+    /// mass and no force in the coupled solve, no line attached).
+    pub dormant: bool,
+}
+
+/// A line end that may release during a run ([`crate::model::LineFailure`]), with the free
+/// point reserved for it when the system is assembled, so that a release allocates nothing
+/// and the state keeps its length (checkpoints, coupling hosts).
+#[derive(Clone, Debug, PartialEq)]
+pub struct SystemFailure {
+    /// Line index.
+    pub line: usize,
+    /// Which end releases.
+    pub end: crate::model::End,
+    /// The point the end is attached to until it releases.
+    pub attachment: usize,
+    /// The massless free point that owns the end after the release: dormant until then,
+    /// its 6 state entries (position, velocity) placed after every other block.
+    pub free_end: usize,
+    /// Release time [s], if any.
+    pub time: Option<Real>,
+    /// Release tension [N], if any.
+    pub tension: Option<Real>,
 }
 
 /// The immutable, assembled system.
@@ -80,6 +104,8 @@ pub struct System {
     /// every material point moving at V (line tangents and body rotations at rest), so drag
     /// sees u − V and seabed friction opposes V; the dynamics do not use it.
     pub tow_velocity: Vec3,
+    /// The line ends that may release, in the order of [`crate::model::Model::failures`].
+    pub failures: Vec<SystemFailure>,
 }
 
 /// A rigid body of the system.
@@ -175,8 +201,39 @@ impl System {
                 free_index: None,
                 line_end: None,
                 seabed_contact: SphereContact::new(&model.environment, &p.kind),
+                dormant: false,
             })
-            .collect();
+            .collect::<Vec<_>>();
+        // The free end reserved for each failure: a massless, dimensionless free point.
+        let mut points = points;
+        let mut failures = Vec::with_capacity(model.failures.len());
+        for f in &model.failures {
+            let attachment = f.attachment(model);
+            let line = &model.lines[f.line];
+            points.push(SystemPoint {
+                name: format!("{}.end_{}.released", line.name, f.end.name()),
+                position: points[attachment].position,
+                kind: PointKind::Free {
+                    mass: 0.0,
+                    volume: 0.0,
+                    drag_area: 0.0,
+                    added_mass_coefficient: 0.0,
+                    force: Vec3::zeros(),
+                },
+                free_index: None,
+                line_end: None,
+                seabed_contact: None,
+                dormant: true,
+            });
+            failures.push(SystemFailure {
+                line: f.line,
+                end: f.end,
+                attachment,
+                free_end: points.len() - 1,
+                time: f.time,
+                tension: f.tension,
+            });
+        }
         let mut lines = Vec::new();
         for l in &model.lines {
             let sections: Vec<_> = l
@@ -225,6 +282,7 @@ impl System {
         }
         let mut system = Self::from_parts(model.environment.clone(), lines, points, bodies)?;
         system.tow_velocity = model.statics_frame_velocity()?;
+        system.failures = failures;
         Ok(system)
     }
 
@@ -273,6 +331,9 @@ impl System {
             let PointKind::Free { mass, .. } = points[p].kind else {
                 continue;
             };
+            if points[p].dormant {
+                continue;
+            }
             let only_dg = lines
                 .iter()
                 .filter(|l| l.end_a == p || l.end_b == p)
@@ -295,7 +356,7 @@ impl System {
             len += block;
         }
         let mut point_offset = vec![None; points.len()];
-        for &p in &free_points {
+        for &p in free_points.iter().filter(|&&p| !points[p].dormant) {
             point_offset[p] = Some(len);
             len += 6;
         }
@@ -308,6 +369,12 @@ impl System {
                 body_offset[i] = Some(len);
                 len += crate::bodies::STATE_LEN;
             }
+        }
+        // The reserved free ends of failures last, so that the intact system's state (the
+        // initial statics) is a prefix of this one.
+        for &p in free_points.iter().filter(|&&p| points[p].dormant) {
+            point_offset[p] = Some(len);
+            len += 6;
         }
         let mut slots = 0;
         let point_slot = points
@@ -337,6 +404,7 @@ impl System {
                 len,
             },
             tow_velocity: Vec3::zeros(),
+            failures: Vec::new(),
         })
     }
 

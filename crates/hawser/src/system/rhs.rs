@@ -343,7 +343,13 @@ impl System {
             }
         }
         for (f, &p) in self.free_points.iter().enumerate() {
-            let (force, mass) = self.point_own_load(p, &ws.points[p], t, 1.0);
+            // A failure's reserved free end rests until its release: a unit mass and no force
+            // give it zero acceleration (no line end is attached to it yet).
+            let (force, mass) = if self.points[p].dormant {
+                (Vec3::zeros(), Mat3::identity())
+            } else {
+                self.point_own_load(p, &ws.points[p], t, 1.0)
+            };
             ws.coupled.point_x[f] = force;
             ws.coupled.point_diag[f] = mass;
         }

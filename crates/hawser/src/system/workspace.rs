@@ -75,11 +75,7 @@ pub struct CouplingTracks {
 impl System {
     /// Scratch for this system.
     pub fn workspace(&self) -> Workspace {
-        let end_kind = |p: usize| match (self.points[p].free_index, self.point_slot[p]) {
-            (Some(f), _) => EndKind::Free(f),
-            (None, Some(s)) => EndKind::Free(s),
-            (None, None) => EndKind::Known,
-        };
+        let end_kind = |p: usize| self.end_kind(p);
         let lines = self.lines.iter().map(SystemLine::work).collect();
         let blocks = self
             .lines
@@ -134,6 +130,16 @@ impl System {
                     })
                     .collect(),
             },
+        }
+    }
+
+    /// What a line end attached to point `p` is in the coupled solve: the slot of a free
+    /// point or of a point on a free body, or a known end.
+    pub fn end_kind(&self, p: usize) -> EndKind {
+        match (self.points[p].free_index, self.point_slot[p]) {
+            (Some(f), _) => EndKind::Free(f),
+            (None, Some(s)) => EndKind::Free(s),
+            (None, None) => EndKind::Known,
         }
     }
 

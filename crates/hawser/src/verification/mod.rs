@@ -465,6 +465,7 @@ pub fn single_line(
         bodies: Vec::new(),
         settings: Settings::default(),
         outputs: Vec::new(),
+        failures: Vec::new(),
     }
 }
 

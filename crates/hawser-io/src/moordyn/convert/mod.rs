@@ -27,6 +27,7 @@ use std::path::{Path, PathBuf};
 use toml::Spanned;
 
 mod bodies;
+mod failures;
 mod line_types;
 mod options;
 mod outputs;
@@ -380,10 +381,13 @@ pub fn convert(
         .map(|b| (b.name.clone(), b.kind.moves()))
         .collect();
     let bodies = finish_bodies(&mut c, deck_bodies);
-    let (lines, line_outputs) = match deck.section(SectionKind::Lines) {
+    let (mut lines, line_outputs) = match deck.section(SectionKind::Lines) {
         Some(s) => convert_lines(&mut c, s, &points, &rod_ends.refused),
         None => (Vec::new(), false),
     };
+    if let Some(s) = deck.section(SectionKind::Failure) {
+        failures::convert_failures(&mut c, s, &mut lines);
+    }
     if deck.section(SectionKind::Lines).is_none() {
         let d = c
             .diag(Some(0..0), "LINES", "the deck has no LINES section")
@@ -938,6 +942,7 @@ fn convert_lines(
             order: None,
             sections: Vec::new(),
             winch: None,
+            failure: None,
         });
     }
     (out, any_outputs)

@@ -2,7 +2,7 @@
 //! [`hawser::model::Line`].
 
 use super::winch;
-use super::{Builder, Check, DEFAULT_DG_ORDER, POSITIVE};
+use super::{Builder, Check, DEFAULT_DG_ORDER, NON_NEGATIVE, POSITIVE};
 use crate::scenario::diagnostics::closest;
 use crate::scenario::schema::*;
 use hawser::model::*;
@@ -14,8 +14,10 @@ pub(super) fn build_lines(
     specs: &[LineSpec],
     types: &HashMap<String, usize>,
     points: &HashMap<String, usize>,
-) -> Vec<Line> {
+    line_types: &[LineType],
+) -> (Vec<Line>, Vec<LineFailure>) {
     let mut out = Vec::new();
+    let mut failures = Vec::new();
     let mut names = HashMap::new();
     for (i, l) in specs.iter().enumerate() {
         let k = |key: &str| format!("lines[{i}].{key}");
@@ -296,8 +298,127 @@ pub(super) fn build_lines(
             let line = out.last_mut().expect("just pushed");
             line.winch = winch::build_winch(b, w, &k("winch"), line);
         }
+        if let Some(f) = &l.failure {
+            let line = out.last().expect("just pushed");
+            if let Some(f) = build_failure(b, f, &k("failure"), i, line, line_types) {
+                failures.push(f);
+            }
+        }
     }
-    out
+    (out, failures)
+}
+
+/// Builds the failure of line `index` (`line`, already built) from `spec`; every problem
+/// becomes a diagnostic under `key` (`lines[i].failure`). `None` when it is refused.
+fn build_failure(
+    b: &mut Builder,
+    spec: &FailureSpec,
+    key: &str,
+    index: usize,
+    line: &Line,
+    line_types: &[LineType],
+) -> Option<LineFailure> {
+    let k = |x: &str| format!("{key}.{x}");
+    let end = match spec.end.get_ref() {
+        LineEndSpec::A => End::A,
+        LineEndSpec::B => End::B,
+    };
+    let errors = b.errors.len();
+    let refuse = |b: &mut Builder, message: String, expected: &str, hint: &str| {
+        let d = b
+            .diag(Some(spec.end.span()), key, message)
+            .expected(expected.to_string())
+            .hint(hint.to_string());
+        b.push(d);
+    };
+    if line.formulation == Formulation::Dg {
+        refuse(
+            b,
+            format!(
+                "line `{}` is a `dg` line, whose ends cannot release",
+                line.name
+            ),
+            "a failure on an `fe` or `hermite` line",
+            "a dg line's end conditions are built into its numerical flux: use \
+             `formulation = \"fe\"` or `\"hermite\"` for a line that fails",
+        );
+    }
+    if line.clamp[end.index()].is_some() {
+        refuse(
+            b,
+            format!(
+                "end {} of line `{}` is clamped",
+                end.name().to_uppercase(),
+                line.name
+            ),
+            "a failure at a pinned end",
+            "remove the end's `clamp_a`/`clamp_b`, or fail the other end",
+        );
+    }
+    let time = spec.time.as_ref().map(|t| {
+        b.num(
+            t,
+            &k("time"),
+            Check {
+                ok: NON_NEGATIVE,
+                expected: "s, ≥ 0",
+            },
+            "the time at which the end releases",
+        )
+    });
+    let mut tension = spec.tension.as_ref().map(|t| {
+        b.num(
+            t,
+            &k("tension"),
+            Check {
+                ok: POSITIVE,
+                expected: "N, > 0",
+            },
+            "the end tension at which the end releases (a breaking load)",
+        )
+    });
+    if let Some(mbl) = spec.at_breaking_load.as_ref().filter(|m| *m.get_ref()) {
+        // The section at the failing end.
+        let section = match end {
+            End::A => line.sections.first(),
+            End::B => line.sections.last(),
+        };
+        let lt = section.and_then(|s| line_types.get(s.line_type));
+        match (lt.and_then(|t| t.minimum_breaking_load), tension) {
+            (_, Some(_)) => {
+                let d = b
+                    .diag(
+                        Some(mbl.span()),
+                        &k("at_breaking_load"),
+                        "give either `tension` or `at_breaking_load`, not both",
+                    )
+                    .expected("one release tension")
+                    .hint("remove `tension` to release at the line type's breaking load");
+                b.push(d);
+            }
+            (Some(m), None) => tension = Some(m),
+            (None, None) => {
+                let d = b
+                    .diag(
+                        Some(mbl.span()),
+                        &k("at_breaking_load"),
+                        format!(
+                            "line type `{}` has no `minimum_breaking_load`",
+                            lt.map_or("?", |t| t.name.as_str())
+                        ),
+                    )
+                    .expected("a line type with `minimum_breaking_load` [N]")
+                    .hint("give the line type its `minimum_breaking_load`, or give `tension` [N]");
+                b.push(d);
+            }
+        }
+    }
+    (b.errors.len() == errors).then_some(LineFailure {
+        line: index,
+        end,
+        time,
+        tension,
+    })
 }
 
 pub(super) fn check_free_points_held(

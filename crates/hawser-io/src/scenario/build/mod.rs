@@ -284,7 +284,13 @@ pub fn build_scenario(
         .map(|s| s.name.get_ref().clone())
         .collect();
     let (points, point_index) = build_points(&mut b, &scenario.points, &environment, &body_names);
-    let lines = build_lines(&mut b, &scenario.lines, &type_index, &point_index);
+    let (lines, failures) = build_lines(
+        &mut b,
+        &scenario.lines,
+        &type_index,
+        &point_index,
+        &line_types,
+    );
     check_free_points_held(&mut b, &scenario.points, &lines, &points);
     if scenario.lines.is_empty() {
         let d = b
@@ -333,6 +339,7 @@ pub fn build_scenario(
         bodies,
         settings,
         outputs: Vec::new(),
+        failures,
     };
     model.settings.release = build_release(&mut b, scenario.simulation.as_ref(), &model);
     model.outputs = build_channels(&mut b, scenario.simulation.as_ref(), &model);

@@ -203,6 +203,8 @@ pub(super) const RANGES: &[(&str, Range)] = &[
     ("winch.minimum_length", all(0.0, 1e6, "m")),
     ("stages[].duration", TIME),
     ("stages[].payout_rate", all(-100.0, 100.0, "m/s")),
+    ("failure.time", TIME),
+    ("failure.tension", all(0.0, 1e12, "N")),
     // [[bodies]]
     ("bodies[].orientation", ANGLE),
     ("bodies[].centre_of_gravity", all(-1e4, 1e4, "m")),

@@ -123,8 +123,8 @@ pub(super) fn build_winch(
     ok &= b.errors.len() == errors;
     let winch = Winch {
         end: match spec.end.get_ref() {
-            WinchEndSpec::A => WinchEnd::A,
-            WinchEndSpec::B => WinchEnd::B,
+            LineEndSpec::A => WinchEnd::A,
+            LineEndSpec::B => WinchEnd::B,
         },
         stages,
         ramp_time,
