@@ -293,8 +293,8 @@ fn fe_and_hermite_agree_on_a_moving_fairlead() {
 }
 
 /// A cantilever clamped horizontally at a wall (`clamp`), its free end on a massless free
-/// point, sagging under its own weight in vacuum: Newton statics with the clamp constraint
-/// against Euler–Bernoulli's tip deflection q L⁴/(8 EI) (small deflection: 1.2e-3 of L) and
+/// point, sagging under its own weight in vacuum: statics with the clamp constraint (Newton
+/// stalls here and falls back to dynamic relaxation, docs/hermite.md) against Euler–Bernoulli's tip deflection q L⁴/(8 EI) (small deflection: 1.2e-3 of L) and
 /// tip slope q L³/(6 EI); then 2 s of RK4 dynamics released from the straight line, whose
 /// tip must swing below the static deflection (to about twice it) and keep the clamped
 /// tangent on its direction. Tolerance 1 % (geometric nonlinearity is O((δ/L)²) ≈ 1e-6; the
