@@ -162,12 +162,10 @@ fn every_error_variant_reads_as_words() {
             iterations: 40,
             residual: 1e-6,
         },
-        ModalError::PinnedBody { body: "arm".into() },
     ];
     for e in &modal {
         match e {
             ModalError::Unsupported { .. }
-            | ModalError::PinnedBody { .. }
             | ModalError::NoDegreesOfFreedom
             | ModalError::MassNotDefinite
             | ModalError::Singular { .. }

@@ -209,16 +209,6 @@ pub enum ModalError {
         /// Formulation name.
         formulation: &'static str,
     },
-    /// A pinned body: the linearisation takes every body's six motions as degrees of freedom.
-    #[error(
-        "body `{body}` is pinned, and the modal analysis linearises free bodies only (six \
-         degrees of freedom each); hint: run the dynamics, or make the body free to compute \
-         the modes"
-    )]
-    PinnedBody {
-        /// Body name.
-        body: String,
-    },
     /// Nothing can move: every line end is fixed or prescribed and no line has interior nodes.
     #[error(
         "the system has no degrees of freedom (no interior line nodes, free points or free \

@@ -243,14 +243,10 @@ pub struct Modes {
 
 /// Whether the modes of this system can be computed and labelled: no `dg` line (its unknowns
 /// are modal coefficients, not linearised; compute the modes of [`modal_twin`] instead). `fe`
-/// and `hermite` lines, free points and free bodies are; pinned bodies are not (their
-/// translations are not degrees of freedom of the linearisation). Call it before linearising.
+/// and `hermite` lines, free points, free bodies and pinned bodies are (a pinned body turns
+/// about its pin, whose motion is given: its three rotations are degrees of freedom, its
+/// translations are held, [`DofMap::held`]). Call it before linearising.
 pub fn supported(system: &System) -> Result<(), ModalError> {
-    if let Some(b) = system.bodies.iter().find(|b| b.body.kind.pin().is_some()) {
-        return Err(ModalError::PinnedBody {
-            body: b.body.name.clone(),
-        });
-    }
     match system.lines.iter().find(|l| l.dg().is_some()) {
         Some(l) => Err(ModalError::Unsupported {
             line: l.name.clone(),
@@ -290,27 +286,33 @@ pub fn natural_modes(
 ) -> Result<Modes, ModalError> {
     supported(system)?;
     let n = lin.dofs.len();
-    if n == 0 {
+    // A pinned body's translations are held by its pin: the eigenproblem is the one on the
+    // other degrees of freedom (the held rows and columns removed, or projected out of the
+    // subspace iteration), and the held components of every shape are zero.
+    let held = lin.dofs.held();
+    let free = n - held.len();
+    if free == 0 {
         return Err(ModalError::NoDegreesOfFreedom);
     }
-    let count = options.count.clamp(1, n);
+    let count = options.count.clamp(1, free);
     let k = lin.stiffness.symmetric_part();
     let m = &lin.mass;
     let dense = |k: &crate::linearise::BlockMatrix| {
-        dense_generalized(&k.to_dense(&lin.dofs), &m.to_dense(&lin.dofs)).map(|mut p| {
+        let kept = without_held(&k.to_dense(&lin.dofs), &held);
+        dense_generalized(&kept, &without_held(&m.to_dense(&lin.dofs), &held)).map(|mut p| {
             p.values.truncate(count);
-            p.vectors = p.vectors.columns(0, count).into_owned();
+            p.vectors = with_held(&p.vectors.columns(0, count).into_owned(), &held, n);
             p
         })
     };
     let method = match options.method {
-        EigenMethod::Auto if n <= 150 || 3 * count >= n => EigenMethod::Dense,
+        EigenMethod::Auto if free <= 150 || 3 * count >= free => EigenMethod::Dense,
         other => other,
     };
     let mut fallback = None;
     let (pairs, method, shift) = match method {
         EigenMethod::Dense => (dense(&k).map_err(failure)?, EigenMethod::Dense, 0.0),
-        _ => match shift_invert(lin, &k, count, options) {
+        _ => match shift_invert(lin, &k, count, &held, options) {
             Ok((p, s)) => (p, EigenMethod::ShiftInvert, s),
             Err(e) if options.method == EigenMethod::Auto && n <= 2000 => {
                 let p = dense(&k).map_err(|_| e.clone())?;
@@ -356,6 +358,7 @@ fn shift_invert(
     lin: &Linearisation,
     k: &crate::linearise::BlockMatrix,
     count: usize,
+    held: &[usize],
     options: &ModalOptions,
 ) -> Result<(EigenPairs, Real), ModalError> {
     let map = &lin.dofs;
@@ -380,8 +383,16 @@ fn shift_invert(
             sigma,
             (k.row_sum_norm(map), m.row_sum_norm(map)),
             |b, x| solver.solve(map, b, x).is_ok() && x.iter().all(|v| v.is_finite()),
-            |x, y| k.apply(map, x, y),
-            |x, y| m.apply(map, x, y),
+            // K and M projected onto the free degrees of freedom (the solver holds the
+            // others at zero): the reactions in the held rows are no part of the residual.
+            |x, y| {
+                k.apply(map, x, y);
+                held.iter().for_each(|&i| y[i] = 0.0);
+            },
+            |x, y| {
+                m.apply(map, x, y);
+                held.iter().for_each(|&i| y[i] = 0.0);
+            },
             options.subspace,
         );
         match result {
@@ -395,6 +406,30 @@ fn shift_invert(
         }
     }
     Err(last)
+}
+
+/// `a` without the rows and columns `held` (increasing indices).
+fn without_held(a: &nalgebra::DMatrix<Real>, held: &[usize]) -> nalgebra::DMatrix<Real> {
+    if held.is_empty() {
+        return a.clone();
+    }
+    let kept: Vec<usize> = (0..a.nrows())
+        .filter(|i| held.binary_search(i).is_err())
+        .collect();
+    nalgebra::DMatrix::from_fn(kept.len(), kept.len(), |r, c| a[(kept[r], kept[c])])
+}
+
+/// The vectors `v` over the kept degrees of freedom back on all `n`, zero in the rows `held`.
+fn with_held(v: &nalgebra::DMatrix<Real>, held: &[usize], n: usize) -> nalgebra::DMatrix<Real> {
+    if held.is_empty() {
+        return v.clone();
+    }
+    let mut out = nalgebra::DMatrix::zeros(n, v.ncols());
+    let kept = (0..n).filter(|i| held.binary_search(i).is_err());
+    for (r, i) in kept.enumerate() {
+        out.row_mut(i).copy_from(&v.row(r));
+    }
+    out
 }
 
 /// Frame of a line's static shape for labelling: node positions and the plane normal.

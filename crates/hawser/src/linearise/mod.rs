@@ -460,6 +460,10 @@ pub struct DofMap {
     free_point_groups: Vec<usize>,
     /// Translation group of each free body, in `System::free_bodies` order.
     body_groups: Vec<usize>,
+    /// Whether each free body's translation is held by its pin (a pinned body: its origin
+    /// follows the pin's given motion, so its translation group is a constrained group whose
+    /// displacement is zero; only its rotations are free), in `System::free_bodies` order.
+    body_pinned: Vec<bool>,
     /// Vector count of each line.
     line_vectors: Vec<usize>,
     /// Vector index of each node, per line.
@@ -510,12 +514,18 @@ impl DofMap {
                 };
             }
         }
+        let body_pinned = system
+            .free_bodies
+            .iter()
+            .map(|&b| system.bodies[b].body.kind.pin().is_some())
+            .collect();
         Self {
             owners,
             line_first,
             point_target,
             free_point_groups,
             body_groups,
+            body_pinned,
             line_vectors: system.lines.iter().map(|l| l.vectors()).collect(),
             node_vectors: system
                 .lines
@@ -573,6 +583,20 @@ impl DofMap {
         self.owners
             .iter()
             .position(|o| *o == DofOwner::BodyTranslation { body })
+    }
+
+    /// The degrees of freedom held at zero by pins: the three translations of each pinned
+    /// body's origin, in increasing order. The linearisation keeps them (the dynamics' block
+    /// structure has six unknowns per integrated body), and the solvers over the degrees of
+    /// freedom hold them: [`BlockSolver`] replaces their rows by δr = 0, and the modal analysis
+    /// removes them before the eigenproblem.
+    pub fn held(&self) -> Vec<usize> {
+        self.body_groups
+            .iter()
+            .zip(&self.body_pinned)
+            .filter(|(_, pinned)| **pinned)
+            .flat_map(|(&g, _)| 3 * g..3 * g + 3)
+            .collect()
     }
 
     /// The displacement of a target in the degrees of freedom `x` [m] (zero for a fixed one).
@@ -1039,6 +1063,11 @@ impl BlockSolver {
         for (f, x) in self.coupled.body_x.iter_mut().enumerate() {
             let o = 3 * map.body_groups[f];
             *x = Vec6::from_fn(|k, _| b[o + k]);
+        }
+        // A pinned body's translation is held: its three rows become δr = 0 (the pin's
+        // motion is given), as the dynamics hold them (`CoupledSystem::body_pin`).
+        for (pin, &pinned) in self.coupled.body_pin.iter_mut().zip(&map.body_pinned) {
+            *pin = pinned.then(Vec3::zeros);
         }
         self.coupled.solve(&mut self.lines)
     }
