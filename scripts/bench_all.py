@@ -18,7 +18,7 @@ Targets printed (each with its measured value):
      per step <= 3x still water (and direct summation for comparison).
   4. A 1000 m chain at 20 to 1280 segments (hawser only): CPU per node-step and per
      simulated second at the automatic step.
-  5. The stiff-seabed chain (examples/stiff_seabed_chain.toml, scripts/stiff_chain.py): hawser
+  5. The stiff-seabed chain (tests/data/stiff_seabed_chain.toml, scripts/stiff_chain.py): hawser
      `scheme = "auto"` against MoorDyn RK2 at its largest stable dtM, CPU per run (target
      >= 20x) and the top tension's cycle maxima against the converged RK4 reference (target
      within 0.5 %).

@@ -1,4 +1,4 @@
-//! The stiff-seabed chain (`examples/stiff_seabed_chain.toml`: a studless chain on a seabed of
+//! The stiff-seabed chain (`tests/data/stiff_seabed_chain.toml`: a studless chain on a seabed of
 //! 1.8e9 Pa/m, critically damped, its top end on a vertical circle of radius 0.2 m and period
 //! 1.25 s): the scheme `scheme = "auto"` picks must give the top tension's cycle maxima within
 //! 0.5 % of the converged explicit run, the target of docs/implicit.md.
@@ -27,7 +27,8 @@ const RAMP: Real = 2.5;
 const DURATION: Real = 5.0;
 
 fn model() -> Model {
-    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples/stiff_seabed_chain.toml");
+    let path =
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../tests/data/stiff_seabed_chain.toml");
     let mut model = hawser_io::scenario::load(&path).unwrap().model;
     model.lines[0].sections[0].elements = 33;
     model.settings.duration = DURATION;
