@@ -11,7 +11,7 @@
 //! checked when this test was written: the test also checks it, so that a reference that is
 //! not converged fails here instead of hiding an error). 0.5 % is the target's own bound.
 //!
-//! Cost: about a second in release (`cargo test --release -p hawser-io --test
+//! Cost: about six seconds of CPU in release (`cargo test --release -p hawser-io --test
 //! stiff_seabed_chain`).
 
 use hawser::analysis::Channel;
