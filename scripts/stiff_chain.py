@@ -26,7 +26,6 @@ hawser's CPU time is `hawser bench --json` (the running thread's CPU clock).
 from __future__ import annotations
 
 import argparse
-import contextlib
 import csv
 import json
 import math
@@ -42,6 +41,8 @@ ROOT = os.path.dirname(HERE)
 SCENARIO = os.path.join(ROOT, "tests", "data", "stiff_seabed_chain.toml")
 DECK = os.path.join(ROOT, "tests", "data", "moordyn", "stiff_seabed_chain.txt")
 HAWSER = os.path.join(ROOT, "target", "release", "hawser")
+sys.path.insert(0, HERE)
+from moordyn_bench import redirect_fd1  # noqa: E402
 
 TOP = (32.3, 0.0, -0.3)  # the top end's static position [m]
 RADIUS = 0.2  # orbit radius [m]
@@ -163,21 +164,6 @@ def reference(hawser, tmp, verbose=True):
 # --------------------------------------------------------------------------------- MoorDyn
 
 
-@contextlib.contextmanager
-def quiet_fd1(path):
-    sys.stdout.flush()
-    saved = os.dup(1)
-    fd = os.open(path, os.O_WRONLY | os.O_CREAT | os.O_APPEND, 0o644)
-    try:
-        os.dup2(fd, 1)
-        yield
-    finally:
-        sys.stdout.flush()
-        os.dup2(saved, 1)
-        os.close(fd)
-        os.close(saved)
-
-
 def moordyn_deck(tmp, dtm):
     """A copy of the deck with dtM set."""
     with open(DECK, encoding="utf-8") as fh:
@@ -203,7 +189,7 @@ def moordyn_run(tmp, dtm, coupling=0.002, duration=DURATION):
         xs.append(list(a))
         vs.append([(q - p) / coupling for p, q in zip(a, b)])
     times, values = [], []
-    with quiet_fd1(os.path.join(tmp, "console.txt")):
+    with redirect_fd1(os.path.join(tmp, "console.txt")):
         system = moordyn.Create(deck)
         moordyn.Init(system, list(TOP), [0.0, 0.0, 0.0])
         line = moordyn.GetLine(system, 1)
