@@ -18,7 +18,11 @@ Targets printed (each with its measured value):
      per step <= 3x still water (and direct summation for comparison).
   4. A 1000 m chain at 20 to 1280 segments (hawser only): CPU per node-step and per
      simulated second at the automatic step.
-Not measured here: the stiff-seabed chain case and the parameter sweep (see BENCHMARKS.md).
+  5. The stiff-seabed chain (tests/data/stiff_seabed_chain.toml, scripts/stiff_chain.py): hawser
+     `scheme = "auto"` against MoorDyn RK2 at its largest stable dtM, CPU per run (target
+     >= 20x) and the top tension's cycle maxima against the converged RK4 reference (target
+     within 0.5 %).
+Not measured here: the parameter sweep (see BENCHMARKS.md).
 """
 
 from __future__ import annotations
@@ -38,6 +42,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
 import moordyn_bench as mb  # noqa: E402
+import stiff_chain as sc  # noqa: E402
 
 # run_once times its stepping loop with time.perf_counter: make that this process's CPU time.
 mb.time = types.SimpleNamespace(perf_counter=time.process_time)
@@ -75,6 +80,9 @@ def main():
     p.add_argument("--segments", default="20,40,80,160,320,640,1280")
     p.add_argument("--chain-duration", type=float, default=1.0,
                    help="1000 m chain simulated time [s]")
+    p.add_argument("--stiff-dtm", type=float, default=sc.MOORDYN_LARGEST_STABLE_DTM,
+                   help="MoorDyn's dtM for the stiff-seabed chain [s] (default: its largest "
+                   "stable step, `scripts/stiff_chain.py bisect`)")
     a = p.parse_args()
     from importlib.metadata import version
 
@@ -163,6 +171,34 @@ def main():
         per_node_step = r["cpu_s"] / (r["nodes"] * r["steps"])
         print(f"  {n:>8} {r['time_step']:>10.3e} {per_node_step * 1e9:>13.0f} "
               f"{r['cpu_s'] / r['duration']:>22.3e}")
+
+    # 5. The stiff-seabed chain.
+    stiff(a, tmp)
+
+
+def stiff(a, tmp):
+    """The stiff-seabed chain: paired CPU ratio MoorDyn RK2 / hawser auto, and the maxima."""
+    path = sc.write(tmp, "stiff_auto.toml", sc.scenario_text())
+    t, v, stats = sc.hawser_series(a.hawser, path, tmp)
+    err = sc.worst_error(sc.cycle_maxima(t, v), sc.REFERENCE_MAXIMA)
+    md_t, md_v, _ = sc.moordyn_run(tmp, a.stiff_dtm)
+    md_err = sc.worst_error(sc.cycle_maxima(md_t, md_v), sc.REFERENCE_MAXIMA)
+    pairs = []
+    for _ in range(a.repeats):
+        _, _, md = sc.moordyn_run(tmp, a.stiff_dtm)
+        h = sc.hawser_bench(a.hawser, path)
+        pairs.append((md, h))
+    ratio = statistics.median(m / h["cpu_s"] for m, h in pairs)
+    print("\nStiff-seabed chain (33 m, 165 segments, seabed 1.8e9 Pa/m critically damped, top "
+          f"on a 0.2 m / 1.25 s vertical circle, {sc.DURATION:g} s simulated)")
+    print(f"  MoorDyn RK2 dtM {a.stiff_dtm:.3e} s: CPU {statistics.median(m for m, _ in pairs):.3f}"
+          f" s, cycle maxima within {md_err * 100:.3f} % of the RK4 reference")
+    print(f"  hawser auto ({pairs[0][1]['scheme']}): CPU "
+          f"{statistics.median(h['cpu_s'] for _, h in pairs):.3f} s, {stats or 'explicit'}")
+    print(f"  target: MoorDyn CPU / hawser auto's >= 20: {ratio:.2f} "
+          f"[{'met' if ratio >= 20 else 'NOT met'}]")
+    print(f"  target: hawser auto's cycle maxima within 0.5 % of the RK4 reference: "
+          f"{err * 100:.3f} % [{'met' if err <= 5e-3 else 'NOT met'}]")
 
 
 if __name__ == "__main__":
