@@ -9,10 +9,12 @@
 //! ([`crate::system::SystemFailure::free_end`]), moves the line end onto it, and wakes it.
 //! The state keeps its length and nothing is allocated. The Runge–Kutta schemes keep no
 //! history, so the next step starts cleanly from the new state; the three-level and
-//! generalized-α schemes, whose history and iteration matrix assume fixed attachments, are
-//! refused for a model with failures ([`crate::error::ModelError::SchemeCannotRelease`]).
+//! generalized-α schemes, whose history (the previous level; the accelerations, the Jacobian
+//! and the iteration matrix) belongs to the system before the release, restart it from the
+//! state at the release as at the start of a run ([`Stepper::restart`]).
 
 use super::Stepper;
+use super::stepper::Integrator;
 use crate::error::SimulationError;
 use crate::math::{Real, set3};
 use crate::model::End;
@@ -169,6 +171,7 @@ impl Stepper {
         set3(&mut self.state[o..], 0, &at.position);
         set3(&mut self.state[o..], 1, &at.velocity);
         point_end(system, &mut self.ws, k, true);
+        self.restart();
         self.releases[k] = Some(Release {
             time: self.time(),
             tension,
@@ -178,11 +181,37 @@ impl Stepper {
         Ok(())
     }
 
-    /// Sets the system's failing line ends to the stepper's releases (after a restore).
+    /// Sets the system's failing line ends to the stepper's releases (after a restore), and
+    /// generalized-α's iteration matrix to the line ends' kinds.
     pub(crate) fn apply_releases(&mut self, system: &mut System) {
         for k in 0..system.failures.len() {
             point_end(system, &mut self.ws, k, self.releases[k].is_some());
         }
+        if let Integrator::GeneralizedAlpha { scheme, .. } = &mut self.integrator {
+            scheme.follow_ends(&self.ws);
+        }
         self.invalidate();
+    }
+
+    /// Restarts the scheme's history at a release, from the state and time of the release,
+    /// as at the start of a run: the three-level scheme's next step is its Taylor start from
+    /// the positions and velocities ([`crate::integrate::ThreeLevel::restart`]);
+    /// generalized-α's takes the consistent accelerations of the new state and a fresh
+    /// Jacobian ([`crate::integrate::GeneralizedAlpha::restart`]), and with adaptive steps its
+    /// controller starts again from the run's first step (its a-priori accuracy step) or the
+    /// current one, whichever is shorter: the release is a jump in the accelerations, which
+    /// the controller's step before it knew nothing of. The Runge–Kutta schemes keep no
+    /// history. Allocates nothing.
+    fn restart(&mut self) {
+        match &mut self.integrator {
+            Integrator::Rk(_) => {}
+            Integrator::ThreeLevel { scheme, .. } => scheme.restart(),
+            Integrator::GeneralizedAlpha { scheme, adaptive } => {
+                scheme.restart(&self.ws);
+                if *adaptive {
+                    self.clock.nominal = self.clock.nominal.min(self.first_step);
+                }
+            }
+        }
     }
 }
