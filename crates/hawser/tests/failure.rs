@@ -139,6 +139,7 @@ fn a_cut_line_stops_pulling_its_attachment_within_one_step() {
         m.failures.push(LineFailure {
             line: 0,
             end: End::B,
+            joined: vec![],
             time: Some(1.0),
             tension: None,
         });
@@ -230,6 +231,7 @@ fn settles(stepped: (Scheme, TimeStep, bool)) {
     m.failures.push(LineFailure {
         line: 0,
         end: End::B,
+        joined: vec![],
         time: Some(0.5),
         tension: None,
     });
@@ -300,6 +302,7 @@ fn a_tension_trigger_fires_at_the_first_step_above_the_threshold() {
     m.failures.push(LineFailure {
         line: 0,
         end: End::A,
+        joined: vec![],
         time: None,
         tension: Some(threshold),
     });
@@ -336,6 +339,7 @@ fn checkpoints_across_a_failure_resume_bit_for_bit() {
         m.failures.push(LineFailure {
             line: 0,
             end: End::B,
+            joined: vec![],
             time: Some(1.0),
             tension: None,
         });
@@ -375,6 +379,7 @@ fn a_host_releases_a_declared_end() {
         m.failures.push(LineFailure {
             line: 1,
             end: End::B,
+            joined: vec![],
             time: None,
             tension: None,
         });
@@ -411,6 +416,7 @@ fn bad_failures_are_refused() {
     let f = LineFailure {
         line: 0,
         end: End::A,
+        joined: vec![],
         time: Some(1.0),
         tension: None,
     };
@@ -473,6 +479,7 @@ fn after_cut(scheme: Scheme, mass: MassMatrix, h: Real) -> Vec3 {
     m.failures.push(LineFailure {
         line: 0,
         end: End::B,
+        joined: vec![],
         time: Some(1.0),
         tension: None,
     });

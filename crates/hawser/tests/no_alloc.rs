@@ -530,12 +530,14 @@ fn session_with_failures(scheme: Scheme) {
         LineFailure {
             line: 0,
             end: End::A,
+            joined: vec![],
             time: None,
             tension: Some(1e9),
         },
         LineFailure {
             line: 0,
             end: End::B,
+            joined: vec![],
             time: Some(2.0),
             tension: None,
         },

@@ -67,6 +67,8 @@ pub struct FailureEvent {
     pub line: String,
     /// Which end released.
     pub end: End,
+    /// Further line ends released with it onto the same free point, (line name, end).
+    pub joined: Vec<(String, End)>,
     /// Name of the point it released from.
     pub attachment: String,
     /// Time [s], tension [N] and cause.
@@ -85,6 +87,11 @@ pub fn failure_events(system: &System, releases: &[Option<Release>]) -> Vec<Fail
                 failure: k,
                 line: system.lines[f.line].name.clone(),
                 end: f.end,
+                joined: f
+                    .joined
+                    .iter()
+                    .map(|&(l, e)| (system.lines[l].name.clone(), e))
+                    .collect(),
                 attachment: system.points[f.attachment].name.clone(),
                 release,
             })
@@ -92,25 +99,43 @@ pub fn failure_events(system: &System, releases: &[Option<Release>]) -> Vec<Fail
         .collect()
 }
 
-/// Points each failing line end at its attachment or, once released, at its free end, and
-/// sets the free end's dormancy and the end's kind in the coupled solve to match.
+/// Points the line ends of failure `k` at their attachment or, once released, at its free
+/// end, and sets the free end's dormancy and the ends' kind in the coupled solve to match.
 fn point_end(system: &mut System, ws: &mut crate::system::Workspace, k: usize, released: bool) {
     let f = &system.failures[k];
-    let (line, end, free_end) = (f.line, f.end, f.free_end);
+    let free_end = f.free_end;
     let target = if released { free_end } else { f.attachment };
     system.points[free_end].dormant = !released;
     let kind = system.end_kind(target);
-    let (l, b) = (&mut system.lines[line], &mut ws.blocks[line]);
-    match end {
-        End::A => {
-            l.end_a = target;
-            b.end_a = kind;
-        }
-        End::B => {
-            l.end_b = target;
-            b.end_b = kind;
+    for j in 0..=system.failures[k].joined.len() {
+        let f = &system.failures[k];
+        let (line, end) = if j == 0 {
+            (f.line, f.end)
+        } else {
+            f.joined[j - 1]
+        };
+        let (l, b) = (&mut system.lines[line], &mut ws.blocks[line]);
+        match end {
+            End::A => {
+                l.end_a = target;
+                b.end_a = kind;
+            }
+            End::B => {
+                l.end_b = target;
+                b.end_b = kind;
+            }
         }
     }
+}
+
+/// The tension [N] of failure `k` at the evaluation in `ws`: the magnitude of the vector sum
+/// of its ends' forces on their attachment, |Σ F_end| (one end: its end tension).
+pub(crate) fn failure_tension(system: &System, ws: &crate::system::Workspace, k: usize) -> Real {
+    system.failures[k]
+        .ends()
+        .map(|(line, end)| system.end_force(ws, line, end == End::B))
+        .sum::<crate::math::Vec3>()
+        .norm()
 }
 
 impl Stepper {
@@ -140,7 +165,7 @@ impl Stepper {
                 continue;
             }
             let ws = self.evaluate(system)?;
-            let tension = system.end_force(ws, f.line, f.end == End::B).norm();
+            let tension = failure_tension(system, ws, k);
             if timed {
                 return Ok(Some((k, ReleaseCause::Time, tension)));
             }
