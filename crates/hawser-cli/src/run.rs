@@ -555,9 +555,14 @@ fn failure_message(f: &hawser::session::FailureEvent) -> String {
         hawser::session::ReleaseCause::Tension => "its failure tension",
         hawser::session::ReleaseCause::Host => "the host's call",
     };
+    let joined: String = f
+        .joined
+        .iter()
+        .map(|(line, end)| format!(" and line {line} end {}", end.name()))
+        .collect();
     format!(
-        "failure: line {} end {} released from point {} at t = {:.6} s (end tension {:.6e} N; \
-         released by {why}); the run went on with the end free",
+        "failure: line {} end {}{joined} released from point {} at t = {:.6} s (end tension \
+         {:.6e} N; released by {why}); the run went on with the end free",
         f.line,
         f.end.name(),
         f.attachment,

@@ -312,11 +312,19 @@ fn a_folder_holding_a_run_is_refused_without_overwrite() {
 /// fairlead at 5 s; the run is stopped before that (SIGINT at a third of its rows, 4 s), and
 /// resumed, and once more killed after a checkpoint past it (every 2 s); both end
 /// byte-identical to the uninterrupted run. The uninterrupted run says so on stderr and lists
-/// the release in `summary.json` and `status.json`.
+/// the release in `summary.json` and `status.json`. With RK4 (the example's scheme) and
+/// with adaptive generalized-α, whose history restarts at the release (the restarted
+/// accelerations and Jacobian, and the controller's step, are in the checkpoint).
 #[test]
 fn a_line_failure_resumes_bit_for_bit() {
-    for (name, kill) in [("failure_sigint", false), ("failure_kill", true)] {
-        let (dir, path) = scenario(name, "catenary_mooring.toml", 12.0, "");
+    let ga = "scheme = \"generalized-alpha\"";
+    for (name, kill, extra) in [
+        ("failure_sigint", false, ""),
+        ("failure_kill", true, ""),
+        ("failure_ga_sigint", false, ga),
+        ("failure_ga_kill", true, ga),
+    ] {
+        let (dir, path) = scenario(name, "catenary_mooring.toml", 12.0, extra);
         let mut text = std::fs::read_to_string(&path).unwrap();
         text.push_str("\n[lines.failure]\nend = \"B\"\ntime = 5.0\n");
         std::fs::write(&path, text).unwrap();

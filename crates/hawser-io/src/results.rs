@@ -700,19 +700,29 @@ pub fn statics_json(system: &System, ws: &Workspace) -> Value {
 /// Warnings as JSON: an array of `{"kind": …, "message": …}` (`summary.json`, `status.json`,
 /// `hawser statics --json`).
 /// Line failures as JSON: per release, the line, end, attachment, time [s], tension [N] and
-/// cause, in the model's order of failures.
+/// cause, in the model's order of failures; with `joined` (`[{line, end}]`) the further line
+/// ends released with it onto the same free point, when there are any.
 pub fn failures_json(events: &[hawser::session::FailureEvent]) -> Value {
     events
         .iter()
         .map(|e| {
-            json!({
+            let mut v = json!({
                 "line": e.line,
                 "end": e.end.name(),
                 "attachment": e.attachment,
                 "time": e.release.time,
                 "tension": e.release.tension,
                 "cause": e.release.cause.name(),
-            })
+            });
+            if !e.joined.is_empty() {
+                v["joined"] = e
+                    .joined
+                    .iter()
+                    .map(|(line, end)| json!({"line": line, "end": end.name()}))
+                    .collect::<Vec<_>>()
+                    .into();
+            }
+            v
         })
         .collect::<Vec<_>>()
         .into()

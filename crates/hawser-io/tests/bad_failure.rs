@@ -81,6 +81,7 @@ fn failure_reads_as_the_core_type() {
         [LineFailure {
             line: 1,
             end: End::B,
+            joined: vec![],
             time: Some(30.0),
             tension: Some(2.0e5),
         }]
@@ -219,12 +220,14 @@ fn moordyn_failure_rows_map_to_line_ends() {
             LineFailure {
                 line: 0,
                 end: End::B,
+                joined: vec![],
                 time: Some(12.5),
                 tension: None
             },
             LineFailure {
                 line: 1,
                 end: End::A,
+                joined: vec![],
                 time: None,
                 tension: Some(3.0e6)
             },
@@ -236,9 +239,17 @@ fn moordyn_failure_rows_map_to_line_ends() {
     assert_eq!(&again.model.failures, f);
 }
 
+/// A row of several lines must name lines that all have an end at its point: OC3's line 2
+/// runs from point 2 to point 5, not to point 4.
 #[test]
-fn moordyn_failure_of_several_lines_together() {
-    insta::assert_snapshot!(parse_deck(&deck_with("1  4  1,2  0  1.2e6\n")).unwrap_err());
+fn moordyn_failure_of_several_lines_not_all_at_the_point() {
+    let e = parse_deck(&deck_with("1  4  1,2  0  1.2e6\n")).unwrap_err();
+    assert!(
+        e.contains("failure 1: line 2 is not attached to 4 (its ends are at P2 and P5)")
+            && e.contains("FAILURE › 1 › Lines")
+            && e.contains("hint:"),
+        "{e}"
+    );
 }
 
 #[test]
@@ -254,4 +265,84 @@ fn moordyn_failure_of_an_unknown_line() {
 #[test]
 fn moordyn_failure_with_a_negative_tension() {
     insta::assert_snapshot!(parse_deck(&deck_with("1  4  1  0  -5\n")).unwrap_err());
+}
+
+// ---- [[failures]]: several line ends released together ---------------------------------------
+
+/// `BASE` without the line's own failure and with a `[[failures]]` table of `table` (its keys).
+fn joined(table: &str) -> String {
+    let base = replaced(
+        BASE,
+        "[lines.failure]\nend = \"B\"\ntime = 30.0\ntension = 2.0e5\n",
+        "",
+    );
+    format!("{base}\n[[failures]]\n{table}")
+}
+
+/// Both lines' buoy ends release together at 30 s onto one free point: the model's failure
+/// has the first end and the second as joined; the tension trigger reads the same way.
+#[test]
+fn joined_failure_reads_as_the_core_type() {
+    let s = scenario::parse(
+        Path::new(FILE),
+        &joined("point = \"buoy\"\nlines = [\"west\", \"east\"]\ntime = 30.0\ntension = 4.0e5\n"),
+    )
+    .unwrap();
+    assert_eq!(
+        s.model.failures,
+        vec![LineFailure {
+            line: 0,
+            end: End::B,
+            joined: vec![(1, End::B)],
+            time: Some(30.0),
+            tension: Some(4.0e5),
+        }]
+    );
+}
+
+/// Bad `[[failures]]` tables are refused at the line and key of the bad value, with what is
+/// expected and a hint: an unknown point, one line only, an unknown line, a line not at the
+/// point, a line listed twice, a line end that already has a `[lines.failure]`, a negative
+/// time.
+#[test]
+fn bad_joined_failures_are_refused() {
+    let both = "lines = [\"west\", \"east\"]\n";
+    let m = bad(
+        &joined(&format!("point = \"boy\"\n{both}time = 1.0\n")),
+        "point = \"boy\"",
+        "failures[0].point",
+    );
+    assert!(m.contains("did you mean `buoy`?"), "{m}");
+    let m = bad(
+        &joined("point = \"buoy\"\nlines = [\"west\"]\n"),
+        "lines = [\"west\"]",
+        "failures[0].lines",
+    );
+    assert!(m.contains("`[lines.failure]`"), "{m}");
+    let m = bad(
+        &joined("point = \"buoy\"\nlines = [\"west\", \"eats\"]\n"),
+        "lines = [",
+        "failures[0].lines[1]",
+    );
+    assert!(m.contains("did you mean `east`?"), "{m}");
+    let m = bad(
+        &joined(&format!("point = \"west_anchor\"\n{both}")),
+        "lines = [",
+        "failures[0].lines[1]",
+    );
+    assert!(m.contains("neither of its ends is at the point"), "{m}");
+    let m = bad(
+        &joined("point = \"buoy\"\nlines = [\"west\", \"east\", \"west\"]\n"),
+        "lines = [",
+        "failures[0].lines[2]",
+    );
+    assert!(m.contains("listed twice"), "{m}");
+    let with_own = format!("{BASE}\n[[failures]]\npoint = \"buoy\"\n{both}");
+    let m = bad(&with_own, "lines = [", "failures[0].lines[1]");
+    assert!(m.contains("already has a failure"), "{m}");
+    bad(
+        &joined(&format!("point = \"buoy\"\n{both}time = -1.0\n")),
+        "time = -1.0",
+        "failures[0].time",
+    );
 }

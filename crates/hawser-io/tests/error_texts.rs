@@ -59,10 +59,6 @@ fn every_error_variant_reads_as_words() {
             scheme: "three-level",
             body: "buoy".into(),
         },
-        ModelError::SchemeCannotRelease {
-            scheme: "generalized-alpha",
-            line: "L1".into(),
-        },
         ModelError::StateLength {
             given: 3,
             expected: 6,
@@ -76,7 +72,6 @@ fn every_error_variant_reads_as_words() {
             ModelError::Invalid { .. }
             | ModelError::SchemeCannotStepDg { .. }
             | ModelError::SchemeCannotStepBodies { .. }
-            | ModelError::SchemeCannotRelease { .. }
             | ModelError::StateLength { .. }
             | ModelError::MasslessDgJoint { .. } => check(&e.to_string()),
         }

@@ -25,19 +25,6 @@ pub enum ModelError {
         /// The first `dg` line's name.
         line: String,
     },
-    /// A line failure in a run whose scheme keeps a history of the state (the three-level
-    /// scheme's previous level, generalized-α's accelerations and Jacobian structure).
-    #[error(
-        "line {line}: has a failure (a line end that releases during the run), which the \
-         {scheme} scheme cannot step yet: its history and iteration matrix assume fixed \
-         attachments; use scheme = \"rk4\" or \"ssp-rk3\""
-    )]
-    SchemeCannotRelease {
-        /// The scheme's name as in the scenario key (`three-level`).
-        scheme: &'static str,
-        /// The first failing line's name.
-        line: String,
-    },
     /// A free rigid body in a run whose scheme does not integrate rigid bodies.
     #[error(
         "body {body}: is free: the {scheme} scheme does not integrate rigid bodies; use \

@@ -97,69 +97,116 @@ fn reaction(session: &mut Session, line: usize, p: usize) -> Vec3 {
     f
 }
 
-/// A line cut at a known time: the release lands on the first step end at or after it, the
-/// weight's reaction from the cut line is its tension (≈ a third of the wet weight's pull)
-/// the step before and exactly zero from that step on, and the line's free end carries no
-/// force: the massless free end's equation (m_end a = F_end) leaves F_end − m_end a = 0 to
-/// the round-off of the mass solve (1e-9 of the tension before).
+/// The schemes a release is stepped by, with their step rules: RK4 and the three-level
+/// scheme at their automatic steps, generalized-α with adaptive steps and at a fixed 10 ms.
+/// The last on lines that carry compression (`true`): on tension-only lines the released
+/// end recoils into slack within a step of that length (the end node's 8.2 kN over its 16.5 kg
+/// take up the element's 2 mm stretch in about 3 ms), and the Newton iterations of a fixed
+/// step do not converge on that kink (docs/failure.md); adaptive steps shorten through it.
+fn schemes() -> [(Scheme, TimeStep, bool); 4] {
+    [
+        (Scheme::Rk4, TimeStep::Auto, false),
+        (Scheme::ThreeLevel, TimeStep::Auto, false),
+        (Scheme::GeneralizedAlpha, TimeStep::Auto, false),
+        (Scheme::GeneralizedAlpha, TimeStep::Fixed(0.01), true),
+    ]
+}
+
+/// The tripod with its scheme set ([`schemes`]).
+fn tripod_stepped(
+    elements: usize,
+    formulation: Formulation,
+    (scheme, time_step, compression): (Scheme, TimeStep, bool),
+) -> Model {
+    let mut m = tripod(elements, formulation);
+    m.settings.scheme = scheme;
+    m.settings.time_step = time_step;
+    m.line_types[0].compression = compression;
+    m
+}
+
+/// A line cut at a known time: the release lands on the first step end at or after it (an
+/// adaptive generalized-α step lands on it exactly), the weight's reaction from the cut line
+/// is its tension (≈ a third of the wet weight's pull) the step before and exactly zero from
+/// that step on, and the line's free end carries no force: the massless free end's equation
+/// (m_end a = F_end) leaves F_end − m_end a = 0 to the round-off of the mass solve (1e-9 of
+/// the tension before). Under every scheme: the three-level and generalized-α schemes
+/// restart their history at the release and step on.
 #[test]
 fn a_cut_line_stops_pulling_its_attachment_within_one_step() {
-    let mut m = tripod(10, Formulation::Fe);
-    m.failures.push(LineFailure {
-        line: 0,
-        end: End::B,
-        time: Some(1.0),
-        tension: None,
-    });
-    let mut s = Session::new(m).unwrap();
-    let dt = s.step_size();
-    let mut before = Vec3::zeros();
-    while s.failure_events().is_empty() {
-        before = reaction(&mut s, 0, 3);
-        s.step().unwrap();
-        assert!(
-            s.time() < 1.0 + dt * (1.0 + 1e-9),
-            "no release by {}",
-            s.time()
+    for stepped @ (scheme, time_step, _) in schemes() {
+        let mut m = tripod_stepped(10, Formulation::Fe, stepped);
+        m.failures.push(LineFailure {
+            line: 0,
+            end: End::B,
+            joined: vec![],
+            time: Some(1.0),
+            tension: None,
+        });
+        let mut s = Session::new(m).unwrap();
+        let mut before = Vec3::zeros();
+        let mut dt = 0.0;
+        while s.failure_events().is_empty() {
+            before = reaction(&mut s, 0, 3);
+            let t = s.time();
+            s.step().unwrap();
+            dt = s.time() - t;
+            assert!(
+                s.time() < 1.0 + dt * (1.0 + 1e-9),
+                "{scheme:?}: no release by {}",
+                s.time()
+            );
+        }
+        let event = &s.failure_events()[0];
+        eprintln!(
+            "{scheme:?} {time_step:?}: released at {} s (step {dt} s), tension {} N, before \
+             {before:?}",
+            event.release.time, event.release.tension
         );
+        assert!(event.release.time >= 1.0 - 1e-9 * dt && event.release.time < 1.0 + dt);
+        if time_step == TimeStep::Auto && scheme == Scheme::GeneralizedAlpha {
+            assert!(
+                (event.release.time - 1.0).abs() < 1e-9,
+                "{}",
+                event.release.time
+            );
+        }
+        assert_eq!(event.release.cause, ReleaseCause::Time);
+        assert_eq!(
+            (event.line.as_str(), event.end, event.attachment.as_str()),
+            ("L0", End::B, "weight")
+        );
+        // Before: by symmetry each line holds a third of the weight's wet weight vertically
+        // (within 1e-4: the run starts from the statics and the weight has not moved).
+        let wet = (MASS - 1025.0 * VOLUME) * G;
+        assert!(
+            (before.z / (wet / 3.0) - 1.0).abs() < 1e-4,
+            "{scheme:?}: {before:?} vs {}",
+            wet / 3.0
+        );
+        let t0 = before.norm();
+        // The tension reported is the end's at the release (the state one step after
+        // `before`: within 1 % of it, the weight is at rest).
+        assert!(
+            (event.release.tension / t0 - 1.0).abs() < 1e-2,
+            "{scheme:?}: {} vs {t0}",
+            event.release.tension
+        );
+        assert_eq!(reaction(&mut s, 0, 3), Vec3::zeros());
+        let view = s.view().unwrap();
+        let free_end = view.system.end_force(view.workspace, 0, true).norm();
+        assert!(
+            free_end < 1e-9 * t0,
+            "{scheme:?}: free end force {free_end} N"
+        );
+        // The released end sits where the weight was, and the line's end node is there.
+        let p = weight(view.system, view.state);
+        let end = view.line_samples(0).last().unwrap().position;
+        assert!((end - p).norm() < 1e-9, "{end:?} vs {p:?}");
+        // It keeps running, and the weight stays unreached by the cut line.
+        s.advance_to(s.time() + 1.0).unwrap();
+        assert_eq!(reaction(&mut s, 0, 3), Vec3::zeros());
     }
-    let event = &s.failure_events()[0];
-    eprintln!(
-        "released at {} s (step {dt} s), tension {} N, before {before:?}",
-        event.release.time, event.release.tension
-    );
-    assert!(event.release.time >= 1.0 - 1e-9 * dt && event.release.time < 1.0 + dt);
-    assert_eq!(event.release.cause, ReleaseCause::Time);
-    assert_eq!(
-        (event.line.as_str(), event.end, event.attachment.as_str()),
-        ("L0", End::B, "weight")
-    );
-    // Before: by symmetry each line holds a third of the weight's wet weight vertically
-    // (within 1e-4: the run starts from the statics and the weight has not moved).
-    let wet = (MASS - 1025.0 * VOLUME) * G;
-    assert!(
-        (before.z / (wet / 3.0) - 1.0).abs() < 1e-4,
-        "{before:?} vs {}",
-        wet / 3.0
-    );
-    let t0 = before.norm();
-    // The tension reported is the end's at the release (the state one step after `before`:
-    // within 1 % of it, the weight is at rest).
-    assert!(
-        (event.release.tension / t0 - 1.0).abs() < 1e-2,
-        "{} vs {t0}",
-        event.release.tension
-    );
-    assert_eq!(reaction(&mut s, 0, 3), Vec3::zeros());
-    let view = s.view().unwrap();
-    let free_end = view.system.end_force(view.workspace, 0, true).norm();
-    assert!(free_end < 1e-9 * t0, "free end force {free_end} N");
-    // The released end sits where the weight was, and the line's end node is there.
-    let p = weight(view.system, view.state);
-    let end = view.line_samples(0).last().unwrap().position;
-    assert!((end - p).norm() < 1e-9, "{end:?} vs {p:?}");
-    // It keeps running.
-    s.advance_to(s.time() + 1.0).unwrap();
 }
 
 /// After line L0 lets go of the weight, the weight swings away from L0's fixed point and
@@ -169,13 +216,22 @@ fn a_cut_line_stops_pulling_its_attachment_within_one_step() {
 /// z < 0, |y| < 1e-6 m). After 120 s of its heavily damped swing (drag area 40 m², pendulum
 /// period ≈ 13 s) it is within 1 % of the travel (0.15 m) of that equilibrium, and the
 /// forces on it balance: the two lines' end forces plus its wet weight and drag
-/// sum to its mass times its acceleration, below 1 % of its wet weight.
+/// sum to its mass times its acceleration, below 1 % of its wet weight. Under every scheme
+/// ([`schemes`]).
 #[test]
 fn the_weight_settles_where_the_remaining_lines_hold_it() {
-    let mut m = tripod(10, Formulation::Fe);
+    for stepped in schemes() {
+        settles(stepped);
+    }
+}
+
+fn settles(stepped: (Scheme, TimeStep, bool)) {
+    eprintln!("{stepped:?}");
+    let mut m = tripod_stepped(10, Formulation::Fe, stepped);
     m.failures.push(LineFailure {
         line: 0,
         end: End::B,
+        joined: vec![],
         time: Some(0.5),
         tension: None,
     });
@@ -246,6 +302,7 @@ fn a_tension_trigger_fires_at_the_first_step_above_the_threshold() {
     m.failures.push(LineFailure {
         line: 0,
         end: End::A,
+        joined: vec![],
         time: None,
         tension: Some(threshold),
     });
@@ -273,28 +330,37 @@ fn a_tension_trigger_fires_at_the_first_step_above_the_threshold() {
 
 /// A checkpoint carries the releases: a run saved before and one saved after the failure,
 /// each restored and run to the end, end bit for bit where the uninterrupted run does.
+/// Under every scheme ([`schemes`]), with a checkpoint also taken at the release itself (the
+/// three-level and generalized-α schemes then resume from their restarted history).
 #[test]
 fn checkpoints_across_a_failure_resume_bit_for_bit() {
-    let mut m = tripod(6, Formulation::Fe);
-    m.failures.push(LineFailure {
-        line: 0,
-        end: End::B,
-        time: Some(1.0),
-        tension: None,
-    });
-    m.settings.duration = 3.0;
-    let mut whole = Session::new(m.clone()).unwrap();
-    whole.run().unwrap();
-    for stop in [0.5, 2.0] {
-        let mut first = Session::new(m.clone()).unwrap();
-        first.advance_to(stop).unwrap();
-        let bytes = first.checkpoint();
-        let mut resumed = Session::restore(m.clone(), &bytes, Default::default()).unwrap();
-        resumed.run().unwrap();
-        assert_eq!(resumed.state(), whole.state(), "saved at {stop} s");
-        assert_eq!(resumed.failure_events(), whole.failure_events());
+    for stepped @ (scheme, time_step, _) in schemes() {
+        let mut m = tripod_stepped(6, Formulation::Fe, stepped);
+        m.failures.push(LineFailure {
+            line: 0,
+            end: End::B,
+            joined: vec![],
+            time: Some(1.0),
+            tension: None,
+        });
+        m.settings.duration = 3.0;
+        let mut whole = Session::new(m.clone()).unwrap();
+        whole.run().unwrap();
+        for stop in [0.5, 1.0, 2.0] {
+            let mut first = Session::new(m.clone()).unwrap();
+            first.advance_to(stop).unwrap();
+            let bytes = first.checkpoint();
+            let mut resumed = Session::restore(m.clone(), &bytes, Default::default()).unwrap();
+            resumed.run().unwrap();
+            assert_eq!(
+                resumed.state(),
+                whole.state(),
+                "{scheme:?} {time_step:?}: saved at {stop} s"
+            );
+            assert_eq!(resumed.failure_events(), whole.failure_events());
+        }
+        assert_eq!(whole.failure_events().len(), 1);
     }
-    assert_eq!(whole.failure_events().len(), 1);
 }
 
 /// A host releases an end it declared (a failure without a trigger of its own); an end
@@ -313,6 +379,7 @@ fn a_host_releases_a_declared_end() {
         m.failures.push(LineFailure {
             line: 1,
             end: End::B,
+            joined: vec![],
             time: None,
             tension: None,
         });
@@ -337,7 +404,7 @@ fn a_host_releases_a_declared_end() {
 }
 
 /// Bad failures are refused with what is wrong: an unknown line, a negative tension, a
-/// negative time, a dg line, an end named twice; and the implicit and three-level schemes.
+/// negative time, a dg line, an end named twice.
 #[test]
 fn bad_failures_are_refused() {
     let base = tripod(4, Formulation::Fe);
@@ -349,6 +416,7 @@ fn bad_failures_are_refused() {
     let f = LineFailure {
         line: 0,
         end: End::A,
+        joined: vec![],
         time: Some(1.0),
         tension: None,
     };
@@ -390,17 +458,85 @@ fn bad_failures_are_refused() {
             },
             "`dg` line",
         ),
-        (
-            {
-                let mut m = with(f.clone());
-                m.settings.scheme = Scheme::GeneralizedAlpha;
-                m
-            },
-            "generalized-alpha scheme cannot step",
-        ),
     ];
     for (m, expected) in cases {
         let err = Session::new(m).err().expect("refused").to_string();
         assert!(err.contains(expected), "{err}");
+    }
+}
+
+/// The weight's position [m] 0.5 s after L0 is cut at 1 s, on lines that carry compression
+/// (so that the recoiling cut line has no slack kink and a fixed generalized-α step
+/// converges), with `mass` lines, under `scheme` at a fixed step `h` [s].
+fn after_cut(scheme: Scheme, mass: MassMatrix, h: Real) -> Vec3 {
+    let mut m = tripod(10, Formulation::Fe);
+    m.line_types[0].compression = true;
+    for l in &mut m.lines {
+        l.mass_matrix = mass;
+    }
+    m.settings.scheme = scheme;
+    m.settings.time_step = TimeStep::Fixed(h);
+    m.failures.push(LineFailure {
+        line: 0,
+        end: End::B,
+        joined: vec![],
+        time: Some(1.0),
+        tension: None,
+    });
+    let mut s = Session::new(m).unwrap();
+    s.advance_to(1.5).unwrap();
+    assert_eq!(s.failure_events()[0].release.time, 1.0);
+    weight(s.system(), s.state())
+}
+
+/// The restarted schemes keep their order across a release: the weight's position 0.5 s
+/// after the cut (0.2 m sideways by then: the release is a jump of a third of its support)
+/// against RK4 at 0.1 ms (whose own error, measured by halving its step, is 1e-12 m), at
+/// three halvings of the step. Before the release every scheme sits on the statics (error
+/// 1.6e-10 m at 1 s), so the error is the post-release stepping's. Generalized-α (consistent
+/// mass) at 4, 2, 1 ms: observed orders within 0.3 of 2 (measured 2.18 and 1.92; the band
+/// allows the element modes the release excites, ωh up to 2.3 at 4 ms, which it damps
+/// rather than resolves), error at 1 ms below 1e-6 m (measured 5.7e-7). The three-level
+/// scheme (lumped mass, where its node-by-node corrector is exact) at 0.8, 0.4, 0.2 ms:
+/// observed orders within 0.1 of 1, as tests/three_level.rs holds it (measured 1.006,
+/// 1.003).
+#[test]
+fn the_restarted_schemes_keep_their_order_across_a_release() {
+    for (scheme, mass, steps, order, band) in [
+        (
+            Scheme::GeneralizedAlpha,
+            MassMatrix::Consistent,
+            [0.004, 0.002, 0.001],
+            2.0,
+            0.3,
+        ),
+        (
+            Scheme::ThreeLevel,
+            MassMatrix::Lumped,
+            [0.0008, 0.0004, 0.0002],
+            1.0,
+            0.1,
+        ),
+    ] {
+        let reference = after_cut(Scheme::Rk4, mass, 1e-4);
+        eprintln!("{mass:?}: the weight at 1.5 s {reference:?}");
+        let moved = (reference - after_cut(Scheme::Rk4, mass, 1e-4 * 2.0)).norm();
+        assert!(moved < 1e-10, "RK4's own error {moved} m");
+        let errors = steps.map(|h| (after_cut(scheme, mass, h) - reference).norm());
+        for k in 1..3 {
+            let observed = (errors[k - 1] / errors[k]).log2();
+            eprintln!(
+                "{scheme:?} {mass:?} h {}: error {:.3e} m, order {observed:.3}",
+                steps[k], errors[k]
+            );
+            assert!(
+                (observed - order).abs() < band,
+                "{scheme:?}: order {observed} at {} s ({errors:?})",
+                steps[k]
+            );
+        }
+        if scheme == Scheme::GeneralizedAlpha {
+            assert!(errors[2] < 1e-6, "{errors:?}");
+        }
     }
 }

@@ -62,6 +62,10 @@ pub struct Scenario {
     /// Spheres and cylinders, fixed or moving, that lines touch.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub obstacles: Vec<ObstacleSpec>,
+    /// Line ends at one point that release together and stay joined (docs/failure.md); a
+    /// single line end's failure is `[lines.failure]`.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub failures: Vec<JoinedFailureSpec>,
     /// The window, storm duration and linked channels of the design statistics a run
     /// reports in `summary.json`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -909,6 +913,33 @@ pub struct FailureSpec {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<bool>")]
     pub at_breaking_load: Option<Spanned<bool>>,
+}
+
+/// `[[failures]]`: the ends of two or more lines at one point release together at the first
+/// step end where `time` is reached or their tension (the magnitude of the vector sum of
+/// their forces on the point) reaches `tension`, whichever comes first, onto one new
+/// massless free point at the point's place and velocity, which keeps them joined (MoorDyn's
+/// FAILURE row listing several lines). Without either trigger they release only on a host's
+/// call. A single line end's failure is `[lines.failure]` (docs/failure.md).
+#[derive(Debug, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct JoinedFailureSpec {
+    /// The point the line ends release from.
+    #[schemars(with = "String")]
+    pub point: Spanned<String>,
+    /// The lines whose ends at `point` release together (two or more, each with one end at
+    /// `point`).
+    #[schemars(with = "Vec<String>")]
+    pub lines: Vec<Spanned<String>>,
+    /// Release time [s], ≥ 0; none by default.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub time: Option<Spanned<f64>>,
+    /// Release tension [N], > 0: the ends release when the magnitude of the vector sum of
+    /// their forces on the point reaches it; none by default.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<f64>")]
+    pub tension: Option<Spanned<f64>>,
 }
 
 /// A line end (a winch's, a failure's).

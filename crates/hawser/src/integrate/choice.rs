@@ -56,15 +56,6 @@ pub fn choose_scheme(system: &System, settings: &Settings) -> SchemeChoice {
             format!("line {} uses dg, which steps explicitly", l.name),
         );
     }
-    if let Some(f) = system.failures.first() {
-        return given(
-            Scheme::Rk4,
-            format!(
-                "line {} may fail, and a release is stepped by the explicit schemes",
-                system.lines[f.line].name
-            ),
-        );
-    }
     if let TimeStep::Fixed(dt) = settings.time_step {
         return given(
             Scheme::Rk4,

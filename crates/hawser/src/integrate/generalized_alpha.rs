@@ -428,8 +428,43 @@ impl GeneralizedAlpha {
         self.jacobian.set_numbers(&mut rest)
     }
 
-    /// The first step's start: q̈_0 = a_0 = M⁻¹F at (t, y), the reference tensions, and the
-    /// Jacobian there.
+    /// Makes the next step start as the first one does, from the state it is given: after a
+    /// line failure, whose release moves a line end from its attachment onto a free point of
+    /// its own ([`crate::session`]'s failures), the accelerations q̈_n and a_n, the Jacobian
+    /// and the iteration matrix belong to the system before the release. The next step then
+    /// takes the consistent accelerations q̈ = a = M⁻¹F of the new state and forms a fresh
+    /// Jacobian there ([`GeneralizedAlpha::start`]); the iteration matrix follows the line
+    /// ends' new kinds in `ws` (a free end's slot instead of a known end). The reference
+    /// tensions of the error estimate are the run's, from its start: a scale of each line,
+    /// not history. Allocates nothing.
+    pub fn restart(&mut self, ws: &Workspace) {
+        self.follow_ends(ws);
+        self.started = false;
+        self.refresh = true;
+        self.matrix_step = Real::NAN;
+        self.factored = false;
+    }
+
+    /// Gives the iteration matrix's line blocks the end kinds of `ws`'s (which line ends are
+    /// known and which sit on which free slot): after a release, and after a restore that took
+    /// releases back or made them again. Allocates nothing.
+    pub fn follow_ends(&mut self, ws: &Workspace) {
+        for ((m, fd), b) in self
+            .matrix
+            .iter_mut()
+            .zip(&mut self.fd_lines)
+            .zip(&ws.blocks)
+        {
+            if (m.end_a, m.end_b) != (b.end_a, b.end_b) {
+                (m.end_a, m.end_b) = (b.end_a, b.end_b);
+                (fd.end_a, fd.end_b) = (b.end_a, b.end_b);
+                self.factored = false;
+            }
+        }
+    }
+
+    /// The first step's start: q̈_0 = a_0 = M⁻¹F at (t, y), the reference tensions (at the
+    /// run's first start only: a restart after a release keeps them), and the Jacobian there.
     fn start(
         &mut self,
         system: &System,
@@ -445,10 +480,14 @@ impl GeneralizedAlpha {
             })?;
         self.acceleration.copy_from_slice(&self.rate);
         self.pseudo.copy_from_slice(&self.rate);
-        for (li, r) in self.reference.iter_mut().enumerate() {
-            *r = reference_tension(system, ws, li);
+        // Every reference tension is positive once set (its floor is 10⁻⁶ EA): all zero
+        // means this is the run's first start.
+        if self.reference.iter().all(|&r| r == 0.0) {
+            for (li, r) in self.reference.iter_mut().enumerate() {
+                *r = reference_tension(system, ws, li);
+            }
+            self.weights_ready = false;
         }
-        self.weights_ready = false;
         self.form_jacobian(system, ws, t, y);
         self.started = true;
         Ok(())

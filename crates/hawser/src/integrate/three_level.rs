@@ -122,6 +122,15 @@ impl ThreeLevel {
         2
     }
 
+    /// Forgets the previous level, so that the next step starts as the first one does (the
+    /// Taylor start e^{−1} = e^0 − Δt v^0 + ½Δt² a^0 from the state's positions and
+    /// velocities): after a line failure, whose release moves a line end onto a free point of
+    /// its own, the previous level no longer belongs to the system being stepped
+    /// ([`crate::session`]'s failures).
+    pub fn restart(&mut self) {
+        self.last_step = 0.0;
+    }
+
     /// The accelerations of one stage: node by node as the paper does for block-tridiagonal
     /// lines (`fe`), or by the exact banded mass solve when a line's mass couples more than
     /// its neighbours (`hermite`, see the module doc).

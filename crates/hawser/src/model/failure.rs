@@ -24,22 +24,40 @@
 use super::{End, Formulation, LineEnd, Model};
 use crate::math::Real;
 
-/// A line end that may release from its attachment during a run (module doc).
+/// A line end that may release from its attachment during a run (module doc), with any
+/// further line ends at the same attachment that release with it and stay joined.
+///
+/// **Joined ends** ([`LineFailure::joined`]): MoorDyn's FAILURE row that lists several lines
+/// detaches all their ends from the point and attaches them to one new free point at the
+/// point's place and velocity (MoorDyn2.cpp `detachLines`), so they stay joined to each
+/// other. Here every end of a failure moves onto the failure's one reserved free point; its
+/// equation gathers all their end masses and forces, so the lines move on as one chain
+/// through a massless joint.
 #[derive(Clone, Debug, PartialEq)]
 pub struct LineFailure {
     /// Index into [`Model::lines`].
     pub line: usize,
     /// Which end releases.
     pub end: End,
+    /// Further line ends (line index, end) that release at the same instant onto the same
+    /// free point: all on the attachment of (`line`, `end`). Empty for a single end.
+    pub joined: Vec<(usize, End)>,
     /// Release at a time [s] (the first step end at or after it); `None`: no time trigger.
     pub time: Option<Real>,
     /// Release when the tension at the end reaches this value [N] (a breaking load);
-    /// `None`: no tension trigger. With neither trigger the end releases only on the host's
+    /// `None`: no tension trigger. With joined ends the tension is the magnitude of the
+    /// vector sum of all the failure's end forces on the attachment, |Σ F_end| [N]: the
+    /// force the attachment loses at the release. With neither trigger the end releases only on the host's
     /// call ([`crate::Session::release`]).
     pub tension: Option<Real>,
 }
 
 impl LineFailure {
+    /// Every end of the failure, (line index, end): the first, then the joined ones.
+    pub fn ends(&self) -> impl Iterator<Item = (usize, End)> + '_ {
+        std::iter::once((self.line, self.end)).chain(self.joined.iter().copied())
+    }
+
     /// The attachment of the failing end (the point the end releases from).
     pub fn attachment(&self, model: &Model) -> usize {
         let LineEnd::Point(p) = model.lines[self.line].ends()[self.end.index()];
@@ -88,14 +106,54 @@ impl LineFailure {
                 format!("is {t} N; must be > 0 N and finite"),
             ));
         }
-        if model.failures[..k]
-            .iter()
-            .any(|o| o.line == self.line && o.end == self.end)
-        {
-            return Err((
-                what(""),
-                "names a line end that already has a failure".into(),
-            ));
+        let attachment = self.attachment(model);
+        for (j, &(li, end)) in self.joined.iter().enumerate() {
+            let joined = |why: String| Err((what(&format!(".joined[{j}]")), why));
+            let Some(other) = model.lines.get(li) else {
+                return joined("refers to a line that does not exist".into());
+            };
+            let LineEnd::Point(p) = other.ends()[end.index()];
+            if p != attachment {
+                return joined(format!(
+                    "is end {} of line {}, at point {}, not at the failure's point {}: the \
+                     ends that release together must share their attachment",
+                    end.name(),
+                    other.name,
+                    model.points[p].name,
+                    model.points[attachment].name
+                ));
+            }
+            if other.formulation == Formulation::Dg {
+                return joined(format!(
+                    "is on line {}, a `dg` line, whose end conditions are built into its flux",
+                    other.name
+                ));
+            }
+            if other.clamp[end.index()].is_some() {
+                return joined(format!(
+                    "is end {} of line {}, a clamped end: only a pinned end can release",
+                    end.name(),
+                    other.name
+                ));
+            }
+        }
+        let mine: Vec<(usize, End)> = self.ends().collect();
+        for (i, e) in mine.iter().enumerate() {
+            if mine[..i].contains(e)
+                || model.failures[..k]
+                    .iter()
+                    .any(|o| o.ends().any(|x| x == *e))
+            {
+                return Err((
+                    what(""),
+                    format!(
+                        "names end {} of line {}, which already has a failure (one failure \
+                         per line end)",
+                        e.1.name(),
+                        model.lines[e.0].name
+                    ),
+                ));
+            }
         }
         Ok(())
     }

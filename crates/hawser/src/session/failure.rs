@@ -9,10 +9,12 @@
 //! ([`crate::system::SystemFailure::free_end`]), moves the line end onto it, and wakes it.
 //! The state keeps its length and nothing is allocated. The Runge–Kutta schemes keep no
 //! history, so the next step starts cleanly from the new state; the three-level and
-//! generalized-α schemes, whose history and iteration matrix assume fixed attachments, are
-//! refused for a model with failures ([`crate::error::ModelError::SchemeCannotRelease`]).
+//! generalized-α schemes, whose history (the previous level; the accelerations, the Jacobian
+//! and the iteration matrix) belongs to the system before the release, restart it from the
+//! state at the release as at the start of a run ([`Stepper::restart`]).
 
 use super::Stepper;
+use super::stepper::Integrator;
 use crate::error::SimulationError;
 use crate::math::{Real, set3};
 use crate::model::End;
@@ -65,6 +67,8 @@ pub struct FailureEvent {
     pub line: String,
     /// Which end released.
     pub end: End,
+    /// Further line ends released with it onto the same free point, (line name, end).
+    pub joined: Vec<(String, End)>,
     /// Name of the point it released from.
     pub attachment: String,
     /// Time [s], tension [N] and cause.
@@ -83,6 +87,11 @@ pub fn failure_events(system: &System, releases: &[Option<Release>]) -> Vec<Fail
                 failure: k,
                 line: system.lines[f.line].name.clone(),
                 end: f.end,
+                joined: f
+                    .joined
+                    .iter()
+                    .map(|&(l, e)| (system.lines[l].name.clone(), e))
+                    .collect(),
                 attachment: system.points[f.attachment].name.clone(),
                 release,
             })
@@ -90,25 +99,43 @@ pub fn failure_events(system: &System, releases: &[Option<Release>]) -> Vec<Fail
         .collect()
 }
 
-/// Points each failing line end at its attachment or, once released, at its free end, and
-/// sets the free end's dormancy and the end's kind in the coupled solve to match.
+/// Points the line ends of failure `k` at their attachment or, once released, at its free
+/// end, and sets the free end's dormancy and the ends' kind in the coupled solve to match.
 fn point_end(system: &mut System, ws: &mut crate::system::Workspace, k: usize, released: bool) {
     let f = &system.failures[k];
-    let (line, end, free_end) = (f.line, f.end, f.free_end);
+    let free_end = f.free_end;
     let target = if released { free_end } else { f.attachment };
     system.points[free_end].dormant = !released;
     let kind = system.end_kind(target);
-    let (l, b) = (&mut system.lines[line], &mut ws.blocks[line]);
-    match end {
-        End::A => {
-            l.end_a = target;
-            b.end_a = kind;
-        }
-        End::B => {
-            l.end_b = target;
-            b.end_b = kind;
+    for j in 0..=system.failures[k].joined.len() {
+        let f = &system.failures[k];
+        let (line, end) = if j == 0 {
+            (f.line, f.end)
+        } else {
+            f.joined[j - 1]
+        };
+        let (l, b) = (&mut system.lines[line], &mut ws.blocks[line]);
+        match end {
+            End::A => {
+                l.end_a = target;
+                b.end_a = kind;
+            }
+            End::B => {
+                l.end_b = target;
+                b.end_b = kind;
+            }
         }
     }
+}
+
+/// The tension [N] of failure `k` at the evaluation in `ws`: the magnitude of the vector sum
+/// of its ends' forces on their attachment, |Σ F_end| (one end: its end tension).
+pub(crate) fn failure_tension(system: &System, ws: &crate::system::Workspace, k: usize) -> Real {
+    system.failures[k]
+        .ends()
+        .map(|(line, end)| system.end_force(ws, line, end == End::B))
+        .sum::<crate::math::Vec3>()
+        .norm()
 }
 
 impl Stepper {
@@ -138,7 +165,7 @@ impl Stepper {
                 continue;
             }
             let ws = self.evaluate(system)?;
-            let tension = system.end_force(ws, f.line, f.end == End::B).norm();
+            let tension = failure_tension(system, ws, k);
             if timed {
                 return Ok(Some((k, ReleaseCause::Time, tension)));
             }
@@ -169,6 +196,7 @@ impl Stepper {
         set3(&mut self.state[o..], 0, &at.position);
         set3(&mut self.state[o..], 1, &at.velocity);
         point_end(system, &mut self.ws, k, true);
+        self.restart();
         self.releases[k] = Some(Release {
             time: self.time(),
             tension,
@@ -178,11 +206,37 @@ impl Stepper {
         Ok(())
     }
 
-    /// Sets the system's failing line ends to the stepper's releases (after a restore).
+    /// Sets the system's failing line ends to the stepper's releases (after a restore), and
+    /// generalized-α's iteration matrix to the line ends' kinds.
     pub(crate) fn apply_releases(&mut self, system: &mut System) {
         for k in 0..system.failures.len() {
             point_end(system, &mut self.ws, k, self.releases[k].is_some());
         }
+        if let Integrator::GeneralizedAlpha { scheme, .. } = &mut self.integrator {
+            scheme.follow_ends(&self.ws);
+        }
         self.invalidate();
+    }
+
+    /// Restarts the scheme's history at a release, from the state and time of the release,
+    /// as at the start of a run: the three-level scheme's next step is its Taylor start from
+    /// the positions and velocities ([`crate::integrate::ThreeLevel::restart`]);
+    /// generalized-α's takes the consistent accelerations of the new state and a fresh
+    /// Jacobian ([`crate::integrate::GeneralizedAlpha::restart`]), and with adaptive steps its
+    /// controller starts again from the run's first step (its a-priori accuracy step) or the
+    /// current one, whichever is shorter: the release is a jump in the accelerations, which
+    /// the controller's step before it knew nothing of. The Runge–Kutta schemes keep no
+    /// history. Allocates nothing.
+    fn restart(&mut self) {
+        match &mut self.integrator {
+            Integrator::Rk(_) => {}
+            Integrator::ThreeLevel { scheme, .. } => scheme.restart(),
+            Integrator::GeneralizedAlpha { scheme, adaptive } => {
+                scheme.restart(&self.ws);
+                if *adaptive {
+                    self.clock.nominal = self.clock.nominal.min(self.first_step);
+                }
+            }
+        }
     }
 }

@@ -438,17 +438,16 @@ impl Session {
     /// The release is recorded with the end's tension at this state and
     /// [`ReleaseCause::Host`].
     pub fn release(&mut self, line: &str, end: crate::model::End) -> Result<(), SimulationError> {
-        let Some(k) = self
-            .system
-            .failures
-            .iter()
-            .position(|f| self.system.lines[f.line].name == line && f.end == end)
-        else {
+        let Some(k) = self.system.failures.iter().position(|f| {
+            f.ends()
+                .any(|(l, e)| self.system.lines[l].name == line && e == end)
+        }) else {
             let known: Vec<String> = self
                 .system
                 .failures
                 .iter()
-                .map(|f| format!("{}.end_{}", self.system.lines[f.line].name, f.end.name()))
+                .flat_map(|f| f.ends())
+                .map(|(l, e)| format!("{}.end_{}", self.system.lines[l].name, e.name()))
                 .collect();
             return Err(SimulationError::Model(crate::error::ModelError::Invalid {
                 what: format!("release of line {line}, end {}", end.name()),
@@ -464,11 +463,8 @@ impl Session {
                 ),
             }));
         };
-        let f = &self.system.failures[k];
-        let end_b = f.end == crate::model::End::B;
-        let line_index = f.line;
         let ws = self.stepper.evaluate(&self.system)?;
-        let tension = self.system.end_force(ws, line_index, end_b).norm();
+        let tension = failure::failure_tension(&self.system, ws, k);
         self.stepper
             .release(&mut self.system, k, ReleaseCause::Host, tension)
     }

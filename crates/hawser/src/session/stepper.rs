@@ -136,6 +136,9 @@ pub struct Stepper {
     planned: bool,
     /// Per failure of the system ([`System::failures`]): its release, once it happened.
     pub(crate) releases: Vec<Option<super::Release>>,
+    /// The run's first step [s]: an adaptive generalized-α run restarts its controller from
+    /// it (or from its current step, when shorter) after a release ([`Stepper::restart`]).
+    pub(crate) first_step: Real,
 }
 
 /// What a step size rule found wrong.
@@ -146,14 +149,6 @@ pub(crate) fn scheme_error(system: &System, scheme: Scheme) -> Option<Simulation
         return Some(SimulationError::Model(ModelError::SchemeCannotStepDg {
             scheme: scheme.name(),
             line: l.name.clone(),
-        }));
-    }
-    if matches!(scheme, Scheme::ThreeLevel | Scheme::GeneralizedAlpha)
-        && let Some(f) = system.failures.first()
-    {
-        return Some(SimulationError::Model(ModelError::SchemeCannotRelease {
-            scheme: scheme.name(),
-            line: system.lines[f.line].name.clone(),
         }));
     }
     if scheme == Scheme::ThreeLevel && !system.free_bodies.is_empty() {
@@ -275,6 +270,7 @@ impl Stepper {
             scheme: choice,
             planned: false,
             releases: vec![None; system.failures.len()],
+            first_step: step,
         })
     }
 
@@ -297,6 +293,21 @@ impl Stepper {
             self.integrator,
             Integrator::GeneralizedAlpha { adaptive: true, .. }
         )
+    }
+
+    /// The earliest time trigger [s] of a failure not released yet that is after now
+    /// (infinite when there is none): adaptive steps land on it, so that a release due at a
+    /// time happens at that time rather than up to a long step after it.
+    fn next_failure_time(&self, system: &System) -> Real {
+        let now = self.clock.time();
+        system
+            .failures
+            .iter()
+            .zip(&self.releases)
+            .filter(|(_, r)| r.is_none())
+            .filter_map(|(f, _)| f.time)
+            .filter(|&at| at > now + 1e-9 * self.clock.interval)
+            .fold(Real::INFINITY, Real::min)
     }
 
     /// The time [s] of the first output after now.
@@ -425,8 +436,10 @@ impl Stepper {
     /// (what a run's final state reports).
     pub fn step(&mut self, system: &System) -> Result<(), SimulationError> {
         if self.adaptive() && !std::mem::take(&mut self.planned) {
-            // A step not planned by `advance` (a bare `step`): land on the next output.
-            let step = self.landing_step(self.next_output_time(), self.clock.nominal);
+            // A step not planned by `advance` (a bare `step`): land on the next output or
+            // failure time.
+            let boundary = self.next_output_time().min(self.next_failure_time(system));
+            let step = self.landing_step(boundary, self.clock.nominal);
             self.clock.set_step(step);
         }
         let (t, dt) = (self.clock.time(), self.clock.step);
@@ -578,7 +591,9 @@ impl Stepper {
                 break;
             }
             if self.adaptive() {
-                let boundary = t.min(self.next_output_time());
+                let boundary = t
+                    .min(self.next_output_time())
+                    .min(self.next_failure_time(system));
                 let step = self.landing_step(boundary, nominal);
                 self.clock.set_step(step);
                 self.planned = true;

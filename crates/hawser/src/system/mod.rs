@@ -66,6 +66,9 @@ pub struct SystemFailure {
     pub line: usize,
     /// Which end releases.
     pub end: crate::model::End,
+    /// Further line ends released with it onto the same free point
+    /// ([`crate::model::LineFailure::joined`]).
+    pub joined: Vec<(usize, crate::model::End)>,
     /// The point the end is attached to until it releases.
     pub attachment: usize,
     /// The massless free point that owns the end after the release: dormant until then,
@@ -75,6 +78,13 @@ pub struct SystemFailure {
     pub time: Option<Real>,
     /// Release tension [N], if any.
     pub tension: Option<Real>,
+}
+
+impl SystemFailure {
+    /// Every end of the failure, (line index, end): the first, then the joined ones.
+    pub fn ends(&self) -> impl Iterator<Item = (usize, crate::model::End)> + '_ {
+        std::iter::once((self.line, self.end)).chain(self.joined.iter().copied())
+    }
 }
 
 /// The immutable, assembled system.
@@ -228,6 +238,7 @@ impl System {
             failures.push(SystemFailure {
                 line: f.line,
                 end: f.end,
+                joined: f.joined.clone(),
                 attachment,
                 free_end: points.len() - 1,
                 time: f.time,

@@ -1,12 +1,14 @@
-//! MoorDyn's FAILURE section (MoorDyn-F, v2) as `[lines.failure]` tables.
+//! MoorDyn's FAILURE section (v2) as `[lines.failure]` tables (one line) and `[[failures]]`
+//! tables (several lines).
 //!
 //! A row `FailureID  Point  Line(s)  FailTime  FailTen` releases the listed lines' ends at the
 //! point (a point ID or a rod end R#A/R#B) at FailTime [s] or when the attachment tension
 //! reaches FailTen [N], whichever comes first; 0 switches a trigger off. In MoorDyn the
-//! released ends are attached to a new free point at the point's place and velocity, which is
-//! hawser's release of one line end (docs/failure.md). Several lines in one row stay joined
-//! to each other by that free point in MoorDyn; hawser releases each line end on its own free
-//! end, so such a row is refused rather than run differently. docs/moordyn.md has the map.
+//! released ends are attached to ONE new free point at the point's place and velocity
+//! (MoorDyn2.cpp `detachLines`), so several lines of one row stay joined: one line is
+//! hawser's release of one line end, several are a `[[failures]]` table whose ends share one
+//! free point (docs/failure.md). docs/moordyn.md has the map, and what MoorDyn-C 2.7 itself
+//! does with the row.
 
 use super::{Converter, line_name, point_name, spanned};
 use crate::moordyn::deck::{Section, Token};
@@ -34,8 +36,14 @@ fn attachment_name(tok: &Token) -> Option<String> {
     })
 }
 
-/// Sets the `failure` of the lines a FAILURE section names.
-pub(super) fn convert_failures(c: &mut Converter, s: &Section, lines: &mut [LineSpec]) {
+/// Sets the `failure` of the lines a one-line FAILURE row names, and adds a `[[failures]]`
+/// table to `joined` for each row of several lines.
+pub(super) fn convert_failures(
+    c: &mut Converter,
+    s: &Section,
+    lines: &mut [LineSpec],
+    joined: &mut Vec<JoinedFailureSpec>,
+) {
     for row in &s.rows {
         let t = &row.tokens;
         // FailureID Point Line[,Line...] FailTime FailTen: the lexer splits the line list at
@@ -70,26 +78,6 @@ pub(super) fn convert_failures(c: &mut Converter, s: &Section, lines: &mut [Line
             c.errors.push(d);
             continue;
         };
-        if line_toks.len() > 1 {
-            let d = c
-                .diag(
-                    Some(line_toks[0].span.start..line_toks[line_toks.len() - 1].span.end),
-                    &at("Lines"),
-                    format!(
-                        "failure {id} releases {} lines together at {}",
-                        line_toks.len(),
-                        t[1].text
-                    ),
-                )
-                .expected("one line per failure row")
-                .hint(
-                    "MoorDyn keeps lines that fail together joined by a new free point; hawser \
-                     releases each line end on its own free end, which is another system: \
-                     model the joint as a free point with its own lines, or fail one line",
-                );
-            c.errors.push(d);
-            continue;
-        }
         let trigger = |c: &mut Converter, tok: &Token, col: &str, unit: &str| {
             let x = c.number(tok, &format!("{S} › {id}"), col, unit)?;
             if !(x >= 0.0) {
@@ -108,25 +96,24 @@ pub(super) fn convert_failures(c: &mut Converter, s: &Section, lines: &mut [Line
         };
         let time = trigger(c, time_tok, "FailTime", "s");
         let tension = trigger(c, tension_tok, "FailTen", "N");
+        if line_toks.len() > 1 {
+            if let Some(f) = joined_row(
+                c,
+                row.line,
+                id,
+                &t[1],
+                &point,
+                line_toks,
+                lines,
+                (time, tension),
+            ) {
+                c.name_key(format!("failures[{}]", joined.len()), format!("{S} › {id}"));
+                joined.push(f);
+            }
+            continue;
+        }
         let line_tok = &line_toks[0];
-        let name = match line_tok.text.parse::<u64>() {
-            Ok(n) => line_name(&n.to_string()),
-            Err(_) => line_name(&line_tok.text),
-        };
-        let Some(k) = lines.iter().position(|l| l.name.get_ref() == &name) else {
-            let ids: Vec<&str> = lines.iter().map(|l| &l.name.get_ref()[1..]).collect();
-            let d = c
-                .diag(
-                    Some(line_tok.span.clone()),
-                    &at("Lines"),
-                    format!(
-                        "failure {id} names line {}, which is not in the LINES table",
-                        line_tok.text
-                    ),
-                )
-                .expected(format!("a line ID: {}", ids.join(", ")))
-                .hint("correct the line ID");
-            c.errors.push(d);
+        let Some(k) = find_line(c, id, line_tok, lines) else {
             continue;
         };
         let line = &mut lines[k];
@@ -152,7 +139,10 @@ pub(super) fn convert_failures(c: &mut Converter, s: &Section, lines: &mut [Line
             c.errors.push(d);
             continue;
         };
-        if line.failure.is_some() {
+        let in_joined = joined
+            .iter()
+            .any(|f| f.lines.iter().any(|n| n.get_ref() == line.name.get_ref()));
+        if line.failure.is_some() || in_joined {
             let d = c
                 .diag(
                     Some(line_tok.span.clone()),
@@ -182,4 +172,103 @@ pub(super) fn convert_failures(c: &mut Converter, s: &Section, lines: &mut [Line
             at_breaking_load: None,
         });
     }
+}
+
+/// The index of the line a FAILURE row's line token names; a diagnostic when there is none.
+fn find_line(c: &mut Converter, id: &str, tok: &Token, lines: &[LineSpec]) -> Option<usize> {
+    let name = match tok.text.parse::<u64>() {
+        Ok(n) => line_name(&n.to_string()),
+        Err(_) => line_name(&tok.text),
+    };
+    let k = lines.iter().position(|l| l.name.get_ref() == &name);
+    if k.is_none() {
+        let ids: Vec<&str> = lines.iter().map(|l| &l.name.get_ref()[1..]).collect();
+        let d = c
+            .diag(
+                Some(tok.span.clone()),
+                &format!("{S} › {id} › Lines"),
+                format!(
+                    "failure {id} names line {}, which is not in the LINES table",
+                    tok.text
+                ),
+            )
+            .expected(format!("a line ID: {}", ids.join(", ")))
+            .hint("correct the line ID");
+        c.errors.push(d);
+    }
+    k
+}
+
+/// A FAILURE row of several lines as a `[[failures]]` table: the lines' ends at `point` (the
+/// scenario name of the row's Point column `point_tok`) release together onto one free point
+/// and stay joined, as in MoorDyn. `None` (with diagnostics) when a line is unknown, not at the
+/// point, listed twice or already failing in another row.
+#[allow(clippy::too_many_arguments)]
+fn joined_row(
+    c: &mut Converter,
+    row_line: usize,
+    id: &str,
+    point_tok: &Token,
+    point: &str,
+    line_toks: &[Token],
+    lines: &[LineSpec],
+    (time, tension): (Option<toml::Spanned<f64>>, Option<toml::Spanned<f64>>),
+) -> Option<JoinedFailureSpec> {
+    let errors = c.errors.len();
+    let mut names = Vec::new();
+    for tok in line_toks {
+        let Some(k) = find_line(c, id, tok, lines) else {
+            continue;
+        };
+        let line = &lines[k];
+        let at = format!("{S} › {id} › Lines");
+        if line.end_a.get_ref() != point && line.end_b.get_ref() != point {
+            let d = c
+                .diag(
+                    Some(tok.span.clone()),
+                    &at,
+                    format!(
+                        "failure {id}: line {} is not attached to {} (its ends are at {} and {})",
+                        tok.text,
+                        point_tok.text,
+                        line.end_a.get_ref(),
+                        line.end_b.get_ref()
+                    ),
+                )
+                .expected("lines with an end at the row's point or rod end")
+                .hint("a failure releases the lines attached at its point");
+            c.errors.push(d);
+        } else if line.failure.is_some()
+            || names
+                .iter()
+                .any(|n: &toml::Spanned<String>| n.get_ref() == line.name.get_ref())
+        {
+            let d = c
+                .diag(
+                    Some(tok.span.clone()),
+                    &at,
+                    format!("line {} fails twice", tok.text),
+                )
+                .expected("one failure per line end")
+                .hint("keep one of the rows, or list the line once");
+            c.errors.push(d);
+        } else {
+            names.push(spanned(tok, line.name.get_ref().clone()));
+        }
+    }
+    if time.is_none() && tension.is_none() {
+        c.note(
+            row_line,
+            format!(
+                "failure {id}: FailTime and FailTen are 0, so its lines release only on a \
+                 host's call"
+            ),
+        );
+    }
+    (c.errors.len() == errors).then(|| JoinedFailureSpec {
+        point: spanned(point_tok, point.to_string()),
+        lines: names,
+        time,
+        tension,
+    })
 }

@@ -385,8 +385,9 @@ pub fn convert(
         Some(s) => convert_lines(&mut c, s, &points, &rod_ends.refused),
         None => (Vec::new(), false),
     };
+    let mut joined_failures = Vec::new();
     if let Some(s) = deck.section(SectionKind::Failure) {
-        failures::convert_failures(&mut c, s, &mut lines);
+        failures::convert_failures(&mut c, s, &mut lines, &mut joined_failures);
     }
     if deck.section(SectionKind::Lines).is_none() {
         let d = c
@@ -424,6 +425,7 @@ pub fn convert(
             lines,
             bodies,
             obstacles: Vec::new(),
+            failures: joined_failures,
             statistics: None,
         },
         notes: c.notes,

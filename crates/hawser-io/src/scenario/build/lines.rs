@@ -416,9 +416,191 @@ fn build_failure(
     (b.errors.len() == errors).then_some(LineFailure {
         line: index,
         end,
+        joined: vec![],
         time,
         tension,
     })
+}
+
+/// Builds the `[[failures]]` tables (line ends at one point released together onto one free
+/// point) into `failures`, after the lines' own failures; every problem becomes a diagnostic
+/// under `failures[i]`.
+pub(super) fn build_joined_failures(
+    b: &mut Builder,
+    specs: &[JoinedFailureSpec],
+    lines: &[Line],
+    points: &HashMap<String, usize>,
+    failures: &mut Vec<LineFailure>,
+) {
+    for (i, spec) in specs.iter().enumerate() {
+        let k = |key: &str| format!("failures[{i}].{key}");
+        let errors = b.errors.len();
+        let point_name = spec.point.get_ref();
+        let Some(&point) = points.get(point_name) else {
+            let mut defined: Vec<&str> = points.keys().map(String::as_str).collect();
+            defined.sort();
+            let hint = match closest(point_name, defined.iter().copied()) {
+                Some(c) => format!("did you mean `{c}`?"),
+                None => "give the point the lines' ends are attached to".to_string(),
+            };
+            let d = b
+                .diag(
+                    Some(spec.point.span()),
+                    &k("point"),
+                    format!("failure at point `{point_name}`, which does not exist"),
+                )
+                .expected(format!("the name of a point: {}", defined.join(", ")))
+                .hint(hint);
+            b.push(d);
+            continue;
+        };
+        if spec.lines.len() < 2 {
+            let span = spec.lines.first().map_or(spec.point.span(), |l| l.span());
+            let d = b
+                .diag(
+                    Some(span),
+                    &k("lines"),
+                    format!(
+                        "a [[failures]] table names {} line{}",
+                        spec.lines.len(),
+                        if spec.lines.len() == 1 { "" } else { "s" }
+                    ),
+                )
+                .expected("two or more lines with an end at the point")
+                .hint("one line end's failure is a `[lines.failure]` table of that line");
+            b.push(d);
+            continue;
+        }
+        let mut ends: Vec<(usize, End)> = Vec::new();
+        for (j, name) in spec.lines.iter().enumerate() {
+            let key = format!("failures[{i}].lines[{j}]");
+            let Some(li) = lines.iter().position(|l| &l.name == name.get_ref()) else {
+                let names: Vec<&str> = lines.iter().map(|l| l.name.as_str()).collect();
+                let hint = match closest(name.get_ref(), names.iter().copied()) {
+                    Some(c) => format!("did you mean `{c}`?"),
+                    None => "name a [[lines]] table".to_string(),
+                };
+                let d = b
+                    .diag(
+                        Some(name.span()),
+                        &key,
+                        format!("line `{}` does not exist", name.get_ref()),
+                    )
+                    .expected(format!("the name of a line: {}", names.join(", ")))
+                    .hint(hint);
+                b.push(d);
+                continue;
+            };
+            let l = &lines[li];
+            let at = |e: &LineEnd| matches!(e, LineEnd::Point(p) if *p == point);
+            let end = match (at(&l.end_a), at(&l.end_b)) {
+                (true, false) => End::A,
+                (false, true) => End::B,
+                (a, _) => {
+                    let why = if a {
+                        "both its ends are at the point: which one releases is ambiguous"
+                            .to_string()
+                    } else {
+                        "neither of its ends is at the point".to_string()
+                    };
+                    let d = b
+                        .diag(
+                            Some(name.span()),
+                            &key,
+                            format!(
+                                "line `{}` cannot release from point `{point_name}`: {why}",
+                                l.name
+                            ),
+                        )
+                        .expected(format!("a line with one end at point `{point_name}`"))
+                        .hint(
+                            "list the lines whose ends meet at the point; a line's own                              `[lines.failure]` names its end",
+                        );
+                    b.push(d);
+                    continue;
+                }
+            };
+            let refuse = |b: &mut Builder, why: String, hint: &str| {
+                let d = b
+                    .diag(Some(name.span()), &key, why)
+                    .expected("an `fe` or `hermite` line with a pinned end at the point")
+                    .hint(hint.to_string());
+                b.push(d);
+            };
+            if ends.contains(&(li, end)) {
+                refuse(
+                    b,
+                    format!("line `{}` is listed twice", l.name),
+                    "list each line once",
+                );
+            } else if failures.iter().any(|f| f.ends().any(|e| e == (li, end))) {
+                refuse(
+                    b,
+                    format!(
+                        "end {} of line `{}` already has a failure",
+                        end.name().to_uppercase(),
+                        l.name
+                    ),
+                    "one failure per line end: remove its `[lines.failure]` or the other \
+                     [[failures]] table that names it",
+                );
+            } else if l.formulation == Formulation::Dg {
+                refuse(
+                    b,
+                    format!(
+                        "line `{}` is a `dg` line, whose ends cannot release",
+                        l.name
+                    ),
+                    "a dg line's end conditions are built into its numerical flux: use \
+                     `formulation = \"fe\"` or `\"hermite\"` for a line that fails",
+                );
+            } else if l.clamp[end.index()].is_some() {
+                refuse(
+                    b,
+                    format!(
+                        "end {} of line `{}` is clamped",
+                        end.name().to_uppercase(),
+                        l.name
+                    ),
+                    "remove the end's `clamp_a`/`clamp_b`: only a pinned end can release",
+                );
+            } else {
+                ends.push((li, end));
+            }
+        }
+        let time = spec.time.as_ref().map(|t| {
+            b.num(
+                t,
+                &k("time"),
+                Check {
+                    ok: NON_NEGATIVE,
+                    expected: "s, ≥ 0",
+                },
+                "the time at which the ends release",
+            )
+        });
+        let tension = spec.tension.as_ref().map(|t| {
+            b.num(
+                t,
+                &k("tension"),
+                Check {
+                    ok: POSITIVE,
+                    expected: "N, > 0",
+                },
+                "the magnitude of the ends' summed force on the point at which they release",
+            )
+        });
+        if b.errors.len() == errors {
+            let (line, end) = ends[0];
+            failures.push(LineFailure {
+                line,
+                end,
+                joined: ends[1..].to_vec(),
+                time,
+                tension,
+            });
+        }
+    }
 }
 
 pub(super) fn check_free_points_held(

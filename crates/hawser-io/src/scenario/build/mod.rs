@@ -284,12 +284,19 @@ pub fn build_scenario(
         .map(|s| s.name.get_ref().clone())
         .collect();
     let (points, point_index) = build_points(&mut b, &scenario.points, &environment, &body_names);
-    let (lines, failures) = build_lines(
+    let (lines, mut failures) = build_lines(
         &mut b,
         &scenario.lines,
         &type_index,
         &point_index,
         &line_types,
+    );
+    lines::build_joined_failures(
+        &mut b,
+        &scenario.failures,
+        &lines,
+        &point_index,
+        &mut failures,
     );
     check_free_points_held(&mut b, &scenario.points, &lines, &points);
     if scenario.lines.is_empty() {

@@ -205,6 +205,8 @@ pub(super) const RANGES: &[(&str, Range)] = &[
     ("stages[].payout_rate", all(-100.0, 100.0, "m/s")),
     ("failure.time", TIME),
     ("failure.tension", all(0.0, 1e12, "N")),
+    ("failures[].time", TIME),
+    ("failures[].tension", all(0.0, 1e12, "N")),
     // [[bodies]]
     ("bodies[].orientation", ANGLE),
     ("bodies[].centre_of_gravity", all(-1e4, 1e4, "m")),
