@@ -1,10 +1,10 @@
 //! `hawser validate`: runs the verification suite (`hawser::verification`), prints one row per
-//! case and formulation, writes the markdown report with its plots
+//! case, formulation and (for the cases that step in time) scheme, writes the markdown report with its plots
 //! (`hawser_io::verification_report`) and exits 1 when any check fails.
 
 use anyhow::{Context, Result, bail};
-use hawser::model::Formulation;
-use hawser::verification::{CASES, Fidelity, formulation_name, run_case};
+use hawser::model::{Formulation, Scheme};
+use hawser::verification::{CASES, Fidelity, run_case, run_label};
 use hawser_io::verification_report::{tally, text_table, write_report};
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -28,6 +28,21 @@ pub struct ValidateArgs {
     /// Run only the cases whose name contains this text.
     #[arg(long)]
     case: Option<String>,
+    /// Time-integration schemes of the cases that step in time, comma-separated: `rk4`,
+    /// `generalized-alpha` (the others are statics and run once).
+    #[arg(long, value_delimiter = ',', default_value = "rk4")]
+    scheme: Vec<String>,
+}
+
+fn parse_scheme(name: &str) -> Result<Scheme> {
+    Ok(match name.trim() {
+        "rk4" => Scheme::Rk4,
+        "generalized-alpha" => Scheme::GeneralizedAlpha,
+        other => bail!(
+            "unknown scheme `{other}` for validate (expected rk4 or generalized-alpha; the \
+             suite's cases state their steps and tolerances for these two)"
+        ),
+    })
 }
 
 fn parse_formulation(name: &str) -> Result<Formulation> {
@@ -46,6 +61,11 @@ pub fn run(args: &ValidateArgs) -> Result<ExitCode> {
         .iter()
         .map(|f| parse_formulation(f))
         .collect::<Result<Vec<_>>>()?;
+    let schemes = args
+        .scheme
+        .iter()
+        .map(|s| parse_scheme(s))
+        .collect::<Result<Vec<_>>>()?;
     let fidelity = if args.quick {
         Fidelity::Quick
     } else {
@@ -59,16 +79,23 @@ pub fn run(args: &ValidateArgs) -> Result<ExitCode> {
         {
             continue;
         }
+        let case_schemes = if case.steps_in_time {
+            &schemes[..]
+        } else {
+            &schemes[..1]
+        };
         for &f in &formulations {
-            let t = Instant::now();
-            let r = run_case(case, f, fidelity);
-            err!(
-                "{} ({}): {:.1} s",
-                case.name,
-                formulation_name(f),
-                t.elapsed().as_secs_f64()
-            );
-            results.push(r);
+            for &scheme in case_schemes {
+                let t = Instant::now();
+                let r = run_case(case, f, fidelity, scheme);
+                err!(
+                    "{} ({}): {:.1} s",
+                    case.name,
+                    run_label(f, r.scheme),
+                    t.elapsed().as_secs_f64()
+                );
+                results.push(r);
+            }
         }
     }
     let wall = start.elapsed().as_secs_f64();
@@ -80,19 +107,35 @@ pub fn run(args: &ValidateArgs) -> Result<ExitCode> {
         if args.quick { "quick" } else { "full" }
     );
     if !args.no_report {
-        let names: Vec<&str> = formulations.iter().map(|&f| formulation_name(f)).collect();
+        let names: Vec<&str> = formulations
+            .iter()
+            .map(|&f| hawser::verification::formulation_name(f))
+            .collect();
+        let scheme_names: Vec<&str> = schemes.iter().map(|s| s.name()).collect();
         let preamble = format!(
-            "Produced by `hawser validate{}{}` ({} suite, formulations {}; {wall:.0} s wall \
-             time in release mode). Regenerate with\n\n```sh\ncargo run --release -p hawser-cli \
-             -- validate\n```\n\nfrom the repository root (writes this file and `img/`).",
+            "Produced by `hawser validate{}{}{}` ({} suite, formulations {}, schemes {}; \
+             {wall:.0} s wall time in release mode). Regenerate with\n\n```sh\ncargo run \
+             --release -p hawser-cli -- validate{}\n```\n\nfrom the repository root (writes this \
+             file and `img/`).",
             if args.quick { " --quick" } else { "" },
             if names.len() == 3 {
                 String::new()
             } else {
                 format!(" --formulation {}", names.join(","))
             },
+            if scheme_names == ["rk4"] {
+                String::new()
+            } else {
+                format!(" --scheme {}", scheme_names.join(","))
+            },
             if args.quick { "quick" } else { "full" },
-            names.join(", ")
+            names.join(", "),
+            scheme_names.join(", "),
+            if scheme_names == ["rk4"] {
+                String::new()
+            } else {
+                format!(" --scheme {}", scheme_names.join(","))
+            },
         );
         write_report(&results, &args.report, &preamble)
             .with_context(|| format!("writing {}", args.report.display()))?;

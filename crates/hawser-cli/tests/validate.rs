@@ -1,5 +1,6 @@
 //! `hawser validate --quick`: the verification suite's CI subset through the binary — every
-//! case runs (or says why it cannot), nothing fails, the report and its plots are written.
+//! case runs (or says why it cannot), nothing fails, the report and its plots are written;
+//! with `--scheme rk4,generalized-alpha` the cases that step in time run with both schemes.
 
 use hawser::verification::CASES;
 use hawser_io::verification_report::COLUMNS;
@@ -10,7 +11,13 @@ fn quick_suite_passes_and_writes_the_report() {
     let dir = std::env::temp_dir().join(format!("hawser_validate_{}", std::process::id()));
     let report = dir.join("verification").join("report.md");
     let out = Command::new(env!("CARGO_BIN_EXE_hawser"))
-        .args(["validate", "--quick", "--report"])
+        .args([
+            "validate",
+            "--quick",
+            "--scheme",
+            "rk4,generalized-alpha",
+            "--report",
+        ])
         .arg(&report)
         .output()
         .expect("hawser runs");
@@ -50,9 +57,44 @@ fn quick_suite_passes_and_writes_the_report() {
         "{stdout}"
     );
     assert!(!stdout.contains("FAIL"), "{stdout}");
+    // The cases that step in time ran with generalized-α too: they pass for fe and hermite,
+    // and dg (explicit only) says so; the statics cases ran once.
+    for case in CASES.iter().filter(|c| c.steps_in_time).map(|c| c.name) {
+        for formulation in ["fe", "hermite"] {
+            let label = format!(" {formulation} (generalized-alpha) ");
+            let rows: Vec<&str> = stdout
+                .lines()
+                .filter(|l| l.starts_with(case) && l.contains(&label))
+                .collect();
+            assert!(
+                !rows.is_empty(),
+                "no generalized-α row for {case}, {formulation}"
+            );
+            assert!(
+                rows.iter()
+                    .all(|l| l.ends_with("pass") || l.contains("n/a")),
+                "{rows:#?}"
+            );
+        }
+        assert!(
+            stdout.lines().any(|l| l.starts_with(case)
+                && l.contains(" dg (generalized-alpha) ")
+                && l.contains("n/a: dg lines step explicitly")),
+            "{stdout}"
+        );
+    }
+    for case in CASES.iter().filter(|c| !c.steps_in_time).map(|c| c.name) {
+        assert!(
+            !stdout
+                .lines()
+                .any(|l| l.starts_with(case) && l.contains("generalized-alpha")),
+            "{case} does not step in time:\n{stdout}"
+        );
+    }
     // The report: the same table in markdown, and the plots it links.
     let md = std::fs::read_to_string(&report).expect("report written");
     assert!(md.contains("| case | formulation | quantity |"), "{md}");
+    assert!(md.contains("| fe (generalized-alpha) |"), "{md}");
     let images: Vec<&str> = md
         .lines()
         .filter_map(|l| l.split("](img/").nth(1))

@@ -635,7 +635,14 @@ fn verification(w: &mut String, img: &Path) {
     use hawser_io::verification_report::{COLUMNS, cells, tally};
     let results: Vec<_> = CASES
         .iter()
-        .map(|c| run_case(c, Formulation::Dg, Fidelity::Full))
+        .map(|c| {
+            run_case(
+                c,
+                Formulation::Dg,
+                Fidelity::Full,
+                hawser::model::Scheme::Rk4,
+            )
+        })
         .collect();
     let (pass, fail, na) = tally(&results);
     let _ = writeln!(

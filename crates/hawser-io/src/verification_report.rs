@@ -6,7 +6,7 @@
 //! from the report by relative paths.
 
 use hawser::math::Real;
-use hawser::verification::{CASES, CaseResult, Check, Outcome, Plot, Tolerance, formulation_name};
+use hawser::verification::{CASES, CaseResult, Check, Outcome, Plot, Tolerance, run_label};
 use plotters::prelude::*;
 use std::fmt::Write as _;
 use std::path::Path;
@@ -95,7 +95,7 @@ pub fn cells(c: &Check) -> [String; 8] {
     };
     [
         c.case.to_string(),
-        formulation_name(c.formulation).to_string(),
+        run_label(c.formulation, c.scheme),
         c.quantity.clone(),
         with_unit(number(c.expected), c.unit),
         with_unit(number(c.computed), c.unit),
@@ -164,7 +164,9 @@ pub fn plot_file(result: &CaseResult, plot: &Plot) -> String {
     format!(
         "{}_{}_{}.svg",
         result.case,
-        formulation_name(result.formulation),
+        run_label(result.formulation, result.scheme)
+            .replace(" (", "-")
+            .replace(')', ""),
         plot.name
     )
 }
@@ -201,7 +203,7 @@ pub fn markdown(results: &[CaseResult], preamble: &str) -> String {
                     md,
                     "![{} ({})](img/{})\n",
                     p.title,
-                    formulation_name(r.formulation),
+                    run_label(r.formulation, r.scheme),
                     plot_file(r, p)
                 );
             }
@@ -219,7 +221,7 @@ pub fn write_report(results: &[CaseResult], report: &Path, preamble: &str) -> st
         for p in &r.plots {
             let svg = plot_svg(
                 p,
-                &format!("{} ({})", p.title, formulation_name(r.formulation)),
+                &format!("{} ({})", p.title, run_label(r.formulation, r.scheme)),
             )
             .map_err(std::io::Error::other)?;
             std::fs::write(img.join(plot_file(r, p)), svg)?;

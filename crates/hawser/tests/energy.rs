@@ -19,8 +19,15 @@ fn energy_is_conserved_to_rk4_accuracy() {
     let duration = 6.4;
     let dt = 4.0e-4;
     for mass_matrix in [MassMatrix::Lumped, MassMatrix::Consistent] {
-        let coarse = energy_drift(Formulation::Fe, mass_matrix, dt, duration).unwrap();
-        let fine = energy_drift(Formulation::Fe, mass_matrix, 0.5 * dt, duration).unwrap();
+        let coarse = energy_drift(Formulation::Fe, mass_matrix, dt, duration, Scheme::Rk4).unwrap();
+        let fine = energy_drift(
+            Formulation::Fe,
+            mass_matrix,
+            0.5 * dt,
+            duration,
+            Scheme::Rk4,
+        )
+        .unwrap();
         let (scale, min_strain) = (fine.scale, coarse.min_strain.min(fine.min_strain));
         let order = (coarse.worst / fine.worst).log2();
         eprintln!(

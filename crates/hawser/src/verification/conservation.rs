@@ -328,8 +328,9 @@ pub fn energy_drift(
     mass_matrix: MassMatrix,
     dt: Real,
     duration: Real,
+    scheme: Scheme,
 ) -> Result<EnergyRun, CaseError> {
-    energy_drift_with_filter(formulation, mass_matrix, dt, duration, 0.0)
+    energy_drift_with_filter(formulation, mass_matrix, dt, duration, 0.0, scheme)
 }
 
 /// [`energy_drift`] with a `dg` line's modal filter of strength `modal_filter`
@@ -340,6 +341,7 @@ pub fn energy_drift_with_filter(
     dt: Real,
     duration: Real,
     modal_filter: Real,
+    scheme: Scheme,
 ) -> Result<EnergyRun, CaseError> {
     let mut model = pendulum(formulation, mass_matrix);
     model.lines[0].modal_filter = modal_filter;
@@ -362,7 +364,12 @@ pub fn energy_drift_with_filter(
     );
     let mut ws = system.workspace();
     let e0 = system.mechanical_energy(0.0, &y, &mut ws).total();
-    let settings = fixed_step_settings(dt, Scheme::Rk4);
+    // Generalized-α runs as the trapezoidal rule (ρ∞ = 1), its energy-conserving member: the
+    // default ρ∞ = 0.8 dissipates by design (docs/implicit.md measures it).
+    let settings = Settings {
+        spectral_radius: 1.0,
+        ..fixed_step_settings(dt, scheme)
+    };
     let mut sim = session_from(&model, settings, y)?;
     let steps = (duration / dt).round() as usize;
     let scale = mass * g * length * (1.0 - theta0.cos());
@@ -392,6 +399,14 @@ pub fn energy_drift_with_filter(
     Ok(run)
 }
 
+/// The energy drift allowed to generalized-α (run as the trapezoidal rule, ρ∞ = 1) at dt/2 in
+/// [`energy`], relative to the swing energy [-]. The trapezoidal rule conserves the energy of a
+/// linear system exactly; what drifts is the nonlinear exchange between the swing and the
+/// axial breathing, at second order in dt (measured 6.8e-8 for `fe` and 3.2e-9 for `hermite`,
+/// orders 3.3 and 3.4). 1e-6 still shows a force error of 1e-6 of the weight (4e-6 of the swing
+/// energy over the swing path, the argument of [`energy`]) that RK4's 1e-7 shows.
+pub const GENERALIZED_ALPHA_DRIFT: Real = 1e-6;
+
 /// Energy conservation over one pendulum period (≈ 6.4 s; half of it, one swing through the
 /// bottom, in the quick suite) at dt = 4e-4 s and dt/2.
 ///
@@ -405,15 +420,19 @@ pub fn energy_drift_with_filter(
 /// nearly linear axial modes O(dt⁵) (measured 5.0 lumped, 4.8 consistent); a first- or
 /// second-order error source (a force evaluated at the wrong stage time) fails. The line must
 /// stay taut (the premise of the order check).
-pub fn energy(f: Formulation, fidelity: Fidelity) -> Result<Findings, CaseError> {
+///
+/// With generalized-α the pendulum runs at the same steps as the trapezoidal rule (ρ∞ = 1;
+/// the default 0.8 dissipates by design): drift at dt/2 within
+/// [`GENERALIZED_ALPHA_DRIFT`] and an observed order of at least 1.8 (second order).
+pub fn energy(f: Formulation, fidelity: Fidelity, scheme: Scheme) -> Result<Findings, CaseError> {
     let duration = match fidelity {
         Fidelity::Quick => 3.2,
         Fidelity::Full => 6.4,
     };
     let system = assemble(&pendulum(f, MassMatrix::Consistent))?;
     let dt = rk4_step(&system, 4.0e-4, 0.44 / 2.6);
-    let coarse = energy_drift(f, MassMatrix::Consistent, dt, duration)?;
-    let fine = energy_drift(f, MassMatrix::Consistent, 0.5 * dt, duration)?;
+    let coarse = energy_drift(f, MassMatrix::Consistent, dt, duration, scheme)?;
+    let fine = energy_drift(f, MassMatrix::Consistent, 0.5 * dt, duration, scheme)?;
     let order = (coarse.worst / fine.worst).log2();
     let plot_series = |label: &str, r: &EnergyRun| {
         let (x, y) = thin(&r.time, &r.drift, 400);
@@ -432,6 +451,7 @@ pub fn energy(f: Formulation, fidelity: Fidelity) -> Result<Findings, CaseError>
             0.5 * dt,
             duration,
             crate::formulation::dg::line::DEFAULT_MODAL_FILTER,
+            scheme,
         )?)
     } else {
         None
@@ -490,6 +510,23 @@ pub fn energy(f: Formulation, fidelity: Fidelity) -> Result<Findings, CaseError>
                 growth.max(0.0),
                 // RK4's own error at this step: the fe/hermite drift bound.
                 Tolerance::AtMost(1e-7),
+            ),
+        ]
+    } else if scheme == Scheme::GeneralizedAlpha {
+        vec![
+            Check::new(
+                format!("max |ΔE| / E_swing at dt = {:.3e} s (ρ∞ = 1)", 0.5 * dt),
+                "-",
+                0.0,
+                fine.worst / fine.scale,
+                Tolerance::AtMost(GENERALIZED_ALPHA_DRIFT),
+            ),
+            Check::new(
+                "observed order of the energy drift in dt (ρ∞ = 1)",
+                "-",
+                2.0,
+                order,
+                Tolerance::AtLeast(1.8),
             ),
         ]
     } else {

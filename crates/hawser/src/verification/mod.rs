@@ -89,6 +89,9 @@ pub struct Check {
     pub case: &'static str,
     /// Formulation run.
     pub formulation: Formulation,
+    /// Time-integration scheme of a case that steps in time ([`Case::steps_in_time`]);
+    /// `None` for the others, whose rows no scheme changes.
+    pub scheme: Option<Scheme>,
     /// What is compared, e.g. "end A tension".
     pub quantity: String,
     /// Unit of expected and computed ("-" for none).
@@ -130,6 +133,7 @@ impl Check {
         Self {
             case: "",
             formulation: Formulation::Fe,
+            scheme: None,
             quantity: quantity.into(),
             unit,
             expected,
@@ -149,6 +153,7 @@ impl Check {
         Self {
             case: "",
             formulation: Formulation::Fe,
+            scheme: None,
             quantity: "(whole case)".into(),
             unit: "-",
             expected: Real::NAN,
@@ -202,6 +207,8 @@ pub struct CaseResult {
     pub case: &'static str,
     /// Formulation.
     pub formulation: Formulation,
+    /// Scheme, for a case that steps in time.
+    pub scheme: Option<Scheme>,
     /// Rows.
     pub checks: Vec<Check>,
     /// Plots.
@@ -245,9 +252,18 @@ pub struct Case {
     pub name: &'static str,
     /// One line on what is compared with what.
     pub description: &'static str,
-    /// Runs the case.
-    pub run: fn(Formulation, Fidelity) -> Result<Findings, CaseError>,
+    /// Whether the case integrates in time, so that its rows depend on the scheme (the others
+    /// are statics, steady solutions or evaluations of the forces, and ignore it).
+    pub steps_in_time: bool,
+    /// Runs the case with a formulation, a fidelity and, for a case that steps in time, the
+    /// scheme ([`Scheme::Rk4`] or [`Scheme::GeneralizedAlpha`]; each such case states the
+    /// step it takes with each and why its tolerances hold for both).
+    pub run: fn(Formulation, Fidelity, Scheme) -> Result<Findings, CaseError>,
 }
+
+/// The schemes a case that steps in time runs with in the suite: RK4, the explicit default,
+/// and generalized-α, the implicit one.
+pub const SCHEMES: [Scheme; 2] = [Scheme::Rk4, Scheme::GeneralizedAlpha];
 
 /// Every case, in report order.
 pub const CASES: &[Case] = &[
@@ -255,72 +271,97 @@ pub const CASES: &[Case] = &[
         name: "catenary_suspended",
         description: "suspended elastic catenary: statics end tensions and shape against the \
                       closed form (statics::catenary)",
-        run: suspended_catenary,
+        steps_in_time: false,
+        run: |f, fidelity, _| suspended_catenary(f, fidelity),
     },
     Case {
         name: "catenary_seabed",
         description: "elastic catenary resting on a frictionless seabed (OC3 chain): end \
                       tensions against the closed form",
-        run: grounded_catenary,
+        steps_in_time: false,
+        run: |f, fidelity, _| grounded_catenary(f, fidelity),
     },
     Case {
         name: "catenary_slope",
         description: "elastic catenary resting on a frictionless sloping seabed (OC3 chain, \
                       the bed rising and falling at 5 %): end tensions against the closed form",
-        run: sloped_catenary,
+        steps_in_time: false,
+        run: |f, fidelity, _| sloped_catenary(f, fidelity),
     },
     Case {
         name: "hanging_mass",
         description: "mass on an elastic line: period against rod theory (β tan β = γ0 L/m)",
+        steps_in_time: true,
         run: hanging_mass,
     },
     Case {
         name: "axial_wave_speed",
         description: "axial pulse: arrival speed against √(EA/γ0)",
+        steps_in_time: true,
         run: axial_pulse,
     },
     Case {
         name: "taut_string",
         description: "taut-string fundamental transverse frequency against \
                       1/(2 L0) √(T/(γ0 (1 + ε)))",
+        steps_in_time: true,
         run: taut_string,
     },
     Case {
         name: "beam_bending",
         description: "bending frequencies: tensioned pinned–pinned beam against \
                       (nπ/L) √((EI (nπ/L)² + T)/γ0); the clamped cantilever",
+        steps_in_time: true,
         run: beam_bending,
     },
     Case {
         name: "rigid_rotation",
         description: "zero strain under rigid rotation: strains and tensions unchanged by \
                       random rigid motions",
-        run: rigid_rotation,
+        steps_in_time: false,
+        run: |f, fidelity, _| rigid_rotation(f, fidelity),
     },
     Case {
         name: "energy",
         description: "energy conservation without damping or drag: pendulum on an elastic \
                       line, drift and its order in dt",
+        steps_in_time: true,
         run: energy,
     },
     Case {
         name: "steady_towed_cable",
         description: "steady towed cable against an independent integration of the steady \
                       cable equations",
-        run: steady_towed_cable,
+        steps_in_time: false,
+        run: |f, fidelity, _| steady_towed_cable(f, fidelity),
     },
     Case {
         name: "convergence_order",
         description: "observed order in h of node positions and end tensions of the \
                       suspended catenary against the closed form",
-        run: catenary_convergence,
+        steps_in_time: false,
+        run: |f, fidelity, _| catenary_convergence(f, fidelity),
     },
 ];
 
-/// Runs one case for one formulation: rows labelled with the case and formulation; a case
-/// that did not run gives one row saying why.
-pub fn run_case(case: &Case, formulation: Formulation, fidelity: Fidelity) -> CaseResult {
-    let (mut checks, plots) = match (case.run)(formulation, fidelity) {
+/// Runs one case for one formulation (and `scheme`, if the case steps in time; the others
+/// ignore it and their rows carry no scheme): rows labelled with the case, formulation and
+/// scheme; a case that did not run gives one row saying why.
+pub fn run_case(
+    case: &Case,
+    formulation: Formulation,
+    fidelity: Fidelity,
+    scheme: Scheme,
+) -> CaseResult {
+    let scheme = case.steps_in_time.then_some(scheme);
+    let outcome = if scheme == Some(Scheme::GeneralizedAlpha) && formulation == Formulation::Dg {
+        Err(CaseError::NotAvailable(
+            "dg lines step explicitly: generalized-α refuses them".into(),
+        ))
+    } else {
+        (case.run)(formulation, fidelity, scheme.unwrap_or_default())
+    };
+    let (mut checks, plots) = match outcome {
         Ok(f) => (f.checks, f.plots),
         Err(CaseError::NotAvailable(why)) => (
             vec![Check::without_numbers(Outcome::NotAvailable(why))],
@@ -334,10 +375,12 @@ pub fn run_case(case: &Case, formulation: Formulation, fidelity: Fidelity) -> Ca
     for c in &mut checks {
         c.case = case.name;
         c.formulation = formulation;
+        c.scheme = scheme;
     }
     CaseResult {
         case: case.name,
         formulation,
+        scheme,
         checks,
         plots,
     }
@@ -349,6 +392,16 @@ pub fn formulation_name(f: Formulation) -> &'static str {
         Formulation::Fe => "fe",
         Formulation::Dg => "dg",
         Formulation::Hermite => "hermite",
+    }
+}
+
+/// How the report names a run of `formulation` with `scheme`: the formulation alone for the
+/// explicit default (RK4) and for cases that do not step in time, `fe (generalized-alpha)`
+/// for a case run with another scheme.
+pub fn run_label(formulation: Formulation, scheme: Option<Scheme>) -> String {
+    match scheme {
+        None | Some(Scheme::Rk4) => formulation_name(formulation).to_string(),
+        Some(s) => format!("{} ({})", formulation_name(formulation), s.name()),
     }
 }
 
@@ -547,11 +600,18 @@ pub fn set_point_state(system: &System, y: &mut [Real], point: usize, r: Vec3, v
 /// Times [s] at which the sampled signal `x` crosses `level` upwards, by linear interpolation
 /// between samples `dt` apart starting at t = 0.
 pub fn upward_crossings(x: &[Real], level: Real, dt: Real) -> Vec<Real> {
+    let times: Vec<Real> = (0..x.len()).map(|i| i as Real * dt).collect();
+    upward_crossings_at(&times, x, level)
+}
+
+/// Times [s] at which the samples `x` taken at `times` (increasing; steps of any length, as an
+/// adaptive scheme takes them) cross `level` upward, interpolated linearly between samples.
+pub fn upward_crossings_at(times: &[Real], x: &[Real], level: Real) -> Vec<Real> {
     let mut out = Vec::new();
     for i in 1..x.len() {
         let (a, b) = (x[i - 1] - level, x[i] - level);
         if a < 0.0 && b >= 0.0 {
-            out.push(dt * ((i - 1) as Real + a / (a - b)));
+            out.push(times[i - 1] + (times[i] - times[i - 1]) * a / (a - b));
         }
     }
     out

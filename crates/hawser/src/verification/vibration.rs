@@ -96,6 +96,7 @@ pub fn hanging_mass_period(
     mass_matrix: MassMatrix,
     amplitude: Real,
     duration: Real,
+    scheme: Scheme,
 ) -> Result<HangingMassRun, CaseError> {
     use hanging::*;
     if !(amplitude / LENGTH < 0.5 * MASS * G / EA) {
@@ -117,7 +118,7 @@ pub fn hanging_mass_period(
     let y = solve(&pulled, None, &options)?.state;
     let dt = rk4_step(&rest, 1.0e-4, 0.8);
     let steps = (duration / dt).round() as usize;
-    let settings = fixed_step_settings(dt, Scheme::Rk4);
+    let settings = fixed_step_settings(dt, scheme);
     let mut sim = session_from(&rest_model, settings, y)?;
     let mut height = Vec::with_capacity(steps);
     for _ in 0..steps {
@@ -148,8 +149,17 @@ pub fn hanging_mass_period(
 /// period measurement (crossing interpolation, higher axial modes riding on the signal) adds
 /// ~1e-7; 5e-5 is 1/300 of the line-mass effect (the bare mass's period is 1.6 % shorter).
 /// Against Rayleigh: its own model error μ²/90 = 1.1e-4 plus the above, 1.6e-4.
-pub fn hanging_mass(f: Formulation, _fidelity: Fidelity) -> Result<Findings, CaseError> {
-    let run = hanging_mass_period(f, MassMatrix::Consistent, 2.0e-3, 4.0)?;
+///
+/// Generalized-α at the same step lengthens the period by about (ωh)²/12 = 8e-7 at the
+/// 31 rad/s fundamental (docs/implicit.md: second order, the trapezoidal rule's phase error
+/// plus a fraction for ρ∞ = 0.8) and damps the element modes RK4 keeps: the same tolerances
+/// hold with a margin of 60.
+pub fn hanging_mass(
+    f: Formulation,
+    _fidelity: Fidelity,
+    scheme: Scheme,
+) -> Result<Findings, CaseError> {
+    let run = hanging_mass_period(f, MassMatrix::Consistent, 2.0e-3, 4.0, scheme)?;
     let head = run.time.partition_point(|&t| t <= 0.5);
     let (t, _) = thin(&run.time[..head], &run.height[..head], 500);
     let (tm, z) = thin(&run.time[..head], &run.height[..head], 80);
@@ -247,6 +257,7 @@ fn transverse_vibration(
     amplitude: Real,
     dt: Option<Real>,
     duration: Real,
+    scheme: Scheme,
 ) -> Result<(Real, Vec<Real>, Vec<Real>), CaseError> {
     let system = assemble(model)?;
     let (l0, n) = (model.lines[0].length(), model.lines[0].elements());
@@ -261,10 +272,11 @@ fn transverse_vibration(
         )
     });
     let settings = match dt {
-        Some(dt) => fixed_step_settings(rk4_step(&system, dt, 0.8), Scheme::Rk4),
+        Some(dt) => fixed_step_settings(rk4_step(&system, dt, 0.8), scheme),
         None => Settings {
             output_interval: 1e-3,
             initial_condition: InitialCondition::AsDefined,
+            scheme,
             ..Default::default()
         },
     };
@@ -278,7 +290,8 @@ fn transverse_vibration(
         displacement.push(node_position(&system, ws, 0, probe).y);
         time.push(sim.time());
     }
-    let crossings = upward_crossings(&displacement, 0.0, sim.step_size());
+    // From the sample times: an adaptive scheme's steps differ in length.
+    let crossings = upward_crossings_at(&time, &displacement, 0.0);
     if crossings.len() < 3 {
         return Err(CaseError::Failed(format!(
             "{} upward crossings, 3 needed",
@@ -301,11 +314,18 @@ pub fn taut_string_frequency(
     formulation: Formulation,
     mass_matrix: MassMatrix,
     elements: usize,
+    scheme: Scheme,
 ) -> Result<StringRun, CaseError> {
     let (l0, gamma, ea, strain) = STRING;
     let model = taut_string_model(formulation, mass_matrix, STRING, elements);
-    let (frequency, time, displacement) =
-        transverse_vibration(&model, 1, 1.0e-5 * l0, Some(2.5e-4), 10_400.0 * 2.5e-4)?;
+    let (frequency, time, displacement) = transverse_vibration(
+        &model,
+        1,
+        1.0e-5 * l0,
+        Some(2.5e-4),
+        10_400.0 * 2.5e-4,
+        scheme,
+    )?;
     Ok(StringRun {
         frequency,
         exact: 1.0 / (2.0 * l0) * (ea * strain / (gamma * (1.0 + strain))).sqrt(),
@@ -318,8 +338,14 @@ pub fn taut_string_frequency(
 ///
 /// Tolerance 2.5 π²/(24 N²) relative: the leading discretisation error of linear elements
 /// (−π²/(24 N²) lumped, + consistent; the `fe` tests pin it to within 5 %) with a margin for
-/// the next term; higher-order formulations are well inside.
-pub fn taut_string(f: Formulation, fidelity: Fidelity) -> Result<Findings, CaseError> {
+/// the next term; higher-order formulations are well inside. Generalized-α at the same
+/// 2.5e-4 s step adds a period error of about (ωh)²/12 = 5e-7 at the 10 rad/s fundamental,
+/// 1/1000 of the tolerance at N = 64.
+pub fn taut_string(
+    f: Formulation,
+    fidelity: Fidelity,
+    scheme: Scheme,
+) -> Result<Findings, CaseError> {
     let meshes: &[usize] = match fidelity {
         Fidelity::Quick => &[32],
         Fidelity::Full => &[32, 64],
@@ -327,7 +353,7 @@ pub fn taut_string(f: Formulation, fidelity: Fidelity) -> Result<Findings, CaseE
     let mut checks = Vec::new();
     let mut plots = Vec::new();
     for &n in meshes {
-        let run = taut_string_frequency(f, MassMatrix::Consistent, n)?;
+        let run = taut_string_frequency(f, MassMatrix::Consistent, n, scheme)?;
         checks.push(Check::new(
             format!("fundamental frequency, N = {n}"),
             "Hz",
@@ -377,8 +403,17 @@ pub fn taut_string(f: Formulation, fidelity: Fidelity) -> Result<Findings, CaseE
 /// relative: cubic elements' frequency error is O(h⁴), ~1e-4 here; the margin covers the
 /// span change of ε L (1e-4, in L) and the measurement.
 ///
+/// With generalized-α the automatic step is the adaptive controller's at the default
+/// tolerance (docs/implicit.md), and steps land on the 1 ms output times, so h ≤ 1 ms: at
+/// mode 2 (ω = 7.4 rad/s) ωh ≤ 7.4e-3 and the scheme's period error (ωh)²/12 ≤ 5e-6, 1/1000
+/// of the tolerance.
+///
 /// And the DG paper's vibrating cantilever ([`cantilever_frequencies`]).
-pub fn beam_bending(f: Formulation, _fidelity: Fidelity) -> Result<Findings, CaseError> {
+pub fn beam_bending(
+    f: Formulation,
+    _fidelity: Fidelity,
+    scheme: Scheme,
+) -> Result<Findings, CaseError> {
     if !has_bending(f) {
         return Err(CaseError::NotAvailable(format!(
             "{} has no bending stiffness (SPEC §3)",
@@ -393,7 +428,8 @@ pub fn beam_bending(f: Formulation, _fidelity: Fidelity) -> Result<Findings, Cas
     for mode in [1usize, 2] {
         let k = mode as Real * PI / l0;
         let exact = k * ((ei * k * k + tension) / gamma).sqrt() / TAU;
-        let (frequency, _, _) = transverse_vibration(&model, mode, 1e-3, None, 4.2 / exact)?;
+        let (frequency, _, _) =
+            transverse_vibration(&model, mode, 1e-3, None, 4.2 / exact, scheme)?;
         checks.push(Check::new(
             format!("bending mode {mode} frequency"),
             "Hz",
