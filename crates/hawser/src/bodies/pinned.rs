@@ -56,20 +56,24 @@ use crate::model::{BodyTrack, Pin, RigidKinematics};
 
 /// Position [m], velocity [m/s] and acceleration [m/s²] of the pin at time t [s]: the body's
 /// initial `position` for a fixed pin, the motion's origin for a prescribed one, the host's
-/// track for a coupled one (`track`, which a coupled pin has).
+/// track for a coupled one (`track`, which a coupled pin has), the parent's point for a pin
+/// on a body (`parent`, the parent's kinematics at t; the acceleration is then the parent's
+/// point's with the parent's accelerations as `parent` holds them, which the coupled solve
+/// replaces for an integrated parent). Without its track or parent, a pin is at rest at
+/// `position`.
 pub fn pin_kinematics(
     pin: &Pin,
     position: &Vec3,
     track: Option<&BodyTrack>,
+    parent: Option<&RigidKinematics>,
     t: Real,
 ) -> (Vec3, Vec3, Vec3) {
+    let at_rest = (*position, Vec3::zeros(), Vec3::zeros());
     match pin {
-        Pin::Fixed => (*position, Vec3::zeros(), Vec3::zeros()),
+        Pin::Fixed => at_rest,
         Pin::Prescribed(m) => translation(&m.kinematics(t)),
-        Pin::Coupled => match track {
-            Some(track) => translation(&track.at(t)),
-            None => (*position, Vec3::zeros(), Vec3::zeros()),
-        },
+        Pin::Coupled => track.map_or(at_rest, |track| translation(&track.at(t))),
+        Pin::Body { point, .. } => parent.map_or(at_rest, |k| k.point(point)),
     }
 }
 
