@@ -1,5 +1,6 @@
 //! Pinned bodies: a rigid body whose origin (the pin) moves as given while it turns freely
-//! ([`crate::model::BodyKind::Pinned`]; MoorDyn's `CoupledPinned` bodies and `Pinned` rods).
+//! ([`crate::model::BodyKind::Pinned`]; MoorDyn's `CoupledPinned` bodies and `Pinned` and
+//! `Body#Pinned` rods).
 //!
 //! # Equations
 //!
@@ -40,6 +41,30 @@
 //!
 //! and the body pushes on its pin (on the host of a coupled pin) with −R (MoorDyn's
 //! `Body::getFnet` for a `CPLDPIN` body: F6net − M a over the translations).
+//!
+//! # A pin on another body
+//!
+//! A body pinned to a point of a parent body ([`crate::model::Pin::Body`]) has its origin on
+//! the parent's point p = o_p + R_p ρ₀ (ρ₀ [m] in the parent's axes, ρ = R_p ρ₀). With u_p =
+//! [a_op; α_p] the parent's unknowns and J = [1, −[ρ]×] (3×6), the constraint on the child's
+//! origin is
+//!
+//! ```text
+//! a_o = J u_p + ω_p × (ω_p × ρ)                                   [m/s²]
+//! ```
+//!
+//! the child's equations about its origin are the ones above with its pin force R [N], and
+//! the parent receives −R at the point: −Jᵀ R (force −R, moment ρ × (−R) [N·m] about its
+//! origin) on its six rows. R is eliminated exactly by adding Jᵀ × (the child's three
+//! translational rows) to the parent's six rows, then replacing the child's translational
+//! rows by the constraint: a row operation on the coupled system after assembly
+//! ([`crate::linalg::CoupledSystem::body_parent`], beside `body_pin`), 9 unknowns per pair.
+//! The pin force for outputs is the child's translational residual R = M_tt a_o + M_tr α − F,
+//! as for any pin. On a prescribed or coupled parent, whose point's acceleration is known,
+//! the child is a pinned body on that known track. Statics place the child's origin on the
+//! parent's point, seek the child's rotational equilibrium, and add the child's net force F
+//! and its moment ρ × F to the parent's equilibrium. Chains are one level deep: a parent is
+//! not itself pinned to a body ([`crate::model::Model::validate`]).
 //!
 //! # In the solvers
 //!
