@@ -779,8 +779,8 @@ fn with_arm(pin_keys: &str) -> String {
 /// towfish at (−100, 0, −50) turned 180° in yaw puts (1, 0, −0.5) at (−101, 0, −50.5)).
 #[test]
 fn pin_on_a_body_builds() {
-    use hawser::model::{BodyKind, Pin};
     use hawser::math::Vec3;
+    use hawser::model::{BodyKind, Pin};
     let text = with_arm("pin = \"body\"\npin_body = \"towfish\"\npin_point = [1.0, 0.0, -0.5]");
     let s = scenario::parse(Path::new(FILE), &text).expect("valid");
     let arm = &s.model.bodies[1];
@@ -791,7 +791,11 @@ fn pin_on_a_body_builds() {
             point: Vec3::new(1.0, 0.0, -0.5)
         })
     );
-    assert!((arm.position - Vec3::new(-101.0, 0.0, -50.5)).norm() < 1e-9, "{}", arm.position);
+    assert!(
+        (arm.position - Vec3::new(-101.0, 0.0, -50.5)).norm() < 1e-9,
+        "{}",
+        arm.position
+    );
 }
 
 /// A pin on an unknown body, on the body itself, on a body that is itself pinned to a body,
@@ -822,7 +826,10 @@ fn bad_pins_on_bodies() {
         ),
     ] {
         let msg = error(&with_arm(keys));
-        assert!(msg.contains(key) && msg.contains(needle), "{key}, {needle}:\n{msg}");
+        assert!(
+            msg.contains(key) && msg.contains(needle),
+            "{key}, {needle}:\n{msg}"
+        );
     }
     // A chain: a third body pinned to the arm, which is pinned to the towfish.
     let text = with_arm("pin = \"body\"\npin_body = \"towfish\"")

@@ -717,7 +717,11 @@ fn rod_pinned_on_a_body_converts_to_a_pin_on_the_body() {
         })
     );
     assert_eq!(bodies[rod].position, Vec3::new(0.0, 0.0, -65.0));
-    assert!((bodies[rod].mass - 400.0 * 10.0).abs() < 1e-9, "{}", bodies[rod].mass);
+    assert!(
+        (bodies[rod].mass - 400.0 * 10.0).abs() < 1e-9,
+        "{}",
+        bodies[rod].mass
+    );
     let toml = toml::to_string(&deck.scenario).unwrap();
     assert!(
         toml.contains("pin = \"body\"") && toml.contains("pin_body = \"B1\""),
