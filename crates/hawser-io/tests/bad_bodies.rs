@@ -765,3 +765,80 @@ fn documented_pinned_example_is_valid() {
     assert!((arm.orientation.euler_angles().1.to_degrees() - 30.0).abs() < 1e-9);
     assert_eq!(buoy.kind, BodyKind::Pinned(Pin::Fixed));
 }
+
+/// A second body, `arm`, pinned to the towfish at (1, 0, −0.5) in the towfish's axes, given
+/// by the keys `pin_keys` (appended to the arm's table).
+fn with_arm(pin_keys: &str) -> String {
+    format!(
+        "{BASE}\n[[bodies]]\nname = \"arm\"\ntype = \"pinned\"\nmass = 100.0\n\
+         centre_of_gravity = [0.0, 0.0, -1.0]\ninertia = [30.0, 30.0, 5.0]\n{pin_keys}\n"
+    )
+}
+
+/// `pin = "body"` pins a body to a point of another: its origin starts on that point (the
+/// towfish at (−100, 0, −50) turned 180° in yaw puts (1, 0, −0.5) at (−101, 0, −50.5)).
+#[test]
+fn pin_on_a_body_builds() {
+    use hawser::math::Vec3;
+    use hawser::model::{BodyKind, Pin};
+    let text = with_arm("pin = \"body\"\npin_body = \"towfish\"\npin_point = [1.0, 0.0, -0.5]");
+    let s = scenario::parse(Path::new(FILE), &text).expect("valid");
+    let arm = &s.model.bodies[1];
+    assert_eq!(
+        arm.kind,
+        BodyKind::Pinned(Pin::Body {
+            body: 0,
+            point: Vec3::new(1.0, 0.0, -0.5)
+        })
+    );
+    assert!(
+        (arm.position - Vec3::new(-101.0, 0.0, -50.5)).norm() < 1e-9,
+        "{}",
+        arm.position
+    );
+}
+
+/// A pin on an unknown body, on the body itself, on a body that is itself pinned to a body,
+/// without `pin_body`, or with a `position`, is refused at its key, with a hint.
+#[test]
+fn bad_pins_on_bodies() {
+    for (keys, key, needle) in [
+        (
+            "pin = \"body\"\npin_body = \"tug\"",
+            "bodies[1].pin_body",
+            "which does not exist",
+        ),
+        (
+            "pin = \"body\"\npin_body = \"arm\"",
+            "bodies[1].pin_body",
+            "is pinned to itself",
+        ),
+        ("pin = \"body\"", "bodies[1].pin_body", "has no `pin_body`"),
+        (
+            "pin = \"body\"\npin_body = \"towfish\"\nposition = [0.0, 0.0, 0.0]",
+            "bodies[1].position",
+            "takes its `position` from the pin",
+        ),
+        (
+            "pin = \"fixed\"\nposition = [0.0, 0.0, -50.0]\npin_point = [0.0, 0.0, 1.0]",
+            "bodies[1].pin_point",
+            "only a body with `pin = \"body\"`",
+        ),
+    ] {
+        let msg = error(&with_arm(keys));
+        assert!(
+            msg.contains(key) && msg.contains(needle),
+            "{key}, {needle}:\n{msg}"
+        );
+    }
+    // A chain: a third body pinned to the arm, which is pinned to the towfish.
+    let text = with_arm("pin = \"body\"\npin_body = \"towfish\"")
+        + "\n[[bodies]]\nname = \"hook\"\ntype = \"pinned\"\nmass = 10.0\n\
+           inertia = [1.0, 1.0, 1.0]\npin = \"body\"\npin_body = \"arm\"\n";
+    let msg = error(&text);
+    assert!(
+        msg.contains("bodies[2].pin_body") && msg.contains("itself pinned to a body"),
+        "{msg}"
+    );
+    insta::assert_snapshot!(msg);
+}

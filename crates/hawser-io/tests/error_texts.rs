@@ -59,6 +59,10 @@ fn every_error_variant_reads_as_words() {
             scheme: "three-level",
             body: "buoy".into(),
         },
+        ModelError::SchemeCannotStepPinOnBody {
+            body: "arm".into(),
+            parent: "buoy".into(),
+        },
         ModelError::StateLength {
             given: 3,
             expected: 6,
@@ -72,6 +76,7 @@ fn every_error_variant_reads_as_words() {
             ModelError::Invalid { .. }
             | ModelError::SchemeCannotStepDg { .. }
             | ModelError::SchemeCannotStepBodies { .. }
+            | ModelError::SchemeCannotStepPinOnBody { .. }
             | ModelError::StateLength { .. }
             | ModelError::MasslessDgJoint { .. } => check(&e.to_string()),
         }
@@ -149,6 +154,10 @@ fn every_error_variant_reads_as_words() {
             formulation: "dg",
         },
         ModalError::NoDegreesOfFreedom,
+        ModalError::PinnedToBody {
+            body: "arm".into(),
+            parent: "buoy".into(),
+        },
         ModalError::MassNotDefinite,
         ModalError::Singular {
             location: "the stiffness matrix".into(),
@@ -162,6 +171,7 @@ fn every_error_variant_reads_as_words() {
         match e {
             ModalError::Unsupported { .. }
             | ModalError::NoDegreesOfFreedom
+            | ModalError::PinnedToBody { .. }
             | ModalError::MassNotDefinite
             | ModalError::Singular { .. }
             | ModalError::NotConverged { .. } => check(&e.to_string()),

@@ -600,7 +600,7 @@ bad_deck!(
     "1     main       1        R1B"
 );
 bad_deck!(
-    rod_pinned_on_a_body_refused,
+    rod_pinned_on_a_missing_body,
     "rod_hanging.txt",
     "1    rod       Free       ",
     "1    rod       Body1Pinned"
@@ -695,6 +695,38 @@ fn pinned_rods_convert_to_pinned_bodies() {
         assert!((body.mass - 77.7066 * 20.0).abs() < 1e-9, "{}", body.mass);
         assert!(deck.scenario.bodies[0].pin.is_some());
     }
+}
+
+/// A `Body1Pinned` rod becomes a body `R1` pinned to body `B1` at end A (the point
+/// (Xa, Ya, Za) in `B1`'s axes, its origin there at t = 0), with the free rod's mass, its
+/// member from its origin to end B; the scenario says `pin = "body"`, `pin_body = "B1"`.
+#[test]
+fn rod_pinned_on_a_body_converts_to_a_pin_on_the_body() {
+    use hawser::math::Vec3;
+    use hawser::model::{BodyKind, Pin};
+    let text = deck_text("buoy_pinned_rod.txt");
+    let deck = parse(&text).unwrap_or_else(|e| panic!("{e}"));
+    let bodies = &deck.loaded.model.bodies;
+    let rod = bodies.iter().position(|b| b.name == "R1").unwrap();
+    let buoy = bodies.iter().position(|b| b.name == "B1").unwrap();
+    assert_eq!(
+        bodies[rod].kind,
+        BodyKind::Pinned(Pin::Body {
+            body: buoy,
+            point: Vec3::new(0.0, 0.0, -5.0)
+        })
+    );
+    assert_eq!(bodies[rod].position, Vec3::new(0.0, 0.0, -65.0));
+    assert!(
+        (bodies[rod].mass - 400.0 * 10.0).abs() < 1e-9,
+        "{}",
+        bodies[rod].mass
+    );
+    let toml = toml::to_string(&deck.scenario).unwrap();
+    assert!(
+        toml.contains("pin = \"body\"") && toml.contains("pin_body = \"B1\""),
+        "{toml}"
+    );
 }
 
 /// A deck with a `CoupledPinned` body (OC3's buoy with its origin held by the host, 60 m

@@ -36,6 +36,20 @@ pub enum ModelError {
         /// The first free body's name.
         body: String,
     },
+    /// A body pinned to another body in a generalized-α run: the scheme enforces the pin's
+    /// acceleration constraint with the parent's kinematics of its force evaluation (at
+    /// t_{n+1−α_f}) rather than at t_{n+1}, and converges at first order only (measured in
+    /// `crates/hawser/tests/body_pins.rs`), so it is refused until that is mended.
+    #[error(
+        "body {body}: is pinned to body {parent}, which the generalized-alpha scheme steps at \
+         first order only; use scheme = \"rk4\" or \"ssp-rk3\""
+    )]
+    SchemeCannotStepPinOnBody {
+        /// The pinned body's name.
+        body: String,
+        /// The parent body's name.
+        parent: String,
+    },
     /// A state vector given to a session has the wrong length.
     #[error("the initial state: has {given} entries where the model's state has {expected}")]
     StateLength {
@@ -195,6 +209,19 @@ pub enum ModalError {
         line: String,
         /// Formulation name.
         formulation: &'static str,
+    },
+    /// A body pinned to a point of another body: its translations follow the parent's
+    /// rotations, a constraint the linearisation does not carry.
+    #[error(
+        "body `{body}` is pinned to body `{parent}`, and the modal analysis holds a pinned \
+         body's origin still (its pin's motion is given), which a pin on a moving body is not; \
+         hint: run the dynamics, or pin `{body}` to a fixed point to compute the modes"
+    )]
+    PinnedToBody {
+        /// Body name.
+        body: String,
+        /// The parent body's name.
+        parent: String,
     },
     /// Nothing can move: every line end is fixed or prescribed and no line has interior nodes.
     #[error(

@@ -403,6 +403,23 @@ fn pinned_body_time_loop_does_not_allocate() {
     for scheme in [Scheme::Rk4, Scheme::GeneralizedAlpha] {
         check("a pinned body on a prescribed pin", &model, scheme);
     }
+    // The same arm pinned to a point 1 m below the origin of a free float.
+    model.bodies[0].kind = BodyKind::Pinned(Pin::Body {
+        body: 1,
+        point: Vec3::new(0.0, 0.0, -1.0),
+    });
+    model.bodies.push(Body {
+        position: top + Vec3::new(0.0, 0.0, 1.0),
+        ..Body::new(
+            "float",
+            2000.0,
+            hawser::math::Mat3::from_diagonal(&Vec3::new(800.0, 800.0, 400.0)),
+        )
+    });
+    // (generalized-α refuses a body pinned to a body: SchemeCannotStepPinOnBody)
+    for scheme in [Scheme::Rk4, Scheme::SspRk3] {
+        check("a body pinned to a free body", &model, scheme);
+    }
 }
 
 /// Reads every output channel and every line's samples at each sample, into buffers sized

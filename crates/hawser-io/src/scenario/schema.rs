@@ -1022,6 +1022,11 @@ pub enum PinSpec {
     /// `position`; the force the body puts on its pin is read back. Run alone (the CLI), the
     /// pin stays at `position`.
     Coupled,
+    /// On a point of another body (`pin_body`, at `pin_point` in its body axes), which the
+    /// body pushes on through the pin (MoorDyn's `Body#Pinned` rods); the body's `position`
+    /// is that point at t = 0, so it is not given. The parent is free, fixed, prescribed,
+    /// coupled or pinned (but not itself pinned to a body).
+    Body,
 }
 
 /// `[[bodies.members]]`: a rigid cylinder on the body with side drag and added mass along it,
@@ -1174,10 +1179,20 @@ pub struct BodySpec {
     #[schemars(with = "BodyKindSpec")]
     pub kind: Spanned<BodyKindSpec>,
     /// The pin of a `pinned` body: `"fixed"` (default, at `position`), `"prescribed"` (on
-    /// `motion`) or `"coupled"` (set by a coupling host).
+    /// `motion`), `"coupled"` (set by a coupling host) or `"body"` (on a point of
+    /// `pin_body`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<PinSpec>")]
     pub pin: Option<Spanned<PinSpec>>,
+    /// The parent body of a body with `pin = "body"` (its name).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<String>")]
+    pub pin_body: Option<Spanned<String>>,
+    /// The pin's point on `pin_body`, in the parent's body axes from its origin [m]; default
+    /// the parent's origin.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<[f64; 3]>")]
+    pub pin_point: Option<Spanned<[f64; 3]>>,
     /// The motion of a `prescribed` body: `fixed`, `constant-velocity`, `manoeuvre`,
     /// `vessel-motion` or `rao`, with the keys of `[points.motion]`; it places the body
     /// origin (`start`, `heading` or the file), so `position` and `orientation` are not given.

@@ -245,8 +245,17 @@ pub struct Modes {
 /// are modal coefficients, not linearised; compute the modes of [`modal_twin`] instead). `fe`
 /// and `hermite` lines, free points, free bodies and pinned bodies are (a pinned body turns
 /// about its pin, whose motion is given: its three rotations are degrees of freedom, its
-/// translations are held, [`DofMap::held`]). Call it before linearising.
+/// translations are held, [`DofMap::held`]); a body pinned to another body is not (its pin
+/// moves with the parent). Call it before linearising.
 pub fn supported(system: &System) -> Result<(), ModalError> {
+    for b in &system.bodies {
+        if let Some((parent, _)) = b.body.kind.pin().and_then(|p| p.parent()) {
+            return Err(ModalError::PinnedToBody {
+                body: b.body.name.clone(),
+                parent: system.bodies[parent].body.name.clone(),
+            });
+        }
+    }
     match system.lines.iter().find(|l| l.dg().is_some()) {
         Some(l) => Err(ModalError::Unsupported {
             line: l.name.clone(),

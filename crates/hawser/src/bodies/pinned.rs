@@ -1,5 +1,6 @@
 //! Pinned bodies: a rigid body whose origin (the pin) moves as given while it turns freely
-//! ([`crate::model::BodyKind::Pinned`]; MoorDyn's `CoupledPinned` bodies and `Pinned` rods).
+//! ([`crate::model::BodyKind::Pinned`]; MoorDyn's `CoupledPinned` bodies and `Pinned` and
+//! `Body#Pinned` rods).
 //!
 //! # Equations
 //!
@@ -41,6 +42,30 @@
 //! and the body pushes on its pin (on the host of a coupled pin) with −R (MoorDyn's
 //! `Body::getFnet` for a `CPLDPIN` body: F6net − M a over the translations).
 //!
+//! # A pin on another body
+//!
+//! A body pinned to a point of a parent body ([`crate::model::Pin::Body`]) has its origin on
+//! the parent's point p = o_p + R_p ρ₀ (ρ₀ [m] in the parent's axes, ρ = R_p ρ₀). With u_p =
+//! [a_op; α_p] the parent's unknowns and J = [1, −[ρ]×] (3×6), the constraint on the child's
+//! origin is
+//!
+//! ```text
+//! a_o = J u_p + ω_p × (ω_p × ρ)                                   [m/s²]
+//! ```
+//!
+//! the child's equations about its origin are the ones above with its pin force R [N], and
+//! the parent receives −R at the point: −Jᵀ R (force −R, moment ρ × (−R) [N·m] about its
+//! origin) on its six rows. R is eliminated exactly by adding Jᵀ × (the child's three
+//! translational rows) to the parent's six rows, then replacing the child's translational
+//! rows by the constraint: a row operation on the coupled system after assembly
+//! ([`crate::linalg::CoupledSystem::body_parent`], beside `body_pin`), 9 unknowns per pair.
+//! The pin force for outputs is the child's translational residual R = M_tt a_o + M_tr α − F,
+//! as for any pin. On a prescribed or coupled parent, whose point's acceleration is known,
+//! the child is a pinned body on that known track. Statics place the child's origin on the
+//! parent's point, seek the child's rotational equilibrium, and add the child's net force F
+//! and its moment ρ × F to the parent's equilibrium. Chains are one level deep: a parent is
+//! not itself pinned to a body ([`crate::model::Model::validate`]).
+//!
 //! # In the solvers
 //!
 //! The body keeps the free body's [`super::STATE_LEN`] state entries; its translational
@@ -56,20 +81,24 @@ use crate::model::{BodyTrack, Pin, RigidKinematics};
 
 /// Position [m], velocity [m/s] and acceleration [m/s²] of the pin at time t [s]: the body's
 /// initial `position` for a fixed pin, the motion's origin for a prescribed one, the host's
-/// track for a coupled one (`track`, which a coupled pin has).
+/// track for a coupled one (`track`, which a coupled pin has), the parent's point for a pin
+/// on a body (`parent`, the parent's kinematics at t; the acceleration is then the parent's
+/// point's with the parent's accelerations as `parent` holds them, which the coupled solve
+/// replaces for an integrated parent). Without its track or parent, a pin is at rest at
+/// `position`.
 pub fn pin_kinematics(
     pin: &Pin,
     position: &Vec3,
     track: Option<&BodyTrack>,
+    parent: Option<&RigidKinematics>,
     t: Real,
 ) -> (Vec3, Vec3, Vec3) {
+    let at_rest = (*position, Vec3::zeros(), Vec3::zeros());
     match pin {
-        Pin::Fixed => (*position, Vec3::zeros(), Vec3::zeros()),
+        Pin::Fixed => at_rest,
         Pin::Prescribed(m) => translation(&m.kinematics(t)),
-        Pin::Coupled => match track {
-            Some(track) => translation(&track.at(t)),
-            None => (*position, Vec3::zeros(), Vec3::zeros()),
-        },
+        Pin::Coupled => track.map_or(at_rest, |track| translation(&track.at(t))),
+        Pin::Body { point, .. } => parent.map_or(at_rest, |k| k.point(point)),
     }
 }
 

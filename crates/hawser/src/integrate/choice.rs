@@ -56,6 +56,19 @@ pub fn choose_scheme(system: &System, settings: &Settings) -> SchemeChoice {
             format!("line {} uses dg, which steps explicitly", l.name),
         );
     }
+    if let Some(b) = system
+        .bodies
+        .iter()
+        .find(|b| b.body.kind.pin().is_some_and(|p| p.parent().is_some()))
+    {
+        return given(
+            Scheme::Rk4,
+            format!(
+                "body {} is pinned to another body, which generalized-α steps at first order",
+                b.body.name
+            ),
+        );
+    }
     if let TimeStep::Fixed(dt) = settings.time_step {
         return given(
             Scheme::Rk4,

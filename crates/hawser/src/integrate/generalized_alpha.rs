@@ -705,6 +705,18 @@ impl GeneralizedAlpha {
             self.solver.body_x[f] = ws.coupled.body_x[f] - ws.coupled.body_diag[f] * u;
             // A pinned body's translations: the correction that puts them on the pin.
             self.solver.body_pin[f] = ws.coupled.body_pin[f].map(|a| a - get3(&trial[o + 7..], 0));
+            // A body pinned to a body: the correction that puts it on the parent's point,
+            // c + J u_p − a_o at the iterate.
+            self.solver.body_parent[f] = ws.coupled.body_parent[f].map(|pin| {
+                let op =
+                    system.layout.body_offset[system.free_bodies[pin.body]].expect("free body");
+                let point =
+                    get3(&trial[op + 7..], 0) + get3(&trial[op + 10..], 0).cross(&pin.offset);
+                crate::linalg::ParentPin {
+                    bias: pin.bias + point - get3(&trial[o + 7..], 0),
+                    ..pin
+                }
+            });
         }
     }
 
@@ -797,6 +809,11 @@ impl GeneralizedAlpha {
             self.solver.body_x[f] = ws.coupled.body_diag[f] * u;
             // A pinned body's translations follow its pin exactly.
             self.solver.body_pin[f] = ws.coupled.body_pin[f].map(|_| Vec3::zeros());
+            self.solver.body_parent[f] =
+                ws.coupled.body_parent[f].map(|pin| crate::linalg::ParentPin {
+                    bias: Vec3::zeros(),
+                    ..pin
+                });
         }
         self.solve(system)?;
         let mut worst: Real = 0.0;

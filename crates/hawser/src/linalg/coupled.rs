@@ -228,6 +228,20 @@ pub struct BodySlot {
     pub bias: Vec3,
 }
 
+/// The pin of a body on a point of another free (or pinned) body: the body's three
+/// translational unknowns are the acceleration of the parent's point, a_o = J u_p + c with
+/// J = [1, −[ρ]×] and c = ω_p × (ω_p × ρ) ([`crate::bodies`], "Pinned bodies").
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct ParentPin {
+    /// Index of the parent among the free bodies.
+    pub body: usize,
+    /// Offset ρ of the pin from the parent's origin, in global axes [m].
+    pub offset: Vec3,
+    /// The known part c of the pin's acceleration [m/s²]: ω_p × (ω_p × ρ) in the dynamics
+    /// (zero in a Newton correction that starts on the constraint; its residual otherwise).
+    pub bias: Vec3,
+}
+
 /// The shared part: per free point a diagonal block and right-hand side, per free body a 6×6
 /// block and right-hand side, and the dense Schur-complement system.
 #[derive(Clone, Debug)]
@@ -246,6 +260,12 @@ pub struct CoupledSystem {
     /// acceleration, or a Newton increment), keeping its rotational rows; `None` for a free
     /// body. Set before each solve, like `body_x`.
     pub body_pin: Vec<Option<Vec3>>,
+    /// Per body, the pin on a parent body's point of a body pinned to a body: `Some` adds
+    /// Jᵀ times the body's three force rows to the parent's six rows (the pin force's reaction
+    /// −R on the parent at the point, eliminated) and then replaces those rows by
+    /// a_o − J u_p = c; `None` otherwise (with `body_pin` unset for such a body). Set before
+    /// each solve, like `body_x`.
+    pub body_parent: Vec<Option<ParentPin>>,
     /// The body-point slots, numbered after the free points; set offsets and biases before
     /// each solve.
     pub body_slots: Vec<BodySlot>,
@@ -274,6 +294,7 @@ impl CoupledSystem {
             body_diag: vec![Mat6::zeros(); bodies],
             body_x: vec![Vec6::zeros(); bodies],
             body_pin: vec![None; bodies],
+            body_parent: vec![None; bodies],
             body_slots: vec![BodySlot::default(); slots],
             slot_x: vec![Vec3::zeros(); points + slots],
             lu: DenseLu::new(n),
@@ -608,7 +629,35 @@ impl CoupledSystem {
                 }
             }
         }
-        // 3. Solve the points and bodies, a pinned body's translations held.
+        // 3. Solve the points and bodies. A body pinned to a body: R (the pin's force on it)
+        // is eliminated by adding Jᵀ × its force rows to the parent's rows, and its force rows
+        // become the constraint a_o − J u_p = c.
+        for k in 0..self.body_diag.len() {
+            let Some(pin) = self.body_parent[k] else {
+                continue;
+            };
+            let (o, op) = (self.body_row(k), self.body_row(pin.body));
+            let mut j = Matrix3x6::zeros();
+            j.fixed_view_mut::<3, 3>(0, 0).copy_from(&Mat3::identity());
+            j.fixed_view_mut::<3, 3>(0, 3)
+                .copy_from(&(-skew(&pin.offset)));
+            for r in 0..3 {
+                for i in 0..6 {
+                    if self.factoring {
+                        self.lu.add_scaled_row(op + i, o + r, j[(r, i)]);
+                    }
+                    self.b[op + i] += j[(r, i)] * self.b[o + r];
+                }
+                if self.factoring {
+                    self.lu.identity_row(o + r);
+                    for c in 0..6 {
+                        self.lu.add(o + r, op + c, -j[(r, c)]);
+                    }
+                }
+                self.b[o + r] = pin.bias[r];
+            }
+        }
+        // A pinned body's translations held.
         for k in 0..self.body_diag.len() {
             let Some(a) = self.body_pin[k] else { continue };
             let o = self.body_row(k);

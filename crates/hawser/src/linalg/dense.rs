@@ -39,6 +39,13 @@ impl DenseLu {
         self.a[i * n..(i + 1) * n].iter_mut().for_each(|x| *x = 0.0);
         self.a[i * n + i] = 1.0;
     }
+    /// Adds s times row j to row i (i ≠ j).
+    pub fn add_scaled_row(&mut self, i: usize, j: usize, s: Real) {
+        let n = self.n;
+        for c in 0..n {
+            self.a[i * n + c] += s * self.a[j * n + c];
+        }
+    }
     /// Factorises in place; `Err(k)` on a zero pivot in column k.
     pub fn factor(&mut self) -> Result<(), usize> {
         let n = self.n;

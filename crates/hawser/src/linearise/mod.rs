@@ -517,7 +517,15 @@ impl DofMap {
         let body_pinned = system
             .free_bodies
             .iter()
-            .map(|&b| system.bodies[b].body.kind.pin().is_some())
+            .map(|&b| {
+                // A pin whose motion is given (fixed, prescribed, coupled); a pin on another
+                // body moves with it and is not held (the modal analysis refuses it).
+                system.bodies[b]
+                    .body
+                    .kind
+                    .pin()
+                    .is_some_and(|p| p.parent().is_none())
+            })
             .collect();
         Self {
             owners,

@@ -66,6 +66,28 @@ pub enum Pin {
     /// Set by a host program at each coupling step (three translations, MoorDyn's
     /// `CoupledPinned`), starting at the body's `position`.
     Coupled,
+    /// On a point fixed on another body (the parent, MoorDyn's `Body#Pinned` rods): the pin
+    /// is the parent's point p = o_p + R_p ρ₀ (position, velocity v_p + ω_p × ρ and
+    /// acceleration a_p + α_p × ρ + ω_p × (ω_p × ρ), ρ = R_p ρ₀), and the body pushes back on
+    /// the parent at that point ([`crate::bodies`], "Pinned bodies"). The body's `position`
+    /// is the point's position at t = 0. The parent is free, pinned (not itself on a body),
+    /// prescribed or coupled.
+    Body {
+        /// Index of the parent body in the model.
+        body: usize,
+        /// The point ρ₀ in the parent's body axes, from the parent's origin [m].
+        point: Vec3,
+    },
+}
+
+impl Pin {
+    /// The parent body and the point on it [m, parent's body axes] of a pin on a body.
+    pub fn parent(&self) -> Option<(usize, Vec3)> {
+        match self {
+            Pin::Body { body, point } => Some((*body, *point)),
+            _ => None,
+        }
+    }
 }
 
 /// The volume a body displaces, for buoyancy and hydrostatic restoring.
@@ -311,6 +333,30 @@ impl Body {
 }
 
 impl Body {
+    /// Kinematics at t = 0: a free or coupled body at rest at its initial pose, a prescribed
+    /// body on its motion, a pinned body at its initial orientation at rest about its pin,
+    /// the pin on its motion (a pin on a body: at rest at the body's `position`, which is the
+    /// parent's point at t = 0; the system moves it with its parent,
+    /// [`crate::System::point_kinematics`]).
+    pub fn initial_kinematics(&self) -> super::RigidKinematics {
+        match &self.kind {
+            BodyKind::Free | BodyKind::Coupled => {
+                super::RigidKinematics::at_rest(self.position, self.orientation)
+            }
+            BodyKind::Prescribed(m) => m.kinematics(0.0),
+            BodyKind::Pinned(pin) => {
+                let mut k = super::RigidKinematics::at_rest(self.position, self.orientation);
+                let track = matches!(pin, Pin::Coupled)
+                    .then(|| super::BodyTrack::at_rest(self.position, self.orientation));
+                crate::bodies::follow_pin(
+                    &mut k,
+                    crate::bodies::pin_kinematics(pin, &self.position, track.as_ref(), None, 0.0),
+                );
+                k
+            }
+        }
+    }
+
     /// Checks the physical ranges: a positive finite mass, an inertia tensor that is finite,
     /// symmetric (to 1e-9 of its largest entry) and positive definite, a finite pose and
     /// centres, a shape with positive dimensions (a volume ≥ 0), added mass and drag

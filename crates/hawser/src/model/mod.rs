@@ -341,6 +341,38 @@ impl Model {
             if self.bodies[..bi].iter().any(|o| o.name == b.name) {
                 return bad(name("name"), "is used by another body");
             }
+            if let Some((parent, point)) = b.kind.pin().and_then(Pin::parent) {
+                let Some(host) = self.bodies.get(parent) else {
+                    return bad(name("pin"), "is on a body that does not exist");
+                };
+                if parent == bi {
+                    return bad(name("pin"), "is on the body itself: pin it to another body");
+                }
+                if host.kind.pin().and_then(Pin::parent).is_some() {
+                    return bad(
+                        name("pin"),
+                        &format!(
+                            "is on body {}, which is itself pinned to a body: a pin on a body \
+                             takes a free, pinned, prescribed or coupled parent (one level)",
+                            host.name
+                        ),
+                    );
+                }
+                if !point.iter().all(|x| x.is_finite()) {
+                    return bad(name("pin point"), "must be finite");
+                }
+                let at = host.initial_kinematics().point(&point).0;
+                if (at - b.position).norm() > 1e-6 * at.norm().max(1.0) {
+                    return bad(
+                        name("position"),
+                        &format!(
+                            "is ({:.6}, {:.6}, {:.6}) m where its pin on body {} is at \
+                             ({:.6}, {:.6}, {:.6}) m at t = 0: put the body's origin on the pin",
+                            b.position.x, b.position.y, b.position.z, host.name, at.x, at.y, at.z
+                        ),
+                    );
+                }
+            }
         }
         for p in &self.points {
             if let PointKind::Body { body, offset } = &p.kind {

@@ -151,6 +151,19 @@ pub(crate) fn scheme_error(system: &System, scheme: Scheme) -> Option<Simulation
             line: l.name.clone(),
         }));
     }
+    if scheme == Scheme::GeneralizedAlpha
+        && let Some((b, parent)) = system.bodies.iter().find_map(|b| {
+            let (parent, _) = b.body.kind.pin()?.parent()?;
+            Some((b, parent))
+        })
+    {
+        return Some(SimulationError::Model(
+            ModelError::SchemeCannotStepPinOnBody {
+                body: b.body.name.clone(),
+                parent: system.bodies[parent].body.name.clone(),
+            },
+        ));
+    }
     if scheme == Scheme::ThreeLevel && !system.free_bodies.is_empty() {
         return Some(SimulationError::Model(ModelError::SchemeCannotStepBodies {
             scheme: "three-level",

@@ -11,7 +11,10 @@
 //!
 //! A pinned body ([`crate::model::BodyKind::Pinned`]) keeps its origin on its pin: its three
 //! rotations are unknowns, its translations are not (their residual, the pin's force, is
-//! left out).
+//! left out). A body pinned to a body ([`crate::model::Pin::Body`]) sits at its parent's
+//! point (it moves with the parent's pose) and pushes on the parent there: its net force F
+//! [N] adds to the parent's force rows and ρ × F [N·m] to its moment rows (ρ the pin from the
+//! parent's origin), so the parent's equilibrium carries the child's weight and line loads.
 //!
 //! Start the bodies where their lines are taut: where a line is slack the residual has no
 //! slope along it and Newton cannot move the body (reported as not converged, with a hint).
@@ -43,6 +46,7 @@ fn residual(
     let mut ws = twin.workspace();
     evaluate(&twin, &sol.state, &mut ws);
     let mut r = DVector::zeros(6 * system.free_bodies.len());
+    let mut net = vec![(Vec3::zeros(), Vec3::zeros()); system.free_bodies.len()];
     for (f, &b) in system.free_bodies.iter().enumerate() {
         // In a steady tow the body moves at the tow velocity (its drag and wind see it).
         let k = RigidKinematics {
@@ -62,8 +66,27 @@ fn residual(
                 }
             }
         }
+        net[f] = (force, moment);
+    }
+    // A body pinned to a free or pinned body pushes on its parent at the pin with its net
+    // force (the pin's force on it is R = −F at rest): the parent's rows take F and the moment
+    // ρ × F about the parent's origin.
+    for (f, &b) in system.free_bodies.iter().enumerate() {
+        let Some((p, _)) = system.pin_parent(b) else {
+            continue;
+        };
+        let Some(fp) = system.bodies[p].free_index else {
+            continue;
+        };
+        let force = net[f].0;
+        let rho = poses[b].position - poses[p].position;
+        net[fp].0 += force;
+        net[fp].1 += rho.cross(&force);
+    }
+    for (f, &b) in system.free_bodies.iter().enumerate() {
         // A pinned body's pin takes the force: only its moment about the pin is unbalanced.
         let pinned = system.bodies[b].body.kind.pin().is_some();
+        let (force, moment) = net[f];
         for i in 0..3 {
             r[6 * f + i] = if pinned { 0.0 } else { force[i] };
             r[6 * f + 3 + i] = moment[i];
@@ -87,7 +110,17 @@ fn moved(
         }
         out[b].orientation = Quat::from_scaled_axis(d(3)) * out[b].orientation;
     }
+    place_on_parents(system, &mut out);
     out
+}
+
+/// Puts each body pinned to a body at its parent's point, o = o_p + R_p ρ₀ (at rest).
+fn place_on_parents(system: &System, poses: &mut [RigidKinematics]) {
+    for b in 0..poses.len() {
+        if let Some((p, point)) = system.pin_parent(b) {
+            poses[b].position = poses[p].position + poses[p].orientation * point;
+        }
+    }
 }
 
 /// Solves the statics of a system with free bodies (see the module docs). Starts from the
@@ -110,7 +143,7 @@ pub fn solve_with_bodies(
             let Some(y) = relax_with_bodies(system) else {
                 return Err(first);
             };
-            let poses: Vec<RigidKinematics> = (0..system.bodies.len())
+            let mut poses: Vec<RigidKinematics> = (0..system.bodies.len())
                 .map(|b| match system.layout.body_offset[b] {
                     Some(o) => {
                         let k = crate::bodies::read_state(&y[o..o + crate::bodies::STATE_LEN]);
@@ -119,6 +152,7 @@ pub fn solve_with_bodies(
                     None => system.bodies[b].initial_kinematics(),
                 })
                 .collect();
+            place_on_parents(system, &mut poses);
             let twin = system.statics_twin_at(&poses);
             let warm = twin_state(system, &twin, &y);
             let mut sol = newton_on_poses(system, poses, Some(warm), options)?;
@@ -306,6 +340,7 @@ pub fn relax_with_bodies(system: &System) -> Option<Vec<Real>> {
             let k = crate::bodies::read_state(&y[o..o + crate::bodies::STATE_LEN]);
             crate::bodies::write_state(&k, &mut y[o..o + crate::bodies::STATE_LEN]);
         }
+        system.hold_pins(0.0, &mut y, &ws);
         if !y.iter().all(|x| x.is_finite()) {
             return None;
         }
@@ -365,6 +400,16 @@ fn body_groups(system: &System) -> (Vec<usize>, Vec<usize>, usize) {
         }
         if !changed {
             break;
+        }
+    }
+    // A body pinned to a body loads its parent through the pin.
+    for (f, &b) in system.free_bodies.iter().enumerate() {
+        if let Some(fp) = system
+            .pin_parent(b)
+            .and_then(|(p, _)| system.bodies[p].free_index)
+        {
+            let (ra, rb) = (find(&mut parent, f), find(&mut parent, fp));
+            parent[ra] = rb;
         }
     }
     let group: Vec<usize> = (0..nb).map(|f| find(&mut parent, f)).collect();

@@ -128,30 +128,9 @@ pub struct SystemBody {
 }
 
 impl SystemBody {
-    /// Kinematics at t = 0: a free or coupled body at rest at its initial pose, a prescribed
-    /// body on its motion, a pinned body at its initial orientation at rest about its pin,
-    /// the pin on its motion.
+    /// Kinematics at t = 0 ([`crate::model::Body::initial_kinematics`]).
     pub fn initial_kinematics(&self) -> crate::model::RigidKinematics {
-        match &self.body.kind {
-            crate::model::BodyKind::Free | crate::model::BodyKind::Coupled => {
-                crate::model::RigidKinematics::at_rest(self.body.position, self.body.orientation)
-            }
-            crate::model::BodyKind::Prescribed(m) => m.kinematics(0.0),
-            crate::model::BodyKind::Pinned(pin) => {
-                let mut k = crate::model::RigidKinematics::at_rest(
-                    self.body.position,
-                    self.body.orientation,
-                );
-                let track = matches!(pin, crate::model::Pin::Coupled).then(|| {
-                    crate::model::BodyTrack::at_rest(self.body.position, self.body.orientation)
-                });
-                crate::bodies::follow_pin(
-                    &mut k,
-                    crate::bodies::pin_kinematics(pin, &self.body.position, track.as_ref(), 0.0),
-                );
-                k
-            }
-        }
+        self.body.initial_kinematics()
     }
 }
 

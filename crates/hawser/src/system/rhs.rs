@@ -85,27 +85,17 @@ impl System {
     /// host's track in `ws.coupling`, pinned ones turned as the state says about their pin's
     /// position, velocity and acceleration at t; points on bodies follow.
     pub fn point_kinematics(&self, t: Real, y: &[Real], ws: &mut Workspace) {
-        for (b, body) in self.bodies.iter().enumerate() {
-            ws.bodies[b] = match (&body.body.kind, self.layout.body_offset[b]) {
-                (crate::model::BodyKind::Pinned(pin), Some(o)) => {
-                    let mut k = crate::bodies::read_state(&y[o..o + crate::bodies::STATE_LEN]);
-                    let track = ws.coupling.bodies[b].as_ref();
-                    crate::bodies::follow_pin(
-                        &mut k,
-                        crate::bodies::pin_kinematics(pin, &body.body.position, track, t),
-                    );
-                    k
-                }
-                (_, Some(o)) => crate::bodies::read_state(&y[o..o + crate::bodies::STATE_LEN]),
-                (crate::model::BodyKind::Prescribed(m), None) => m.kinematics(t),
-                (crate::model::BodyKind::Free | crate::model::BodyKind::Pinned(_), None) => {
-                    body.initial_kinematics()
-                }
-                (crate::model::BodyKind::Coupled, None) => ws.coupling.bodies[b]
-                    .as_ref()
-                    .expect("a coupled body has a track")
-                    .at(t),
-            };
+        // Parents first: a body pinned to a body follows its parent's point.
+        for b in 0..self.bodies.len() {
+            if self.pin_parent(b).is_none() {
+                ws.bodies[b] = self.body_kinematics(b, t, y, &ws.coupling, None);
+            }
+        }
+        for b in 0..self.bodies.len() {
+            if let Some((parent, _)) = self.pin_parent(b) {
+                let host = ws.bodies[parent];
+                ws.bodies[b] = self.body_kinematics(b, t, y, &ws.coupling, Some(&host));
+            }
         }
         for (i, p) in self.points.iter().enumerate() {
             if p.line_end.is_some() {
@@ -155,22 +145,79 @@ impl System {
         }
     }
 
+    /// The parent body and its point [m, parent's body axes] of body `b` when it is pinned to
+    /// a body ([`crate::model::Pin::Body`]).
+    #[inline]
+    pub fn pin_parent(&self, b: usize) -> Option<(usize, Vec3)> {
+        self.bodies[b]
+            .body
+            .kind
+            .pin()
+            .and_then(crate::model::Pin::parent)
+    }
+
+    /// Kinematics of body `b` at (t, y): a free body from the state, a prescribed one from its
+    /// motion, a coupled one from the host's track in `tracks`, a pinned one turned as the
+    /// state says about its pin's position, velocity and acceleration at t (a pin on a body:
+    /// the point of `parent`, the parent's kinematics at t).
+    fn body_kinematics(
+        &self,
+        b: usize,
+        t: Real,
+        y: &[Real],
+        tracks: &super::workspace::CouplingTracks,
+        parent: Option<&crate::model::RigidKinematics>,
+    ) -> crate::model::RigidKinematics {
+        let body = &self.bodies[b];
+        match (&body.body.kind, self.layout.body_offset[b]) {
+            (crate::model::BodyKind::Pinned(pin), Some(o)) => {
+                let mut k = crate::bodies::read_state(&y[o..o + crate::bodies::STATE_LEN]);
+                let track = tracks.bodies[b].as_ref();
+                crate::bodies::follow_pin(
+                    &mut k,
+                    crate::bodies::pin_kinematics(pin, &body.body.position, track, parent, t),
+                );
+                k
+            }
+            (_, Some(o)) => crate::bodies::read_state(&y[o..o + crate::bodies::STATE_LEN]),
+            (crate::model::BodyKind::Prescribed(m), None) => m.kinematics(t),
+            (crate::model::BodyKind::Free | crate::model::BodyKind::Pinned(_), None) => {
+                body.initial_kinematics()
+            }
+            (crate::model::BodyKind::Coupled, None) => tracks.bodies[b]
+                .as_ref()
+                .expect("a coupled body has a track")
+                .at(t),
+        }
+    }
+
     /// Puts the position [m] and velocity [m/s] of each pinned body's pin at time t [s] into
     /// the body's translational state entries, which the integrator carries along the pin's
     /// velocity and acceleration only up to its error (and from whatever velocity the state
     /// started with): the stepper calls it after every step, so the state holds the pin exactly
     /// (the physics reads the pin's motion anyway, [`System::point_kinematics`]).
+    ///
+    /// A body pinned to a body is held after its parent (whose own pin is held first): its
+    /// origin on the parent's point, o = o_p + R_p ρ₀, moving at v_p + ω_p × ρ.
     pub fn hold_pins(&self, t: Real, y: &mut [Real], ws: &Workspace) {
-        for &b in &self.free_bodies {
-            let body = &self.bodies[b].body;
-            let Some(pin) = body.kind.pin() else {
-                continue;
-            };
-            let o = self.layout.body_offset[b].expect("a pinned body has a state block");
-            let track = ws.coupling.bodies[b].as_ref();
-            let (x, v, _) = crate::bodies::pin_kinematics(pin, &body.position, track, t);
-            y[o..o + 3].copy_from_slice(x.as_slice());
-            y[o + 7..o + 10].copy_from_slice(v.as_slice());
+        for children in [false, true] {
+            for &b in &self.free_bodies {
+                let body = &self.bodies[b].body;
+                let Some(pin) = body.kind.pin() else {
+                    continue;
+                };
+                let parent = self.pin_parent(b);
+                if parent.is_some() != children {
+                    continue;
+                }
+                let host = parent.map(|(p, _)| self.body_kinematics(p, t, y, &ws.coupling, None));
+                let o = self.layout.body_offset[b].expect("a pinned body has a state block");
+                let track = ws.coupling.bodies[b].as_ref();
+                let (x, v, _) =
+                    crate::bodies::pin_kinematics(pin, &body.position, track, host.as_ref(), t);
+                y[o..o + 3].copy_from_slice(x.as_slice());
+                y[o + 7..o + 10].copy_from_slice(v.as_slice());
+            }
         }
     }
 
@@ -367,11 +414,25 @@ impl System {
                 .loads(&ws.bodies[b], &self.environment, t);
             ws.coupled.body_diag[f] = loads.mass;
             ws.coupled.body_x[f] = loads.generalized();
-            ws.coupled.body_pin[f] = self.bodies[b]
-                .body
-                .kind
-                .pin()
-                .map(|_| ws.bodies[b].acceleration);
+            // A pin on an integrated parent is the constraint a_o = J u_p + ω_p × (ω_p × ρ);
+            // on a prescribed or coupled parent the pin's acceleration is known.
+            let on_parent = self.pin_parent(b).and_then(|(p, point)| {
+                let host = &ws.bodies[p];
+                let offset = host.orientation * point;
+                let w = host.angular_velocity;
+                self.bodies[p]
+                    .free_index
+                    .map(|body| crate::linalg::ParentPin {
+                        body,
+                        offset,
+                        bias: w.cross(&w.cross(&offset)),
+                    })
+            });
+            ws.coupled.body_parent[f] = on_parent;
+            ws.coupled.body_pin[f] = match (self.bodies[b].body.kind.pin(), on_parent) {
+                (Some(_), None) => Some(ws.bodies[b].acceleration),
+                _ => None,
+            };
         }
         let np = self.free_points.len();
         for (p, slot) in self.point_slot.iter().enumerate() {

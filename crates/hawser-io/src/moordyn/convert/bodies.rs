@@ -55,6 +55,8 @@ pub(super) enum DeckBodyKind {
     CoupledPinned,
     /// A rod's `Pinned` (`Pin`): its end A held where it is, its rotations free.
     Pinned,
+    /// A rod's `Body#Pinned`: its end A on a point of body `B#`, its rotations free.
+    PinnedToBody,
 }
 
 impl DeckBodyKind {
@@ -63,6 +65,7 @@ impl DeckBodyKind {
     pub(super) fn pin(self, on_motion: bool) -> Option<PinSpec> {
         match self {
             DeckBodyKind::Pinned => Some(PinSpec::Fixed),
+            DeckBodyKind::PinnedToBody => Some(PinSpec::Body),
             DeckBodyKind::CoupledPinned if on_motion => Some(PinSpec::Prescribed),
             DeckBodyKind::CoupledPinned => Some(PinSpec::Coupled),
             _ => None,
@@ -75,7 +78,10 @@ impl DeckBodyKind {
     pub(super) fn moves(self) -> bool {
         matches!(
             self,
-            DeckBodyKind::Free | DeckBodyKind::CoupledPinned | DeckBodyKind::Pinned
+            DeckBodyKind::Free
+                | DeckBodyKind::CoupledPinned
+                | DeckBodyKind::Pinned
+                | DeckBodyKind::PinnedToBody
         )
     }
 }
@@ -93,6 +99,8 @@ pub(super) fn bare_body(
         name,
         kind,
         pin: None,
+        pin_body: None,
+        pin_point: None,
         motion,
         position,
         orientation,
@@ -363,7 +371,7 @@ pub(super) fn convert_bodies(
         let (spec_kind, motion) = match kind {
             DeckBodyKind::Free => (BodyKindSpec::Free, None),
             DeckBodyKind::Fixed => (BodyKindSpec::Fixed, None),
-            DeckBodyKind::Pinned => (BodyKindSpec::Pinned, None),
+            DeckBodyKind::Pinned | DeckBodyKind::PinnedToBody => (BodyKindSpec::Pinned, None),
             DeckBodyKind::CoupledPinned => match vessel {
                 None => (BodyKindSpec::Pinned, None),
                 Some(v) => {

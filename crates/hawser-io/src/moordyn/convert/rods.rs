@@ -15,8 +15,9 @@
 //!   freely), mass and inertia as for `Free`; `CoupledPinned` (`VesselPinned`, `VesPin`,
 //!   `CpldPin`): the same on a coupled pin (three translations set by the host), or on
 //!   `--vessel-motion`;
-//! - `Body#Pinned`: refused (a rod pinned to a moving body needs a joint between two bodies,
-//!   which hawser does not model);
+//! - `Body#Pinned`: a body `R#` pinned to body `B#` (`pin = "body"`): its origin and pin at
+//!   end A, the point (Xa, Ya, Za) of `B#` in `B#`'s axes, its axes `B#`'s at t = 0, turning
+//!   freely about the pin while `B#` carries the pin's force; mass and inertia as for `Free`;
 //! - `NumSegs` 0 (MoorDyn's zero-length rod, a joint that passes bending between lines):
 //!   refused.
 //!
@@ -226,24 +227,6 @@ fn convert_rod(
         let rest = &word[letters.len()..];
         let number: String = rest.chars().take_while(|ch| ch.is_ascii_digit()).collect();
         let tail = &rest[number.len()..];
-        let pinned_on_body = |c: &mut Converter| {
-            let d = c
-                .diag(
-                    Some(t[2].span.clone()),
-                    &format!("{key} › Attachment"),
-                    format!(
-                        "rod {id} is `{}`: pinned at end A to a body that moves, a joint \
-                         between two bodies hawser does not model",
-                        t[2].text
-                    ),
-                )
-                .expected("Free, Fixed, Coupled, Pinned, CoupledPinned or Body#")
-                .hint(
-                    "fix it to its body (`Body#`), or pin it to the ground (`Pinned`) or to a \
-                     host-driven point (`CoupledPinned`) when the body barely moves",
-                );
-            c.errors.push(d);
-        };
         // The member in the axes of the body it is on, and that body.
         let axis = (b - a) / length;
         let radius = 0.5 * diameter;
@@ -264,10 +247,6 @@ fn convert_rod(
             end_added_mass: Some(spanned(&tt[6], ca_end)),
         };
         let (body, offset_a) = match letters.as_str() {
-            "body" if tail.contains("pin") => {
-                pinned_on_body(c);
-                return false;
-            }
             "body" => {
                 let Some(i) = bodies.iter().position(|x| x.name == body_name(&number)) else {
                     let d = c
@@ -284,17 +263,51 @@ fn convert_rod(
                     c.errors.push(d);
                     return false;
                 };
-                let on = &mut bodies[i];
-                on.spec.members.push(member(a, b));
-                if on.kind.moves() {
-                    on.fold(Part {
-                        centre: 0.5 * (a + b),
-                        mass,
-                        inertia,
-                        volume: 0.0,
+                if tail.contains("pin") {
+                    // A body `R#` of its own, its origin at end A on the body's point `a`, its
+                    // axes the body's at t = 0, turning freely about the pin.
+                    let name = rod_name(&id);
+                    let parent = &bodies[i];
+                    let mut spec = bare_body(
+                        spanned(&t[0], name.clone()),
+                        spanned(&t[2], BodyKindSpec::Pinned),
+                        None,
+                        None,
+                        parent.spec.orientation.clone(),
+                    );
+                    spec.members.push(member(Vec3::zeros(), b - a));
+                    spec.pin = Some(spanned(&t[2], PinSpec::Body));
+                    spec.pin_body = Some(spanned(&t[2], parent.name.clone()));
+                    spec.pin_point = Some(Spanned::new(t[3].span.start..t[5].span.end, a.into()));
+                    let span = |k: usize| t[k].span.clone();
+                    bodies.push(DeckBody {
+                        name,
+                        kind: DeckBodyKind::PinnedToBody,
+                        spec,
+                        type_word: t[2].text.clone(),
+                        line,
+                        spans: [tt[2].span.clone(), span(3), tt[1].span.clone(), span(3)],
+                        parts: vec![Part {
+                            centre: 0.5 * (b - a),
+                            mass,
+                            inertia,
+                            volume: 0.0,
+                        }],
                     });
+                    (bodies.len() - 1, Vec3::zeros())
+                } else {
+                    let on = &mut bodies[i];
+                    on.spec.members.push(member(a, b));
+                    if on.kind.moves() {
+                        on.fold(Part {
+                            centre: 0.5 * (a + b),
+                            mass,
+                            inertia,
+                            volume: 0.0,
+                        });
+                    }
+                    (i, a)
                 }
-                (i, a)
             }
             "free" | "point" | "con" | "fixed" | "fix" | "anchor" | "coupled" | "vessel"
             | "ves" | "cpld" | "pinned" | "pin" | "coupledpinned" | "vesselpinned" | "vespin"
@@ -309,9 +322,8 @@ fn convert_rod(
                 let (spec_kind, motion) = match (kind, vessel) {
                     (DeckBodyKind::Free, _) => (BodyKindSpec::Free, None),
                     (DeckBodyKind::Fixed, _) => (BodyKindSpec::Fixed, None),
-                    (DeckBodyKind::Pinned, _) | (DeckBodyKind::CoupledPinned, None) => {
-                        (BodyKindSpec::Pinned, None)
-                    }
+                    (DeckBodyKind::Pinned | DeckBodyKind::PinnedToBody, _)
+                    | (DeckBodyKind::CoupledPinned, None) => (BodyKindSpec::Pinned, None),
                     (DeckBodyKind::Coupled, None) => (BodyKindSpec::Coupled, None),
                     (DeckBodyKind::Coupled | DeckBodyKind::CoupledPinned, Some(v)) => {
                         if a != Vec3::zeros() {

@@ -28,6 +28,8 @@ pub(super) fn build_bodies(
 ) -> Vec<Body> {
     let mut out = Vec::new();
     let mut index: HashMap<String, usize> = HashMap::new();
+    // Bodies pinned to bodies: (index, parent's name, point in the parent's axes [m]).
+    let mut on_bodies = Vec::new();
     for (i, s) in specs.iter().enumerate() {
         let k = |key: &str| format!("bodies[{i}].{key}");
         let name = s.name.get_ref().clone();
@@ -79,11 +81,51 @@ pub(super) fn build_bodies(
             b.push(d);
         }
         let pinned_on_motion = pinned && pin == PinSpec::Prescribed;
+        let pinned_on_body = pinned && pin == PinSpec::Body;
+        for (key, span) in [
+            ("pin_body", span_of(&s.pin_body)),
+            ("pin_point", span_of(&s.pin_point)),
+        ] {
+            if let Some(span) = span.filter(|_| !pinned_on_body) {
+                let d = b
+                    .diag(
+                        Some(span),
+                        &k(key),
+                        format!("only a body with `pin = \"body\"` has a `{key}`"),
+                    )
+                    .hint(
+                        "give the body `type = \"pinned\"` and `pin = \"body\"` to pin it to a \
+                         point of another body, or remove the key",
+                    );
+                b.push(d);
+            }
+        }
+        if pinned_on_body && s.pin_body.is_none() {
+            let d = b
+                .diag(
+                    s.pin.as_ref().map(|p| p.span()),
+                    &k("pin_body"),
+                    format!("body `{name}` is pinned to a body but has no `pin_body`"),
+                )
+                .expected("the name of another body")
+                .hint(
+                    "add e.g. `pin_body = \"buoy\"` and `pin_point = [0.0, 0.0, -2.0]` (the \
+                     point in that body's axes)",
+                );
+            b.push(d);
+        }
+        if let (true, Some(parent)) = (pinned_on_body, &s.pin_body) {
+            let point = s
+                .pin_point
+                .as_ref()
+                .map_or(Vec3::zeros(), |p| b.vec3(p, &k("pin_point")));
+            on_bodies.push((i, parent, point));
+        }
         let prescribed = *s.kind.get_ref() == BodyKindSpec::Prescribed;
         // A prescribed body is placed by its motion (`start`, `heading` or the file); a pose
         // given beside it would be a second, conflicting, answer. The motion of a pin places
         // the origin only: the body's orientation is its own.
-        if prescribed || pinned_on_motion {
+        if prescribed || pinned_on_motion || pinned_on_body {
             for (key, span) in [
                 ("position", span_of(&s.position)),
                 (
@@ -92,7 +134,17 @@ pub(super) fn build_bodies(
                 ),
             ] {
                 if let Some(span) = span {
-                    let d = if pinned_on_motion {
+                    let d = if pinned_on_body {
+                        b.diag(
+                            Some(span),
+                            &k(key),
+                            "a body pinned to a body takes its `position` from the pin",
+                        )
+                        .hint(
+                            "remove it: the body's origin starts on `pin_point` of `pin_body` \
+                             (the body's `orientation` stays its own)",
+                        )
+                    } else if pinned_on_motion {
                         b.diag(
                             Some(span),
                             &k(key),
@@ -120,7 +172,7 @@ pub(super) fn build_bodies(
         }
         let position = match &s.position {
             Some(p) => b.vec3(p, &k("position")),
-            None if prescribed || pinned_on_motion => Vec3::zeros(),
+            None if prescribed || pinned_on_motion || pinned_on_body => Vec3::zeros(),
             None => {
                 let d = b
                     .diag(
@@ -402,6 +454,11 @@ pub(super) fn build_bodies(
                     BodyKindSpec::Pinned if pin == PinSpec::Coupled => {
                         BodyKind::Pinned(Pin::Coupled)
                     }
+                    // Its parent is set once every body is built.
+                    BodyKindSpec::Pinned if pin == PinSpec::Body => BodyKind::Pinned(Pin::Body {
+                        body: i,
+                        point: Vec3::zeros(),
+                    }),
                     BodyKindSpec::Pinned => BodyKind::Pinned(Pin::Fixed),
                     _ => BodyKind::Free,
                 }
@@ -436,6 +493,46 @@ pub(super) fn build_bodies(
             thrust,
             wind,
         });
+    }
+    // Bodies pinned to bodies: the parent by name, the origin on its point at t = 0.
+    for (i, parent, point) in on_bodies {
+        let k = format!("bodies[{i}].pin_body");
+        let child = specs[i].name.get_ref();
+        let name = parent.get_ref();
+        let problem = match index.get(name) {
+            None => Some((
+                format!("body `{child}` is pinned to body `{name}`, which does not exist"),
+                format!(
+                    "the bodies are {}",
+                    specs
+                        .iter()
+                        .map(|s| format!("`{}`", s.name.get_ref()))
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                ),
+            )),
+            Some(&p) if p == i => Some((
+                format!("body `{child}` is pinned to itself"),
+                "name another body: the pin joins two bodies".to_string(),
+            )),
+            Some(&p) if out[p].kind.pin().and_then(Pin::parent).is_some() => Some((
+                format!(
+                    "body `{child}` is pinned to body `{name}`, which is itself pinned to a body"
+                ),
+                "a pin on a body takes a free, fixed, prescribed, coupled or pinned parent \
+                 (one level): pin both bodies to the same parent, or make `{name}` free"
+                    .replace("{name}", name),
+            )),
+            Some(_) => None,
+        };
+        if let Some((why, hint)) = problem {
+            let d = b.diag(Some(parent.span()), &k, why).hint(hint);
+            b.push(d);
+            continue;
+        }
+        let p = index[name];
+        out[i].kind = BodyKind::Pinned(Pin::Body { body: p, point });
+        out[i].position = out[p].initial_kinematics().point(&point).0;
     }
     out
 }
