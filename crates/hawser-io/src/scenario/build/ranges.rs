@@ -210,6 +210,7 @@ pub(super) const RANGES: &[(&str, Range)] = &[
     // [[bodies]]
     ("bodies[].orientation", ANGLE),
     ("bodies[].centre_of_gravity", all(-1e4, 1e4, "m")),
+    ("bodies[].pin_point", all(-1e4, 1e4, "m")),
     ("bodies[].centre_of_buoyancy", all(-1e4, 1e4, "m")),
     ("bodies[].hydrodynamic_centre", all(-1e4, 1e4, "m")),
     ("bodies[].members[].end_a", all(-1e4, 1e4, "m")),
