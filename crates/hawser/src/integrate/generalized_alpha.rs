@@ -718,6 +718,28 @@ impl GeneralizedAlpha {
                 }
             });
         }
+        // The solve moves a line end's row onto its body's rows with the offsets the
+        // iteration matrix was formed with (ρ_f, `self.solver.body_slots`), which the body's
+        // rotation since then has made stale: the end's moment ρ × r is the residual's, so
+        // (ρ − ρ_f) × r goes to the body's moment rows here, and the iteration converges to
+        // the equations at the iterate whatever the age of the matrix.
+        for (li, b) in ws.blocks.iter().enumerate() {
+            let n = b.nodes() - 1;
+            for (kind, i) in [(b.end_a, 0), (b.end_b, n)] {
+                let EndKind::Free(s) = kind else { continue };
+                if s < np {
+                    continue;
+                }
+                let (now, formed) = (
+                    ws.coupled.body_slots[s - np],
+                    self.solver.body_slots[s - np],
+                );
+                let moment = (now.offset - formed.offset).cross(&self.matrix[li].x[i]);
+                for k in 0..3 {
+                    self.solver.body_x[now.body][3 + k] += moment[k];
+                }
+            }
+        }
     }
 
     /// Solves S δ = r, adds δ to the iterate, and returns the Newton norm of the position
