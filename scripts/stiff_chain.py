@@ -15,6 +15,12 @@ Subcommands (run with the MoorDyn venv's Python for the MoorDyn ones):
              (definition in `stable`, against MoorDyn's own run at dtM 2.5e-5 s)
   hawser     hawser at `scheme = auto` / generalized-α at tolerances: maxima error, CPU
   ratio      paired CPU ratio MoorDyn RK2 at DTM / hawser auto, median over repeats
+  compare    hawser RK4 and MoorDyn RK2 on the case or a variant (--elements, --depth),
+             both sampled every --sample s: cycle maxima of each and their difference
+
+The snap rings at the line's axial modes (periods of a few 10 ms), so samples every 0.01 s
+catch each cycle's ringing at a different phase: the maxima of 0.01 s samples are not the
+peaks. `compare --sample 0.002` samples every coupling step (BENCHMARKS.md).
 
 MoorDyn is driven through its Python bindings (moordyn.Step every COUPLING seconds with the
 position at the start of the interval and the chord velocity to the position at its end, so
@@ -92,10 +98,16 @@ def worst_error(maxima, reference):
 
 
 def scenario_text(scheme=None, time_step=None, tolerance=None, duration=None,
-                  safety_factor=None):
-    """The example's text with `[simulation]` keys replaced."""
+                  safety_factor=None, sample=None, elements=None, depth=None):
+    """The example's text with `[simulation]` keys, the segment count and the depth replaced."""
     with open(SCENARIO, encoding="utf-8") as fh:
         text = fh.read()
+    if sample is not None:
+        text = text.replace(f"output_interval = {SAMPLE}", f"output_interval = {sample!r}", 1)
+    if elements is not None:
+        text = text.replace("elements = 165", f"elements = {elements}", 1)
+    if depth is not None:
+        text = text.replace("depth = 3.3", f"depth = {depth!r}", 1)
     if scheme is not None:
         text = text.replace('scheme = "auto"', f'scheme = "{scheme}"', 1)
     if time_step is not None:
@@ -164,25 +176,32 @@ def reference(hawser, tmp, verbose=True):
 # --------------------------------------------------------------------------------- MoorDyn
 
 
-def moordyn_deck(tmp, dtm):
-    """A copy of the deck with dtM set."""
+def moordyn_deck(tmp, dtm, elements=None, depth=None):
+    """A copy of the deck with dtM (and, if given, NumSegs and WtrDpth) set."""
     with open(DECK, encoding="utf-8") as fh:
         lines = fh.read().splitlines()
     for i, line in enumerate(lines):
         f = line.split()
         if len(f) >= 2 and f[1] == "dtM":
             lines[i] = f"{dtm!r}  dtM"
+        if len(f) >= 2 and f[1] == "WtrDpth" and depth is not None:
+            lines[i] = f"{depth!r}  WtrDpth"
+        if len(f) == 7 and f[1] == "chain" and elements is not None:
+            f[5] = str(elements)
+            lines[i] = "  ".join(f)
     return write(tmp, f"md_{dtm:.4e}.txt", "\n".join(lines) + "\n")
 
 
-def moordyn_run(tmp, dtm, coupling=0.002, duration=DURATION):
+def moordyn_run(tmp, dtm, coupling=0.002, duration=DURATION, sample=SAMPLE, elements=None,
+                depth=None):
     """MoorDyn RK2 at dtM: (times, FairTen at every output sample, CPU s of the loop).
-    Samples every SAMPLE s (at the end of coupling intervals); NaN from where MoorDyn failed."""
+    Samples every `sample` s (at the end of coupling intervals, so a multiple of `coupling`);
+    NaN from where MoorDyn failed."""
     import moordyn
 
-    deck = moordyn_deck(tmp, dtm)
+    deck = moordyn_deck(tmp, dtm, elements, depth)
     n = int(round(duration / coupling))
-    every = int(round(SAMPLE / coupling))
+    every = int(round(sample / coupling))
     xs, vs = [], []
     for i in range(n):
         a, b = orbit(i * coupling), orbit((i + 1) * coupling)
@@ -219,7 +238,8 @@ def stable(values, maxima, ref, tol=5e-3):
 
 def main():
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    p.add_argument("what", choices=["reference", "moordyn", "bisect", "hawser", "ratio"])
+    p.add_argument("what", choices=["reference", "moordyn", "bisect", "hawser", "ratio",
+                                    "compare"])
     p.add_argument("--hawser", default=HAWSER)
     p.add_argument("--ref", help="reference maxima, comma-separated [N] (default: "
                    "REFERENCE_MAXIMA)")
@@ -227,6 +247,12 @@ def main():
     p.add_argument("--coupling", type=float, default=0.002)
     p.add_argument("--tolerances", default="1e-4,1e-3")
     p.add_argument("--repeats", type=int, default=5)
+    p.add_argument("--sample", type=float, default=0.002, help="compare: output interval [s]")
+    p.add_argument("--elements", type=int, help="compare: segments (165 in the case)")
+    p.add_argument("--depth", type=float, help="compare: water depth [m] (3.3 in the case)")
+    p.add_argument("--dt", type=float, default=5e-5, help="compare: hawser RK4 step [s]")
+    p.add_argument("--duration", type=float, default=DURATION,
+                   help="compare: simulated time [s]; the maxima are those of its last 2.5 s")
     a = p.parse_args()
     tmp = tempfile.mkdtemp(prefix="stiff-chain-")
     ref = [float(x) for x in a.ref.split(",")] if a.ref else REFERENCE_MAXIMA
@@ -273,6 +299,22 @@ def main():
                   f"3), maxima {' '.join(f'{m:.5f}' for m in mx)} N, worst "
                   f"{worst_error(mx, ref) * 100:.3f} %; {stats or 'steps %d' % r['steps']}",
                   flush=True)
+    elif a.what == "compare":
+        # Both codes on the same variant, sampled every --sample s; the last two periods.
+        start = a.duration - 2 * PERIOD
+        path = write(tmp, "compare.toml", scenario_text(
+            scheme="rk4", time_step=a.dt, duration=a.duration, sample=a.sample,
+            elements=a.elements, depth=a.depth))
+        t, v, _ = hawser_series(a.hawser, path, tmp)
+        h = cycle_maxima(t, v, start, a.duration)
+        dtm = float(a.dtm.split(",")[0])
+        t, v, _ = moordyn_run(tmp, dtm, a.coupling, a.duration, a.sample, a.elements, a.depth)
+        m = cycle_maxima(t, v, start, a.duration)
+        print(f"segments {a.elements or 165}, depth {a.depth or 3.3} m, samples every "
+              f"{a.sample} s, maxima over {start:g}–{a.duration:g} s:\n"
+              f"  hawser RK4 dt {a.dt:.3e} s: {' '.join(f'{x:.3f}' for x in h)} N\n"
+              f"  MoorDyn RK2 dtM {dtm:.3e} s: {' '.join(f'{x:.3f}' for x in m)} N\n"
+              f"  largest difference {worst_error(h, m) * 100:.2f} % of MoorDyn's")
     elif a.what == "ratio":
         dtm = float(a.dtm.split(",")[0])
         path = write(tmp, "auto.toml", scenario_text())
