@@ -6,6 +6,7 @@ use anyhow::{Context, Result, bail};
 use hawser::model::{Formulation, Scheme};
 use hawser::verification::{CASES, Fidelity, run_case, run_label};
 use hawser_io::verification_report::{tally, text_table, write_report};
+use rayon::prelude::*;
 use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
@@ -32,6 +33,10 @@ pub struct ValidateArgs {
     /// `generalized-alpha` (the others are statics and run once).
     #[arg(long, value_delimiter = ',', default_value = "rk4")]
     scheme: Vec<String>,
+    /// Rows run at a time, one per thread (default: every core). The rows are independent
+    /// runs; the table and the report list them in the suite's order whatever finishes first.
+    #[arg(long)]
+    jobs: Option<usize>,
 }
 
 fn parse_scheme(name: &str) -> Result<Scheme> {
@@ -71,8 +76,13 @@ pub fn run(args: &ValidateArgs) -> Result<ExitCode> {
     } else {
         Fidelity::Full
     };
-    let start = Instant::now();
-    let mut results = Vec::new();
+    let jobs = match args.jobs {
+        Some(0) => bail!("--jobs 0: expected at least 1 row at a time"),
+        Some(n) => n,
+        None => std::thread::available_parallelism().map_or(1, |n| n.get()),
+    };
+    // Every (case, formulation, scheme) row of the selection, in the suite's order.
+    let mut rows = Vec::new();
     for case in CASES {
         if let Some(filter) = &args.case
             && !case.name.contains(filter.as_str())
@@ -86,6 +96,19 @@ pub fn run(args: &ValidateArgs) -> Result<ExitCode> {
         };
         for &f in &formulations {
             for &scheme in case_schemes {
+                rows.push((case, f, scheme));
+            }
+        }
+    }
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(jobs)
+        .build()
+        .context("cannot start the threads of the suite")?;
+    let start = Instant::now();
+    // rayon's collect keeps the rows' order; each row's time is printed as it finishes.
+    let results: Vec<_> = pool.install(|| {
+        rows.par_iter()
+            .map(|&(case, f, scheme)| {
                 let t = Instant::now();
                 let r = run_case(case, f, fidelity, scheme);
                 err!(
@@ -94,10 +117,10 @@ pub fn run(args: &ValidateArgs) -> Result<ExitCode> {
                     run_label(f, r.scheme),
                     t.elapsed().as_secs_f64()
                 );
-                results.push(r);
-            }
-        }
-    }
+                r
+            })
+            .collect()
+    });
     let wall = start.elapsed().as_secs_f64();
     let checks: Vec<_> = results.iter().flat_map(|r| &r.checks).collect();
     out!("{}", text_table(&checks).trim_end_matches('\n'));

@@ -4,6 +4,7 @@
 //! examples/data beside it. (An earlier stability estimate took the largest single-term rate
 //! and let the OC3 example diverge within 0.2 s.)
 
+use rayon::prelude::*;
 use std::path::PathBuf;
 use std::process::Command;
 
@@ -28,9 +29,10 @@ fn every_example_runs_stably_with_the_automatic_step() {
         .collect();
     examples.sort();
     assert!(examples.len() >= 4, "{examples:?}");
-    for example in examples {
-        let duration = run_length(&example);
-        let text = std::fs::read_to_string(&example).unwrap();
+    // The examples are independent runs: spread over the cores.
+    examples.par_iter().for_each(|example| {
+        let duration = run_length(example);
+        let text = std::fs::read_to_string(example).unwrap();
         let text: String = text
             .lines()
             .map(|l| {
@@ -68,7 +70,7 @@ fn every_example_runs_stably_with_the_automatic_step() {
         );
         let status = std::fs::read_to_string(out.join("status.json")).unwrap();
         assert!(status.contains("\"complete\": true"), "{name}: {status}");
-    }
+    });
     let _ = std::fs::remove_dir_all(&dir);
 }
 

@@ -10,6 +10,7 @@
 
 mod common;
 
+use rayon::prelude::*;
 use std::path::{Path, PathBuf};
 
 fn root() -> PathBuf {
@@ -86,20 +87,25 @@ fn every_example_writes_the_recorded_results() {
         .filter(|p| p.extension().is_some_and(|x| x == "toml"))
         .collect();
     examples.sort();
-    let mut lines = Vec::new();
-    for path in &examples {
-        let name = path.file_stem().unwrap().to_string_lossy().to_string();
-        let dir = std::env::temp_dir().join(format!(
-            "hawser_example_hashes_{name}_{}",
-            std::process::id()
-        ));
-        let _ = std::fs::remove_dir_all(&dir);
-        common::run_example_briefly(path, &dir, 20, 5);
-        for (file, h) in hashes_of(&dir) {
-            lines.push(format!("{name} {file} {h:016x}"));
-        }
-        let _ = std::fs::remove_dir_all(&dir);
-    }
+    // The examples are independent runs: spread over the cores, listed in their order.
+    let lines: Vec<String> = examples
+        .par_iter()
+        .flat_map_iter(|path| {
+            let name = path.file_stem().unwrap().to_string_lossy().to_string();
+            let dir = std::env::temp_dir().join(format!(
+                "hawser_example_hashes_{name}_{}",
+                std::process::id()
+            ));
+            let _ = std::fs::remove_dir_all(&dir);
+            common::run_example_briefly(path, &dir, 20, 5);
+            let lines: Vec<String> = hashes_of(&dir)
+                .into_iter()
+                .map(|(file, h)| format!("{name} {file} {h:016x}"))
+                .collect();
+            let _ = std::fs::remove_dir_all(&dir);
+            lines
+        })
+        .collect();
     let recorded = root.join("tests/data/example_hashes.txt");
     let text = lines.join("\n") + "\n";
     if std::env::var_os("HAWSER_BLESS").is_some() {
