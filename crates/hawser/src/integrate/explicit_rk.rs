@@ -86,23 +86,40 @@ impl ExplicitRk {
         let tab = self.tableau;
         let s = tab.stages;
         for i in 0..s {
-            self.stage.copy_from_slice(y);
-            for j in 0..i {
-                let a = tab.a[i * s + j];
-                if a != 0.0 {
-                    let kj = &self.k[j];
-                    for (st, k) in self.stage.iter_mut().zip(kj.iter()) {
-                        *st += dt * a * k;
+            // Stage i: y + Σ_j (dt a_ij) k_j over the non-zero a_ij, the first of them fused
+            // with the copy of y (the same sums in the same order).
+            let mut terms = (0..i).filter(|&j| tab.a[i * s + j] != 0.0);
+            match terms.next() {
+                Some(j) => {
+                    let a = dt * tab.a[i * s + j];
+                    for ((st, yv), k) in self.stage.iter_mut().zip(y.iter()).zip(&self.k[j]) {
+                        *st = yv + a * k;
                     }
+                }
+                None => self.stage.copy_from_slice(y),
+            }
+            for j in terms {
+                let a = dt * tab.a[i * s + j];
+                for (st, k) in self.stage.iter_mut().zip(&self.k[j]) {
+                    *st += a * k;
                 }
             }
             let (ki, _) = self.k.split_at_mut(i + 1);
             system.rhs(t + tab.c[i] * dt, &self.stage, &mut ki[i], ws)?;
         }
-        for i in 0..s {
-            let b = tab.b[i] * dt;
-            for (yv, k) in y.iter_mut().zip(self.k[i].iter()) {
-                *yv += b * k;
+        // y += Σ_i (b_i dt) k_i, summed in stage order per entry.
+        if let [k0, k1, k2, k3] = &self.k[..] {
+            let b = [0, 1, 2, 3].map(|i| tab.b[i] * dt);
+            let stages = k0.iter().zip(k1).zip(k2).zip(k3);
+            for (yv, (((k0, k1), k2), k3)) in y.iter_mut().zip(stages) {
+                *yv = (((*yv + b[0] * k0) + b[1] * k1) + b[2] * k2) + b[3] * k3;
+            }
+        } else {
+            for i in 0..s {
+                let b = tab.b[i] * dt;
+                for (yv, k) in y.iter_mut().zip(self.k[i].iter()) {
+                    *yv += b * k;
+                }
             }
         }
         Ok(())

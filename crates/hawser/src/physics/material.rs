@@ -100,7 +100,7 @@ impl AxialLaw {
     /// Tension T [N] from strain ε [-] and strain rate ε̇ [1/s] (DG paper eq. 22).
     ///
     /// The damping term acts whatever the strain, as in eq. 22.
-    #[inline]
+    #[inline(always)]
     pub fn tension(&self, strain: Real, strain_rate: Real) -> Real {
         let elastic = if strain > 0.0 {
             self.stiffness.tension_and_tangent(strain).0

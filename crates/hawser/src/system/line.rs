@@ -9,7 +9,7 @@ use super::{LineWork, PointKinematics};
 use crate::formulation::dg::{DgLine, DgWorkspace, EndState, Translation};
 use crate::formulation::{Discretisation, Energy, LoadOptions, Mesh, line_forces};
 use crate::linalg::{EndKind, LineBlocks};
-use crate::math::{Mat3, Real, Vec3, get3, set3};
+use crate::math::{Mat3, Real, Vec3, set3};
 use crate::physics::environment::Environment;
 use crate::physics::static_kinematics::FluidPoints;
 
@@ -185,9 +185,14 @@ impl SystemLine {
                 lw.velocity[0] = a.velocity;
                 lw.position[n] = b.position;
                 lw.velocity[n] = b.velocity;
-                for i in 1..n {
-                    lw.position[i] = get3(y, i - 1);
-                    lw.velocity[i] = get3(&y[3 * m..], i - 1);
+                // Coordinates then rates of nodes 1..n, three entries a node.
+                let (coordinates, rates) = y[..6 * m].split_at(3 * m);
+                let nodes = lw.position[1..n].iter_mut().zip(&mut lw.velocity[1..n]);
+                for ((r, v), (yr, yv)) in
+                    nodes.zip(coordinates.chunks_exact(3).zip(rates.chunks_exact(3)))
+                {
+                    *r = Vec3::new(yr[0], yr[1], yr[2]);
+                    *v = Vec3::new(yv[0], yv[1], yv[2]);
                 }
             }
             Discretisation::Dg(_) => {}
@@ -296,9 +301,15 @@ impl SystemLine {
         match &self.discretisation {
             Discretisation::Fe { .. } | Discretisation::Hermite(_) => {
                 let m = self.vectors() - 2;
-                for i in 1..=m {
-                    set3(dydt, i - 1, &lw.velocity[i]);
-                    set3(&mut dydt[3 * m..], i - 1, &blocks.x[i]);
+                let (coordinates, rates) = dydt[..6 * m].split_at_mut(3 * m);
+                let nodes = lw.velocity[1..=m].iter().zip(&blocks.x[1..=m]);
+                for ((v, a), (dr, dv)) in nodes.zip(
+                    coordinates
+                        .chunks_exact_mut(3)
+                        .zip(rates.chunks_exact_mut(3)),
+                ) {
+                    dr.copy_from_slice(v.as_slice());
+                    dv.copy_from_slice(a.as_slice());
                 }
             }
             Discretisation::Dg(_) => {}
