@@ -163,7 +163,7 @@ impl Session {
         // Sized now: saving the start of an interval allocates nothing.
         stepper.save(&mut coupling.start);
         let mut sampled = stepper::Saved::default();
-        stepper.save(&mut sampled);
+        stepper.save_sample(&mut sampled);
         let interval = stepper.sample_interval();
         let duration = model.settings.duration;
         let (_, culprit) = stepper.stable_step();
@@ -488,7 +488,7 @@ impl Session {
         }
         // A diverged run reports the state of its last sample, which passed the checks.
         if matches!(error, Some(SimulationError::Diverged { .. })) && self.samples > 0 {
-            self.stepper.restore(&self.sampled);
+            self.stepper.restore_sample(&self.sampled);
             self.stepper.apply_releases(&mut self.system);
         }
         // A state that cannot be evaluated (a singular mass matrix) reports the workspace of
@@ -527,7 +527,7 @@ fn notify_observers(
 ) -> Result<(), SimulationError> {
     *samples += 1;
     *last_sample = s.time();
-    s.save(sampled);
+    s.save_sample(sampled);
     let view = view_of(system, s, channels, *samples - 1);
     for o in observers.iter_mut().flatten() {
         o.sample(&view)
