@@ -334,6 +334,10 @@ pub struct GeneralizedAlpha {
     solver: CoupledSystem,
     /// The step S was formed for [s] (NaN: not formed).
     matrix_step: Real,
+    /// The step S had been formed for when the history was saved [s] (NaN: none): a restored
+    /// run forms S again at this step when its next step matches it within [`STEP_MATCH`],
+    /// as the saved run would have kept those factors, so that it iterates bit for bit alike.
+    restored_matrix_step: Real,
     /// Whether `solver` holds the factors of S (its next solve can reuse them).
     factored: bool,
     /// Whether `weights` are those of `reference` (false after a restore).
@@ -387,6 +391,7 @@ impl GeneralizedAlpha {
             matrix: fd_lines.clone(),
             solver,
             matrix_step: Real::NAN,
+            restored_matrix_step: Real::NAN,
             factored: false,
             weights_ready: false,
             fd_lines,
@@ -417,7 +422,9 @@ impl GeneralizedAlpha {
 
     /// Everything the next step needs of the past, as numbers: the accelerations q̈_n, a_n and
     /// q̈_{n−1} (state layout), the reference tensions, the flags, the previous step and the
-    /// last contraction rate (the predictor and the convergence test), and the Jacobian's
+    /// last contraction rate (the predictor and the convergence test), the step the iteration
+    /// matrix was formed for with its body points' offsets (a restored run forms the same
+    /// matrix where the saved run would have kept its factors), and the Jacobian's
     /// ingredients (the modified Newton iteration reuses them, so a restored run iterates
     /// exactly as the saved one would have).
     pub fn history(&self, out: &mut Vec<Real>) {
@@ -431,6 +438,10 @@ impl GeneralizedAlpha {
         out.push(if self.refresh { 1.0 } else { 0.0 });
         out.push(self.previous_step);
         out.push(self.contraction);
+        out.push(self.matrix_step);
+        for slot in &self.solver.body_slots {
+            out.extend_from_slice(slot.offset.as_slice());
+        }
         out.extend(self.jacobian.numbers());
     }
 
@@ -439,7 +450,8 @@ impl GeneralizedAlpha {
     pub fn set_history(&mut self, history: &[Real]) -> bool {
         let n = self.acceleration.len();
         let lines = self.reference.len();
-        if history.len() != 3 * n + lines + 5 + self.jacobian.len() {
+        let slots = 3 * self.solver.body_slots.len();
+        if history.len() != 3 * n + lines + 6 + slots + self.jacobian.len() {
             return false;
         }
         self.acceleration.copy_from_slice(&history[..n]);
@@ -447,16 +459,28 @@ impl GeneralizedAlpha {
         self.previous.copy_from_slice(&history[2 * n..3 * n]);
         self.reference
             .copy_from_slice(&history[3 * n..3 * n + lines]);
-        let flags = &history[3 * n + lines..3 * n + lines + 5];
+        let flags = &history[3 * n + lines..3 * n + lines + 6];
         self.started = flags[0] != 0.0;
         self.formed = flags[1] != 0.0;
         self.refresh = flags[2] != 0.0;
         self.previous_step = flags[3];
         self.contraction = flags[4];
         self.matrix_step = Real::NAN;
+        self.restored_matrix_step = flags[5];
         self.factored = false;
         self.weights_ready = false;
-        let mut rest = history[3 * n + lines + 5..].iter().copied();
+        // The body points' offsets the saved matrix was formed with (its ρ_f), which a matrix
+        // formed again at `restored_matrix_step` takes instead of the iterate's.
+        let offsets = &history[3 * n + lines + 6..3 * n + lines + 6 + slots];
+        for (slot, o) in self
+            .solver
+            .body_slots
+            .iter_mut()
+            .zip(offsets.chunks_exact(3))
+        {
+            slot.offset = Vec3::new(o[0], o[1], o[2]);
+        }
+        let mut rest = history[3 * n + lines + 6 + slots..].iter().copied();
         self.jacobian.set_numbers(&mut rest)
     }
 
@@ -476,6 +500,7 @@ impl GeneralizedAlpha {
         self.previous_step = 0.0;
         self.contraction = Real::NAN;
         self.matrix_step = Real::NAN;
+        self.restored_matrix_step = Real::NAN;
         self.factored = false;
     }
 
@@ -579,21 +604,25 @@ impl GeneralizedAlpha {
         self.formed = true;
         self.refresh = false;
         self.matrix_step = Real::NAN;
+        self.restored_matrix_step = Real::NAN;
         self.statistics.jacobians += 1;
     }
 
     /// S = M − γ' ∂F/∂v − β' ∂F/∂q for the step h, with the clamps of `hermite` lines, and
-    /// the body points' offsets of the iterate in `ws` (S's rotation-to-point map).
-    fn form_matrix(&mut self, system: &System, ws: &Workspace, h: Real) {
-        for (s, slot) in self
-            .solver
-            .body_slots
-            .iter_mut()
-            .zip(&ws.coupled.body_slots)
-        {
-            s.body = slot.body;
-            s.offset = slot.offset;
-            s.bias = Vec3::zeros();
+    /// the body points' offsets of the iterate in `ws` (S's rotation-to-point map); without
+    /// `ws`, the offsets S already has (a restored run forming its saved matrix again).
+    fn form_matrix(&mut self, system: &System, ws: Option<&Workspace>, h: Real) {
+        if let Some(ws) = ws {
+            for (s, slot) in self
+                .solver
+                .body_slots
+                .iter_mut()
+                .zip(&ws.coupled.body_slots)
+            {
+                s.body = slot.body;
+                s.offset = slot.offset;
+                s.bias = Vec3::zeros();
+            }
         }
         let (bp, gp) = self.params.derivatives(h);
         let j = &self.jacobian;
@@ -997,8 +1026,14 @@ impl GeneralizedAlpha {
             // A step equal to the matrix's but for round-off (steps landing on output times
             // k Δt_out differ in their last bits) keeps the factors.
             if !((h - self.matrix_step).abs() <= STEP_MATCH * h) {
-                self.form_matrix(system, ws, h);
+                // After a restore, the saved run's matrix step if this step would have kept it.
+                if (h - self.restored_matrix_step).abs() <= STEP_MATCH * h {
+                    self.form_matrix(system, None, self.restored_matrix_step);
+                } else {
+                    self.form_matrix(system, Some(ws), h);
+                }
             }
+            self.restored_matrix_step = Real::NAN;
             self.residual(system, ws);
             let (norm, at) = self.correct(system, bp)?;
             worst = at;
