@@ -348,11 +348,8 @@ impl Stepper {
 
     /// Saves what the next step needs into `saved` (no allocation once `saved` has the sizes).
     pub(crate) fn save(&self, saved: &mut Saved) {
-        saved.state.clear();
-        saved.state.extend_from_slice(&self.state);
-        saved.clock = self.clock;
-        saved.releases.clear();
-        saved.releases.extend_from_slice(&self.releases);
+        // The sample's part (state, clock, releases), then the scheme's history.
+        self.save_sample(saved);
         match &self.integrator {
             Integrator::ThreeLevel { scheme, .. } => {
                 let (previous, last_step) = scheme.history();
@@ -360,14 +357,9 @@ impl Stepper {
                 saved.history.extend_from_slice(previous);
                 saved.last_step = last_step;
             }
-            Integrator::GeneralizedAlpha { scheme, .. } => {
-                scheme.history(&mut saved.history);
-                saved.last_step = 0.0;
-            }
-            Integrator::Rk(_) => {
-                saved.history.clear();
-                saved.last_step = 0.0;
-            }
+            Integrator::GeneralizedAlpha { scheme, .. } => scheme.history(&mut saved.history),
+            // No history: save_sample left it empty, with no last step.
+            Integrator::Rk(_) => {}
         }
     }
 
