@@ -22,7 +22,16 @@ Targets printed (each with its measured value):
      `scheme = "auto"` against MoorDyn RK2 at its largest stable dtM, CPU per run (target
      >= 20x) and the top tension's cycle maxima against the converged RK4 reference (target
      within 0.5 %).
-Not measured here: the parameter sweep (see BENCHMARKS.md).
+  6. OC3 at each code's best step: the largest step at which each code's line-1 fairlead
+     tension maximum and minimum (sampled every 0.1 s over the run) stay within 0.5 % of its
+     own run at a step 8x shorter (MoorDyn RK2 on its deck; hawser RK4, lumped, on the same
+     deck), and the paired CPU per simulated second at those steps.
+  7. The fast defaults: `scheme = "auto"` on the README example (examples/catenary_mooring.toml,
+     60 s; target >= 100x real time per CPU second) and on OC3 (examples/oc3_surge.toml, 300 s,
+     automatic step, tolerance 1e-3; target >= 4000x), every fairlead tension's maximum and
+     minimum within 0.5 % of RK4 at a quarter of its default step (safety factor 0.2).
+  8. The parameter sweep: `hawser sweep` of 6 cases of the README example with --jobs 1 and 2,
+     cases per CPU second (per core) and per wall second (as scripts/sweep_scaling.sh).
 """
 
 from __future__ import annotations
@@ -31,6 +40,8 @@ import argparse
 import json
 import math
 import os
+import resource
+import shutil
 import statistics
 import subprocess
 import sys
@@ -83,6 +94,8 @@ def main():
     p.add_argument("--stiff-dtm", type=float, default=sc.MOORDYN_LARGEST_STABLE_DTM,
                    help="MoorDyn's dtM for the stiff-seabed chain [s] (default: its largest "
                    "stable step, `scripts/stiff_chain.py bisect`)")
+    p.add_argument("--skip-stiff", action="store_true",
+                   help="leave out the stiff-seabed chain (about 40 CPU-s per repeat)")
     a = p.parse_args()
     from importlib.metadata import version
 
@@ -173,7 +186,17 @@ def main():
               f"{r['cpu_s'] / r['duration']:>22.3e}")
 
     # 5. The stiff-seabed chain.
-    stiff(a, tmp)
+    if not a.skip_stiff:
+        stiff(a, tmp)
+
+    # 6. OC3 at each code's best step.
+    best_steps(a, tmp, surge, src, x0)
+
+    # 7. The fast defaults.
+    fast_defaults(a, tmp)
+
+    # 8. The sweep.
+    sweep(a, tmp)
 
 
 def stiff(a, tmp):
@@ -199,6 +222,173 @@ def stiff(a, tmp):
           f"[{'met' if ratio >= 20 else 'NOT met'}]")
     print(f"  target: hawser auto's cycle maxima within 0.5 % of the RK4 reference: "
           f"{err * 100:.3f} % [{'met' if err <= 5e-3 else 'NOT met'}]")
+
+
+def extremes_error(value, reference):
+    """Worst relative difference of the (max, min) pairs in `value` from `reference`."""
+    return max(abs(v - r) / abs(r) for v, r in zip(value, reference))
+
+
+def best_steps(a, tmp, surge, src, x0):
+    """6. The largest step of each code within 0.5 % of its own run at a step 8x shorter
+    (line 1's fairlead tension maximum and minimum), and the paired CPU at those steps."""
+    print(f"\nOC3 deck at each code's best step: the largest step with line 1's fairlead tension "
+          f"maximum and minimum within 0.5 % of the code's own run at a step 8x shorter, "
+          f"{a.duration:g} s")
+
+    def moordyn_extremes(dt):
+        deck, _, _ = mb.prepare_deck(src, os.path.join(tmp, f"md_{dt:.6f}"), dt, None, False)
+        console = os.path.join(tmp, f"md_{dt:.6f}", "console.txt")
+        import moordyn
+        import cmoordyn
+        try:
+            r = mb.run_once(moordyn, cmoordyn, deck, x0, dt, 0.1, a.duration, 2.0, 10.0,
+                            console, False)
+        except (SystemExit, RuntimeError, ValueError):
+            return None, deck
+        v = r["ten1"]
+        if not all(math.isfinite(x) for x in v):
+            return None, deck
+        return (max(v), min(v)), deck
+
+    def hawser_extremes(dt):
+        deck, _, _ = mb.prepare_deck(src, os.path.join(tmp, f"hw_{dt:.6f}"), dt, None, True)
+        out = os.path.join(tmp, f"hw_{dt:.6f}", "out")
+        run = subprocess.run([a.hawser, "run", deck, "--vessel-motion", surge, "--duration",
+                              str(a.duration), "--out", out, "--quiet", "--overwrite"],
+                             capture_output=True, text=True)
+        if run.returncode != 0:
+            return None, deck
+        with open(os.path.join(out, "summary.json"), encoding="utf-8") as fh:
+            ch = json.load(fh)["channels"]["FairTen1"]
+        return (ch["max"], ch["min"]), deck
+
+    # Steps that divide the 0.1 s output and coupling interval, so that every code samples
+    # its tension at the same instants at every step (steps that do not divide it sample
+    # between steps, which moved hawser's minimum by 0.3 % at 3 ms).
+    ladder = [0.1 / n for n in (100, 50, 40, 25, 20, 16, 14, 12, 10)]
+    limit = hawser_bench(a.hawser, [DECK, "--vessel-motion", surge, "--duration", "0.1",
+                                    "--mass", "lumped"])[0]["stable_step"]
+    best = {}
+    for code, extremes, steps in [
+        ("MoorDyn RK2", moordyn_extremes, ladder),
+        ("hawser RK4 lumped", hawser_extremes, [s for s in ladder if s <= limit]),
+    ]:
+        ref, _ = extremes(steps[0] / 8)
+        print(f"  {code} dt {steps[0] / 8 * 1e3:.3f} ms (the reference): max {ref[0]:.1f} N, "
+              f"min {ref[1]:.1f} N")
+        found = None
+        for dt in steps:
+            e, deck = extremes(dt)
+            err = extremes_error(e, ref) if e else float("inf")
+            print(f"  {code} dt {dt * 1e3:.3f} ms: "
+                  + (f"max {e[0]:.1f} N, min {e[1]:.1f} N, {err * 100:.3f} % from dt/8"
+                     if e else "diverged"))
+            if err > 5e-3:
+                break
+            found = (dt, deck)
+        best[code] = found
+    md_dt, md_deck = best["MoorDyn RK2"]
+    h_dt, _ = best["hawser RK4 lumped"]
+    pairs = []
+    for _ in range(a.repeats):
+        m = moordyn_loop_cpu(md_deck, x0, md_dt, a.duration)
+        h = hawser_bench(a.hawser, [DECK, "--vessel-motion", surge, "--duration", str(a.duration),
+                                    "--mass", "lumped", "--dt", str(h_dt)])[0]["cpu_s"]
+        pairs.append((m, h))
+    ratio = statistics.median(m / h for m, h in pairs)
+    print(f"  best steps: MoorDyn {md_dt * 1e3:.3f} ms, hawser {h_dt * 1e3:.3f} ms (its stable "
+          f"limit {limit * 1e3:.3f} ms); CPU per simulated second MoorDyn / hawser: {ratio:.2f} "
+          f"(MoorDyn {statistics.median(m for m, _ in pairs):.3f} s, hawser "
+          f"{statistics.median(h for _, h in pairs):.3f} s)")
+
+
+def simulation_variant(text, **keys):
+    """`text` with the `[simulation]` keys given replaced or added (TOML values as Python
+    values: str quoted, numbers as they print)."""
+    lines = text.splitlines()
+    start = lines.index("[simulation]")
+    end = next((i for i in range(start + 1, len(lines)) if lines[i].startswith("[")), len(lines))
+    kept = [ln for ln in lines[start + 1:end]
+            if ln.split("=")[0].strip() not in keys]
+    new = [f"{k} = {json.dumps(v) if isinstance(v, str) else repr(v)}" for k, v in keys.items()]
+    return "\n".join(lines[:start + 1] + new + kept + lines[end:]) + "\n"
+
+
+def fairlead_extremes(hawser, path, out):
+    """`hawser run`: (channel, max, min) of every line's end-B tension (the fairleads)."""
+    subprocess.run([hawser, "run", path, "--out", out, "--quiet", "--overwrite"], check=True,
+                   capture_output=True, text=True)
+    with open(os.path.join(out, "summary.json"), encoding="utf-8") as fh:
+        ch = json.load(fh)["channels"]
+    return {k: (v["max"], v["min"]) for k, v in ch.items() if k.endswith(".end_b.tension")}
+
+
+def fast_defaults(a, tmp):
+    """7. `scheme = "auto"` on the README example and OC3: real time per CPU second and the
+    fairlead tension extremes against RK4 at safety factor 0.2."""
+    cases = [
+        ("README example", os.path.join(ROOT, "examples", "catenary_mooring.toml"), {}, 100.0),
+        ("OC3, 300 s", OC3, {"duration": 300.0, "time_step": "auto", "tolerance": 1e-3},
+         4000.0),
+    ]
+    print("\nThe fast defaults: scheme = \"auto\" against RK4 at safety factor 0.2 (extremes of "
+          "every fairlead tension), real time per CPU second (hawser bench, consistent mass, "
+          f"best of {a.repeats})")
+    for name, path, keys, target in cases:
+        with open(path, encoding="utf-8") as fh:
+            text = fh.read()
+        auto = os.path.join(tmp, f"auto_{os.path.basename(path)}")
+        ref = os.path.join(tmp, f"ref_{os.path.basename(path)}")
+        with open(auto, "w", encoding="utf-8") as fh:
+            fh.write(simulation_variant(text, scheme="auto", **keys))
+        ref_keys = {**keys, "scheme": "rk4", "time_step": "auto", "safety_factor": 0.2}
+        ref_keys.pop("tolerance", None)
+        with open(ref, "w", encoding="utf-8") as fh:
+            fh.write(simulation_variant(text, **ref_keys))
+        e_auto = fairlead_extremes(a.hawser, auto, auto + ".out")
+        e_ref = fairlead_extremes(a.hawser, ref, ref + ".out")
+        worst = max(((extremes_error(e_auto[k], e_ref[k]), k) for k in e_ref))
+        r = hawser_bench(a.hawser, [auto, "--mass", "consistent", "--repeat", str(a.repeats)])[0]
+        rtf = r["duration"] / r["cpu_s"]
+        print(f"  {name}: auto chose {r['scheme']}, {r['steps']} steps, CPU {r['cpu_s']:.3f} s, "
+              f"{rtf:.0f}x real time; worst fairlead extreme {worst[0] * 100:.3f} % ({worst[1]})")
+        print(f"  target: >= {target:.0f}x real time per CPU second: {rtf:.0f}x "
+              f"[{'met' if rtf >= target else 'NOT met'}]; extremes within 0.5 %: "
+              f"{worst[0] * 100:.3f} % [{'met' if worst[0] <= 5e-3 else 'NOT met'}]")
+
+
+def sweep(a, tmp):
+    """8. `hawser sweep` of 6 cases with --jobs 1 and 2: CPU (all threads, from the children's
+    rusage) and wall time, medians over the repeats, alternating."""
+    cases = os.path.join(tmp, "cases.csv")
+    with open(cases, "w", encoding="utf-8") as fh:
+        fh.write("simulation.duration,statistics.start,points.fairlead.motion.amplitude\n")
+        for k in range(1, 7):
+            fh.write(f'6.0,0.0,"[{k}.0, 0.0, 0.0]"\n')
+    base = os.path.join(ROOT, "examples", "catenary_mooring.toml")
+    runs = {1: [], 2: []}
+    for _ in range(a.repeats):
+        for jobs in (1, 2):
+            out = os.path.join(tmp, f"sweep_{jobs}")
+            shutil.rmtree(out, ignore_errors=True)
+            before = resource.getrusage(resource.RUSAGE_CHILDREN)
+            t0 = time.perf_counter()
+            subprocess.run([a.hawser, "sweep", base, cases, "--out", out, "--jobs", str(jobs),
+                            "--quiet", "--overwrite"], check=True, capture_output=True)
+            wall = time.perf_counter() - t0
+            after = resource.getrusage(resource.RUSAGE_CHILDREN)
+            cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+            runs[jobs].append((cpu, wall))
+    print(f"\nhawser sweep: 6 cases x 6 s of the README example, median of {a.repeats}; load "
+          f"average now {os.getloadavg()[0]:.1f} on {os.cpu_count()} cores")
+    cpu1 = statistics.median(c for c, _ in runs[1])
+    for jobs in (1, 2):
+        cpu = statistics.median(c for c, _ in runs[jobs])
+        wall = statistics.median(w for _, w in runs[jobs])
+        print(f"  --jobs {jobs}: CPU {cpu:.2f} s ({6 / cpu:.3f} cases per CPU second, per core), "
+              f"wall {wall:.2f} s ({6 / wall:.3f} cases per wall second), CPU ratio to --jobs 1 "
+              f"{cpu / cpu1:.3f}")
 
 
 if __name__ == "__main__":

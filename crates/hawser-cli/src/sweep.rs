@@ -182,11 +182,7 @@ fn run_case_caught(
         run_case(setup, case, scenario, progress)
     }))
     .unwrap_or_else(|p| {
-        let what = p
-            .downcast_ref::<String>()
-            .cloned()
-            .or_else(|| p.downcast_ref::<&str>().map(|s| s.to_string()))
-            .unwrap_or_default();
+        let what = hawser::error::panic_message(p.as_ref());
         CaseOutcome {
             status: CaseStatus::Failed,
             error: Some(format!("internal error (a panic in hawser): {what}")),

@@ -288,12 +288,7 @@ pub fn drive(
                         execute(&jobs[i], stop, &progress[i])
                     }))
                     .unwrap_or_else(|p| {
-                        let what = p
-                            .downcast_ref::<String>()
-                            .cloned()
-                            .or_else(|| p.downcast_ref::<&str>().map(|s| s.to_string()))
-                            .unwrap_or_default();
-                        Err(Failure::Panic(what))
+                        Err(Failure::Panic(hawser::error::panic_message(p.as_ref())))
                     });
                     if tx.send((i, r)).is_err() {
                         break;

@@ -268,3 +268,31 @@ impl std::fmt::Display for crate::system::Location {
         }
     }
 }
+
+/// The message of a caught panic's payload (`std::panic::catch_unwind`'s `Err`): the text
+/// given to `panic!`, or "a panic without a message" for any other payload. The hosts that
+/// turn a panic into an error (the C ABI, the Python runner, `hawser sweep`) report it with
+/// this text.
+pub fn panic_message(payload: &(dyn std::any::Any + Send)) -> String {
+    payload
+        .downcast_ref::<&str>()
+        .map(|s| s.to_string())
+        .or_else(|| payload.downcast_ref::<String>().cloned())
+        .unwrap_or_else(|| "a panic without a message".into())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::panic_message;
+
+    #[test]
+    fn panic_message_reads_str_and_string_payloads() {
+        let s = std::panic::catch_unwind(|| panic!("static text")).unwrap_err();
+        assert_eq!(panic_message(s.as_ref()), "static text");
+        let n = 3;
+        let f = std::panic::catch_unwind(|| panic!("formatted {n}")).unwrap_err();
+        assert_eq!(panic_message(f.as_ref()), "formatted 3");
+        let o = std::panic::catch_unwind(|| std::panic::panic_any(7_u8)).unwrap_err();
+        assert_eq!(panic_message(o.as_ref()), "a panic without a message");
+    }
+}
