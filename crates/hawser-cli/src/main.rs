@@ -224,6 +224,13 @@ fn main() -> ExitCode {
 
 /// Loads a scenario or MoorDyn deck, printing diagnostics; `None` means bad input (already
 /// reported).
+/// The threads of a `--jobs N` option (`hawser validate`, `hawser sweep`): N, or every core
+/// when it is not given (clap refuses 0 for the `NonZeroUsize`).
+fn jobs_or_cores(jobs: Option<std::num::NonZeroUsize>) -> usize {
+    jobs.or_else(|| std::thread::available_parallelism().ok())
+        .map_or(1, std::num::NonZeroUsize::get)
+}
+
 fn load(file: &Path) -> Option<LoadedScenario> {
     load_with(file, &DeckArgs::default(), false)
 }

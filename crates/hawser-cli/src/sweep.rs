@@ -41,7 +41,7 @@ pub(crate) struct SweepArgs {
     out: PathBuf,
     /// Cases run at once, each on one thread (default: every core).
     #[arg(long, value_name = "N")]
-    jobs: Option<usize>,
+    jobs: Option<std::num::NonZeroUsize>,
     /// Run only shard I of N (1 ≤ I ≤ N): the cases k (0-based table row) with k mod N = I − 1;
     /// its summary is `sweep_summary.shard-I-of-N.csv`.
     #[arg(long, value_name = "I/N", value_parser = parse_shard)]
@@ -268,14 +268,7 @@ fn refuse(e: &ScenarioError) -> ExitCode {
 /// `hawser sweep`.
 pub(crate) fn run(args: &SweepArgs) -> Result<ExitCode> {
     let signals = Signals::install();
-    let jobs = match args.jobs {
-        Some(0) => {
-            err!("error: --jobs 0: expected at least 1 case at a time");
-            return Ok(ExitCode::from(2));
-        }
-        Some(n) => n,
-        None => std::thread::available_parallelism().map_or(1, |n| n.get()),
-    };
+    let jobs = crate::jobs_or_cores(args.jobs);
     let base = args.scenario.as_path();
     let Some(loaded) = crate::load_with(base, &args.deck, args.quiet) else {
         return Ok(ExitCode::from(2));

@@ -36,7 +36,7 @@ pub struct ValidateArgs {
     /// Rows run at a time, one per thread (default: every core). The rows are independent
     /// runs; the table and the report list them in the suite's order whatever finishes first.
     #[arg(long)]
-    jobs: Option<usize>,
+    jobs: Option<std::num::NonZeroUsize>,
 }
 
 fn parse_scheme(name: &str) -> Result<Scheme> {
@@ -76,11 +76,7 @@ pub fn run(args: &ValidateArgs) -> Result<ExitCode> {
     } else {
         Fidelity::Full
     };
-    let jobs = match args.jobs {
-        Some(0) => bail!("--jobs 0: expected at least 1 row at a time"),
-        Some(n) => n,
-        None => std::thread::available_parallelism().map_or(1, |n| n.get()),
-    };
+    let jobs = crate::jobs_or_cores(args.jobs);
     // Every (case, formulation, scheme) row of the selection, in the suite's order.
     let mut rows = Vec::new();
     for case in CASES {
