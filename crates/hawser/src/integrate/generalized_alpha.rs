@@ -1154,20 +1154,16 @@ fn mass_rows(b: &LineBlocks, nodes: &[Vec3], out: &mut [Vec3], residual: bool) {
     let n = b.nodes() - 1;
     for (i, x) in out.iter_mut().enumerate().take(n + 1) {
         let known = (i == 0 && b.end_a == EndKind::Known) || (i == n && b.end_b == EndKind::Known);
-        let row = || {
-            if b.width() == 1 {
-                tridiagonal_row(b, i, nodes)
-            } else {
-                b.row_times(i, nodes)
-            }
-        };
-        *x = if known {
-            Vec3::zeros()
-        } else if residual {
-            b.x[i] - row()
+        if known {
+            *x = Vec3::zeros();
+            continue;
+        }
+        let row = if b.width() == 1 {
+            tridiagonal_row(b, i, nodes)
         } else {
-            row()
+            b.row_times(i, nodes)
         };
+        *x = if residual { b.x[i] - row } else { row };
     }
 }
 
