@@ -62,8 +62,13 @@ pub fn line_forces(
     let still_water = env.is_still_water();
     let mut blocks = blocks;
     if let Some(b) = blocks.as_deref_mut() {
-        b.clear();
+        // A lumped line's diagonal blocks are all written below, from its `LumpedMass`.
+        if consistent || b.coupled {
+            b.clear();
+        }
     }
+    // The isotropic mass c [kg] of node e summed so far (element e − 1's share).
+    let mut node_isotropic = 0.0;
     // The force on node e summed so far (the contributions of element e − 1), and half the
     // unstretched length of element e − 1 (node e's share of it, 0 at node 0).
     let mut node_force = Vec3::zeros();
@@ -148,7 +153,15 @@ pub fn line_forces(
             // integrated with the linear shape functions; exact with one evaluation unless
             // the element crosses the surface, where each Gauss point takes its own density.
             if let Some(b) = blocks.as_deref_mut() {
-                add_element_mass(b, e, &k, consistent, &t, ra.z, rb.z);
+                if consistent {
+                    add_element_mass(b, e, &k, &t, ra.z, rb.z);
+                } else {
+                    let ([ca, cb], rank_one) = lumped_element_mass(&k, ra.z, rb.z);
+                    b.lumped.isotropic[e] = node_isotropic + ca;
+                    b.lumped.rank_one[e] = rank_one;
+                    b.lumped.tangent[e] = t;
+                    node_isotropic = cb;
+                }
             }
 
             // Seabed contact (DG paper eqs. 15–16) by nodal quadrature over the element.
@@ -182,6 +195,18 @@ pub fn line_forces(
         first = end;
     }
     forces[n] = node_force;
+    if let Some(b) = blocks.filter(|_| !consistent) {
+        b.lumped.isotropic[n] = node_isotropic;
+        if b.lumped.ends_only && !b.coupled {
+            b.diag[0] = b.lumped.block(0);
+            b.diag[n] = b.lumped.block(n);
+        } else {
+            for (i, d) in b.diag.iter_mut().enumerate() {
+                *d = b.lumped.block(i);
+            }
+        }
+        b.lumped.current = true;
+    }
 
     // Obstacle contact by the same nodal quadrature.
     if !env.obstacles.is_empty() {
@@ -331,50 +356,55 @@ fn lanes(f: impl Fn(usize) -> Real) -> [Real; 2] {
     [f(0), f(1)]
 }
 
-/// Adds element e's mass blocks [kg] into `b` (see [`line_forces`]).
+/// Adds element e's consistent mass blocks [kg] into `b` (see [`line_forces`]).
 #[inline(always)]
-fn add_element_mass(
-    b: &mut LineBlocks,
-    e: usize,
-    k: &SectionConstants,
-    consistent: bool,
-    t: &Vec3,
-    za: Real,
-    zb: Real,
-) {
+fn add_element_mass(b: &mut LineBlocks, e: usize, k: &SectionConstants, t: &Vec3, za: Real, zb: Real) {
     let fluid = |z: Real| usize::from(!(z < 0.0));
     let l0 = k.element_length;
     if (za < 0.0) == (zb < 0.0) {
         // Uniform density: exact shape-function integrals, ∫NaNa = ∫NbNb = 1/3 and
-        // ∫NaNb = 1/6 (consistent), ∫Na = ∫Nb = 1/2 (lumped).
-        let f = fluid(za);
-        if consistent {
-            let third = k.element_mass(f, t, l0 / 3.0);
-            b.diag[e] += third;
-            b.diag[e + 1] += third;
-            let sixth = third * 0.5;
-            b.lower[e] += sixth;
-            b.upper[e] += sixth;
-        } else {
-            let half = k.element_mass(f, t, 0.5 * l0);
-            b.diag[e] += half;
-            b.diag[e + 1] += half;
-        }
+        // ∫NaNb = 1/6.
+        let third = k.element_mass(fluid(za), t, l0 / 3.0);
+        b.diag[e] += third;
+        b.diag[e + 1] += third;
+        let sixth = third * 0.5;
+        b.lower[e] += sixth;
+        b.upper[e] += sixth;
     } else {
         // Crossing the surface: each Gauss point takes its own density.
         for &xi in &GAUSS {
             let (na, nb) = (1.0 - xi, xi);
             let m = k.element_mass(fluid(za * na + zb * nb), t, k.half_length);
-            if consistent {
-                b.diag[e] += m * (na * na);
-                b.diag[e + 1] += m * (nb * nb);
-                b.lower[e] += m * (na * nb);
-                b.upper[e] += m * (na * nb);
-            } else {
-                b.diag[e] += m * na;
-                b.diag[e + 1] += m * nb;
+            b.diag[e] += m * (na * na);
+            b.diag[e + 1] += m * (nb * nb);
+            b.lower[e] += m * (na * nb);
+            b.upper[e] += m * (na * nb);
+        }
+    }
+}
+
+/// The lumped mass of an element from height `za` to `zb` [m] as its two nodes' shares of
+/// the isotropic part, [c_a, c_b] = ∫ N (γ0 + ρ A C_an) ds [kg], and of the weight of t tᵀ,
+/// [b_a, b_b] = ∫ N ρ A (C_at − C_an) ds [kg] ([`crate::linalg::LumpedMass`]): ∫ N = L0/2 for each node at
+/// uniform density; crossing the surface, each Gauss point takes its own density.
+#[inline(always)]
+fn lumped_element_mass(k: &SectionConstants, za: Real, zb: Real) -> ([Real; 2], [Real; 2]) {
+    let fluid = |z: Real| usize::from(!(z < 0.0));
+    if (za < 0.0) == (zb < 0.0) {
+        let (alpha, beta) = k.added_mass[fluid(za)];
+        let c = (k.mass_per_length + alpha) * k.half_length;
+        let b = beta * k.half_length;
+        ([c, c], [b, b])
+    } else {
+        let (mut c, mut b) = ([0.0; 2], [0.0; 2]);
+        for &xi in &GAUSS {
+            let (alpha, beta) = k.added_mass[fluid(za * (1.0 - xi) + zb * xi)];
+            for (j, n) in [1.0 - xi, xi].into_iter().enumerate() {
+                c[j] += (k.mass_per_length + alpha) * (k.half_length * n);
+                b[j] += beta * (k.half_length * n);
             }
         }
+        (c, b)
     }
 }
 

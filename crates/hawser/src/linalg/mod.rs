@@ -9,5 +9,5 @@ pub mod eigen;
 
 pub use banded::BandedLu;
 pub use block_tridiagonal::BlockTridiagonal;
-pub use coupled::{BodySlot, CoupledSystem, EndKind, LineBlocks, ParentPin, Singular};
+pub use coupled::{BodySlot, CoupledSystem, EndKind, LineBlocks, LumpedMass, ParentPin, Singular};
 pub use dense::DenseLu;
