@@ -106,6 +106,11 @@ pub struct System {
     /// Per point: its slot in the coupled system when it is on a free body (numbered after
     /// the free points, see [`crate::linalg::CoupledSystem`]).
     pub point_slot: Vec<Option<usize>>,
+    /// Per point: for a point prescribed on a rigid motion ([`crate::model::Motion::Rigid`]),
+    /// the first point whose rigid motion is the same (itself if no earlier one), so that
+    /// [`System::point_kinematics`] evaluates the motion once for all the points on it (a
+    /// vessel's fairleads); `None` for other points.
+    pub rigid_motion_source: Vec<Option<usize>>,
     /// State layout.
     pub layout: Layout,
     /// Velocity of the frame the statics are solved in [m/s]: the tow velocity V of a steady
@@ -377,6 +382,21 @@ impl System {
                 _ => None,
             })
             .collect();
+        fn rigid_motion(p: &SystemPoint) -> Option<&crate::model::RigidMotion> {
+            match &p.kind {
+                PointKind::Prescribed(crate::model::Motion::Rigid { motion, .. }) => Some(motion),
+                _ => None,
+            }
+        }
+        let rigid_motion_source = points
+            .iter()
+            .map(|p| {
+                let motion = rigid_motion(p)?;
+                points
+                    .iter()
+                    .position(|q| rigid_motion(q) == Some(motion))
+            })
+            .collect();
         Ok(Self {
             environment,
             lines,
@@ -385,6 +405,7 @@ impl System {
             bodies,
             free_bodies,
             point_slot,
+            rigid_motion_source,
             layout: Layout {
                 line_offset,
                 line_interior,

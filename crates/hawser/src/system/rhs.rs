@@ -97,6 +97,8 @@ impl System {
                 ws.bodies[b] = self.body_kinematics(b, t, y, &ws.coupling, Some(&host));
             }
         }
+        // The last rigid motion evaluated at t, by its source point (`rigid_motion_source`).
+        let mut shared: Option<(usize, crate::model::RigidKinematics)> = None;
         for (i, p) in self.points.iter().enumerate() {
             if p.line_end.is_some() {
                 continue;
@@ -106,6 +108,24 @@ impl System {
                     position: p.position,
                     ..Default::default()
                 },
+                PointKind::Prescribed(crate::model::Motion::Rigid { motion, offset }) => {
+                    // The same numbers as `Motion::kinematics`, the motion evaluated once.
+                    let source = self.rigid_motion_source[i].unwrap_or(i);
+                    let body = match shared {
+                        Some((s, body)) if s == source => body,
+                        _ => {
+                            let body = motion.kinematics(t);
+                            shared = Some((source, body));
+                            body
+                        }
+                    };
+                    let (position, velocity, acceleration) = body.point(offset);
+                    PointKinematics {
+                        position,
+                        velocity,
+                        acceleration,
+                    }
+                }
                 PointKind::Prescribed(m) => {
                     let (position, velocity, acceleration) = m.kinematics(t);
                     PointKinematics {
