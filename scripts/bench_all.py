@@ -96,6 +96,8 @@ def main():
                    "stable step, `scripts/stiff_chain.py bisect`)")
     p.add_argument("--skip-stiff", action="store_true",
                    help="leave out the stiff-seabed chain (about 40 CPU-s per repeat)")
+    p.add_argument("--only", choices=["oc3"],
+                   help="run only this part (oc3: the OC3 deck against MoorDyn, parts 1-2)")
     a = p.parse_args()
     from importlib.metadata import version
 
@@ -142,6 +144,9 @@ def main():
           f"{auto[0]['stable_step']:.3e} s) against MoorDyn RK2 at dtM 2 ms, CPU per simulated "
           f"second MoorDyn / hawser: {ratio_auto:.2f} (each code's step for 0.5 % accuracy is "
           "not searched here)")
+
+    if a.only == "oc3":
+        return
 
     # 3. Waves.
     runs = [hawser_bench(a.hawser, [OC3, "--waves", "still,jonswap:200:6:10", "--kinematics",

@@ -358,7 +358,14 @@ fn lanes(f: impl Fn(usize) -> Real) -> [Real; 2] {
 
 /// Adds element e's consistent mass blocks [kg] into `b` (see [`line_forces`]).
 #[inline(always)]
-fn add_element_mass(b: &mut LineBlocks, e: usize, k: &SectionConstants, t: &Vec3, za: Real, zb: Real) {
+fn add_element_mass(
+    b: &mut LineBlocks,
+    e: usize,
+    k: &SectionConstants,
+    t: &Vec3,
+    za: Real,
+    zb: Real,
+) {
     let fluid = |z: Real| usize::from(!(z < 0.0));
     let l0 = k.element_length;
     if (za < 0.0) == (zb < 0.0) {

@@ -392,9 +392,7 @@ impl System {
             .iter()
             .map(|p| {
                 let motion = rigid_motion(p)?;
-                points
-                    .iter()
-                    .position(|q| rigid_motion(q) == Some(motion))
+                points.iter().position(|q| rigid_motion(q) == Some(motion))
             })
             .collect();
         Ok(Self {

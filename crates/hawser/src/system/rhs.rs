@@ -311,7 +311,9 @@ impl System {
         // The solve below reads a lumped line's interior mass in its factored form only.
         ws.blocks.iter_mut().for_each(|b| b.lumped.ends_only = true);
         self.assemble_loads(t, y, Some(&mut *dydt), ws);
-        ws.blocks.iter_mut().for_each(|b| b.lumped.ends_only = false);
+        ws.blocks
+            .iter_mut()
+            .for_each(|b| b.lumped.ends_only = false);
         ws.coupled
             .solve(&mut ws.blocks)
             .map_err(|s| self.singular_location(s))?;
