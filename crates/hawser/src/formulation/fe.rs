@@ -197,15 +197,13 @@ pub fn line_forces(
     forces[n] = node_force;
     if let Some(b) = blocks.filter(|_| !consistent) {
         b.lumped.isotropic[n] = node_isotropic;
+        b.lumped.current = true;
         if b.lumped.ends_only && !b.coupled {
             b.diag[0] = b.lumped.block(0);
             b.diag[n] = b.lumped.block(n);
         } else {
-            for (i, d) in b.diag.iter_mut().enumerate() {
-                *d = b.lumped.block(i);
-            }
+            b.form_lumped_diagonal();
         }
-        b.lumped.current = true;
     }
 
     // Obstacle contact by the same nodal quadrature.

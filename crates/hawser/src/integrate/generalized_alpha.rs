@@ -554,8 +554,12 @@ impl GeneralizedAlpha {
     }
 
     /// Forms the Jacobian's ingredients at (t, y), where `ws` holds [`System::assemble`]'s
-    /// evaluation (the mass blocks).
+    /// or [`System::rhs`]'s evaluation (the mass blocks; after `rhs` a lumped line's interior
+    /// blocks are formed here from their factored form).
     fn form_jacobian(&mut self, system: &System, ws: &mut Workspace, t: Real, y: &[Real]) {
+        ws.blocks
+            .iter_mut()
+            .for_each(crate::linalg::LineBlocks::form_lumped_diagonal);
         let j = &mut self.jacobian;
         for (li, b) in ws.blocks.iter().enumerate() {
             for (m, x) in j.line_mass[li].iter_mut().zip(b.blocks()) {

@@ -87,9 +87,11 @@ pub struct LumpedMass {
     /// diagonal blocks of an uncoupled line must clear it).
     pub current: bool,
     /// Whether the `fe` loads may leave the interior nodes' diagonal blocks unwritten (only
-    /// the ends' are formed): set by [`crate::system::System::rhs`], whose solve of an
-    /// uncoupled line reads the factored form, and cleared by every other assembly, whose
-    /// readers (the three-level scheme, generalized-α, the linearisation) read the blocks.
+    /// the ends' are formed): set by [`crate::system::System::rhs`] for its evaluation, whose
+    /// solve of an uncoupled line reads the factored form, and cleared by every other
+    /// assembly, whose readers (the three-level scheme, generalized-α, the linearisation)
+    /// read the blocks. A reader of the blocks after `rhs` calls
+    /// [`LineBlocks::form_lumped_diagonal`] first (generalized-α's start does).
     pub ends_only: bool,
 }
 
@@ -325,6 +327,17 @@ impl LineBlocks {
     /// Number of nodes N + 1.
     pub fn nodes(&self) -> usize {
         self.diag.len()
+    }
+
+    /// Forms every diagonal block from the factored lumped mass when it is current
+    /// ([`LumpedMass::current`]), for readers of the blocks after an evaluation that formed
+    /// only the ends' ([`LumpedMass::ends_only`]); otherwise does nothing.
+    pub fn form_lumped_diagonal(&mut self) {
+        if self.lumped.current {
+            for (i, d) in self.diag.iter_mut().enumerate() {
+                *d = self.lumped.block(i);
+            }
+        }
     }
 
     /// Zeroes the blocks (not the ends' kinds).
