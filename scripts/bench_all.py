@@ -94,11 +94,14 @@ def main():
     p.add_argument("--stiff-dtm", type=float, default=sc.MOORDYN_LARGEST_STABLE_DTM,
                    help="MoorDyn's dtM for the stiff-seabed chain [s] (default: its largest "
                    "stable step, `scripts/stiff_chain.py bisect`)")
-    p.add_argument("--skip-stiff", action="store_true",
-                   help="leave out the stiff-seabed chain (about 40 CPU-s per repeat)")
-    p.add_argument("--only", choices=["oc3"],
-                   help="run only this part (oc3: the OC3 deck against MoorDyn, parts 1-2)")
+    parts = ["oc3", "waves", "chain", "stiff", "best", "defaults", "sweep"]
+    p.add_argument("--only", default=",".join(parts),
+                   help="comma-separated parts to run (default: all): oc3 (1-2), waves (3), "
+                   "chain (4), stiff (5), best (6), defaults (7), sweep (8)")
     a = p.parse_args()
+    only = set(a.only.split(","))
+    if not only <= set(parts):
+        p.error(f"--only: unknown part(s) {sorted(only - set(parts))}; expected {parts}")
     from importlib.metadata import version
 
     tmp = tempfile.mkdtemp(prefix="bench-all-")
@@ -118,6 +121,24 @@ def main():
           f"{a.repeats} pairs; load average at start {os.getloadavg()[0]:.1f} on "
           f"{os.cpu_count()} cores")
 
+    if "oc3" in only:
+        oc3_same_step(a, md_deck, x0, surge, md_steps, nodes)
+    if "waves" in only:
+        waves(a)
+    if "chain" in only:
+        chain(a, tmp)
+    if "stiff" in only:
+        stiff(a, tmp)
+    if "best" in only:
+        best_steps(a, tmp, surge, src, x0)
+    if "defaults" in only:
+        fast_defaults(a, tmp)
+    if "sweep" in only:
+        sweep(a, tmp)
+
+
+def oc3_same_step(a, md_deck, x0, surge, md_steps, nodes):
+    """1-2. OC3 at the same step, and hawser at --hawser-dt against MoorDyn at 2 ms."""
     # 1-2. OC3 at the same step and at hawser's automatic step.
     same, auto, md = [], [], []
     for _ in range(a.repeats):
@@ -145,10 +166,10 @@ def main():
           f"second MoorDyn / hawser: {ratio_auto:.2f} (each code's step for 0.5 % accuracy is "
           "not searched here)")
 
-    if a.only == "oc3":
-        return
 
-    # 3. Waves.
+
+def waves(a):
+    """3. OC3 in a 200-component JONSWAP sea against still water."""
     runs = [hawser_bench(a.hawser, [OC3, "--waves", "still,jonswap:200:6:10", "--kinematics",
                                     "both", "--mass", "lumped", "--scheme", "rk4", "--dt",
                                     "0.002", "--duration", "4", "--repeat", str(a.repeats)])]
@@ -166,7 +187,10 @@ def main():
             line += f"  target <= 3x: [{'met' if ok else 'NOT met'}]"
         print(line)
 
-    # 4. The 1000 m chain.
+
+
+def chain(a, tmp):
+    """4. The 1000 m chain at 20 to 1280 segments."""
     print("\n1000 m chain (the OC3 chain, one line, anchor to a fairlead in the 2 m / 10 s "
           f"surge), automatic step, {a.chain_duration:g} s simulated, best of {a.repeats}")
     print(f"  {'segments':>8} {'dt [s]':>10} {'ns/node-step':>13} {'CPU s per simulated s':>22}")
@@ -190,18 +214,6 @@ def main():
         print(f"  {n:>8} {r['time_step']:>10.3e} {per_node_step * 1e9:>13.0f} "
               f"{r['cpu_s'] / r['duration']:>22.3e}")
 
-    # 5. The stiff-seabed chain.
-    if not a.skip_stiff:
-        stiff(a, tmp)
-
-    # 6. OC3 at each code's best step.
-    best_steps(a, tmp, surge, src, x0)
-
-    # 7. The fast defaults.
-    fast_defaults(a, tmp)
-
-    # 8. The sweep.
-    sweep(a, tmp)
 
 
 def stiff(a, tmp):
