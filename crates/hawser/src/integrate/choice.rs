@@ -3,9 +3,10 @@
 //!
 //! RK4 costs four evaluations of the forces per step and must step within its stability
 //! limit h_e (axial waves, seabed contact, damping: [`System::stable_step`]) whatever the
-//! motion. Generalized-α costs one evaluation and one block solve per Newton iteration, 1.25 to
-//! 1.29 per attempt measured at tolerance 1e-4, with the Jacobian reused (docs/implicit.md), and steps as far
-//! as the accuracy allows. Its step is not known before the run (the error estimate chooses it), so the rule
+//! motion. Generalized-α costs one evaluation and one block solve per Newton iteration (1.25
+//! to 1.29 per attempt measured at tolerance 1e-4, with the Jacobian reused; docs/implicit.md)
+//! and steps as far as the accuracy allows. Its step is not known before the run (the error
+//! estimate chooses it), so the rule
 //! estimates it from what the scenario shows of its time scales: the accuracy step
 //!
 //!   h_a = min(Δt_out, T_min / n(tol)),   n(tol) = 2π / (K · tol)^(1/3),
