@@ -6,8 +6,8 @@
 //! motion. Generalized-α costs one evaluation and one block solve per Newton iteration (1.25
 //! to 1.29 per attempt measured at tolerance 1e-4, with the Jacobian reused; docs/implicit.md)
 //! and steps as far as the accuracy allows. Its step is not known before the run (the error
-//! estimate chooses it), so the rule
-//! estimates it from what the scenario shows of its time scales: the accuracy step
+//! estimate chooses it), so the rule estimates it from what the scenario shows of its time
+//! scales: the accuracy step
 //!
 //!   h_a = min(Δt_out, T_min / n(tol)),   n(tol) = 2π / (K · tol)^(1/3),
 //!
@@ -30,15 +30,17 @@ use crate::system::System;
 /// The ratio of the accuracy step to RK4's stable step above which generalized-α is chosen
 /// [-]. A generalized-α step at tolerance 1e-6 costs 0.24 to 0.78 of an RK4 step on the
 /// bundled examples (Newton iterations with a block solve each, 1.25 to 1.29 per attempt
-/// measured at 1e-4, and the amortised Jacobian, against RK4's four evaluations), so the factor is a margin for the error of the
-/// a-priori step h_a, not the cost ratio (docs/implicit.md measures both).
+/// measured at 1e-4, and the amortised Jacobian, against RK4's four evaluations), so the
+/// factor is a margin for the error of the a-priori step h_a, not the cost ratio
+/// (docs/implicit.md measures both).
 pub const SPEEDUP: Real = 3.0;
 
 /// K of n(tol) = 2π / (K · tol)^(1/3), the steps per excitation period of adaptive
 /// generalized-α [-]: (ωh)³ = K · tol. Calibrated on examples/rao_crane.toml and
-/// examples/wave_buoy.toml, whose steps the wave excitation sets: the controller's mean step was 1/74
-/// and 1/54 of the shortest wave period at tolerance 1e-4, 1/327 and 1/220 at 1e-6 (ratios 4.4 and
-/// 4.1 against 100^(1/3) = 4.6); K = 11.5 gives 60 and 279 (docs/implicit.md).
+/// examples/wave_buoy.toml, whose steps the wave excitation sets: the controller's mean step
+/// was 1/74 and 1/54 of the shortest wave period at tolerance 1e-4, 1/327 and 1/220 at 1e-6
+/// (ratios 4.4 and 4.1 against 100^(1/3) = 4.6); K = 11.5 gives 1/60 and 1/279
+/// (docs/implicit.md).
 pub const ERROR_PER_TOLERANCE: Real = 11.5;
 
 /// The scheme a run uses and why.
