@@ -93,9 +93,13 @@ fn box_settles_flat_on_a_sloping_bed_and_creeps_at_the_friction_speed() {
     body.quadratic_drag = nalgebra::Vector6::new(2.0, 2.0, 4.0, 1.0, 1.0, 1.0);
     // The up-slope bottom corner (x = 1) is over the bed at −50 + 0.1: 5 cm above it.
     body.position = Vec3::new(0.0, 0.0, -50.0 + SLOPE + 0.5 * h + 0.05);
-    let mut session =
-        Session::with_options(model(vec![body], vec![], 10.0), SessionOptions::default())
-            .expect("the model runs");
+    // RK4, at its stable step, as these balances were set for. The default `auto` chooses
+    // generalized-α at tolerance 1e-6 here, whose state after 10 s is 1.3e-6 W off the force
+    // balance (0.049 N along the slope against W = 38 246 N): an open finding
+    // (docs/implicit.md), not a reason to widen the 1e-6.
+    let mut m = model(vec![body], vec![], 10.0);
+    m.settings.scheme = Scheme::Rk4;
+    let mut session = Session::with_options(m, SessionOptions::default()).expect("the model runs");
     session.run().expect("the run finishes");
     let view = session.view().expect("evaluates");
     let k = *view.body(0);

@@ -108,7 +108,7 @@ pub enum SchemeSpec {
     /// adaptive steps with `time_step = "auto"`, far above the explicit stability limit.
     GeneralizedAlpha,
     /// RK4 or generalized-α, whichever the rule of docs/implicit.md finds cheaper at the
-    /// `tolerance` asked (opt-in; the default is `rk4`).
+    /// `tolerance` asked (the default).
     Auto,
 }
 
@@ -164,7 +164,8 @@ pub struct SimulationSpec {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<f64>")]
     pub safety_factor: Option<Spanned<f64>>,
-    /// `"rk4"` (default), `"ssp-rk3"`, `"three-level"`, `"generalized-alpha"` or `"auto"`.
+    /// `"auto"` (default: RK4 or generalized-α, whichever is the cheaper at `tolerance`),
+    /// `"rk4"`, `"ssp-rk3"`, `"three-level"` or `"generalized-alpha"`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub scheme: Option<SchemeSpec>,
     /// ρ∞ of the generalized-α scheme [-], in [0, 1]: the amplitude factor per step of a mode
@@ -174,7 +175,7 @@ pub struct SimulationSpec {
     pub spectral_radius: Option<Spanned<f64>>,
     /// Accuracy asked [-]: the largest local error per step of the adaptive generalized-α
     /// step, in element tension relative to the line's reference tension; also what
-    /// `scheme = "auto"` chooses for. Default 1e-4.
+    /// `scheme = "auto"` chooses for. Default 1e-6.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<f64>")]
     pub tolerance: Option<Spanned<f64>>,

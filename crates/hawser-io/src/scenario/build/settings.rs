@@ -69,8 +69,7 @@ pub(super) fn build_settings(
     b: &mut Builder,
     spec: Option<&SimulationSpec>,
 ) -> (Settings, Option<Range<usize>>) {
-    // RK4 unless the scenario sets a scheme: `scheme = "auto"` is opt-in (docs/implicit.md
-    // says why it is not the default yet).
+    // `scheme = "auto"` unless the scenario sets one (docs/implicit.md).
     let mut s = Settings::default();
     let Some(sim) = spec else { return (s, None) };
     s.duration = b.num(
@@ -114,11 +113,11 @@ pub(super) fn build_settings(
         ));
     }
     s.scheme = match sim.scheme {
-        Some(SchemeSpec::Rk4) | None => Scheme::Rk4,
+        Some(SchemeSpec::Rk4) => Scheme::Rk4,
         Some(SchemeSpec::SspRk3) => Scheme::SspRk3,
         Some(SchemeSpec::ThreeLevel) => Scheme::ThreeLevel,
         Some(SchemeSpec::GeneralizedAlpha) => Scheme::GeneralizedAlpha,
-        Some(SchemeSpec::Auto) => Scheme::Auto,
+        Some(SchemeSpec::Auto) | None => Scheme::Auto,
     };
     s.spectral_radius = b.opt(
         &sim.spectral_radius,
@@ -139,7 +138,7 @@ pub(super) fn build_settings(
             ok: |x| x > 0.0 && x < 1.0,
             expected: "-, in (0, 1)",
         },
-        "the local tension error per step relative to the line's reference tension; 1e-4 is \
+        "the local tension error per step relative to the line's reference tension; 1e-6 is \
          the default",
     );
     s.step_above_limit = match sim.step_above_limit {
