@@ -5,7 +5,7 @@ use anyhow::{Context, Result};
 use clap::{Parser, Subcommand};
 use hawser::SimulationError;
 use hawser::math::Real;
-use hawser::model::{MassMatrix, Model, TimeStep};
+use hawser::model::{MassMatrix, Model, Scheme, TimeStep};
 use hawser::session::{Session, SessionOptions};
 use hawser::statics::StaticOptions;
 use hawser::system::{System, Workspace};
@@ -619,18 +619,32 @@ fn check(file: &Path, deck: &DeckArgs) -> Result<ExitCode> {
         Ok(Some(w)) => err!("warning: {w}"),
         Ok(None) => {}
     }
+    let choice = hawser::integrate::choose_scheme(&system, &model.settings);
+    let adaptive =
+        choice.scheme == Scheme::GeneralizedAlpha && model.settings.time_step == TimeStep::Auto;
+    let steps = (duration / step).ceil();
+    let plan = if adaptive {
+        // The accuracy step bounds the adaptive steps from above only: the response (slack,
+        // contact, friction) sets how many are taken.
+        format!(
+            "adaptive steps of at most {step:.4e} s ({sets}), at least {steps:.0} for {duration} s; \
+             the response sets how many (RK4's stable time step {limit:.4e} s, {culprit}, does \
+             not bind it)"
+        )
+    } else {
+        format!(
+            "stable time step {limit:.4e} s ({culprit}); {steps:.0} steps of at most {step:.4e} s \
+             for {duration} s"
+        )
+    };
     out!(
-        "{}: ok — {} line(s), {} point(s), {} nodes; stable time step {:.4e} s ({}); {:.0} \
-         steps of at most {:.4e} s for {} s",
+        "{}: ok — {} line(s), {} point(s), {} nodes; scheme {} ({}); {plan}",
         file.display(),
         system.lines.len(),
         system.points.len(),
         nodes,
-        limit,
-        culprit,
-        (duration / step).ceil(),
-        step,
-        duration
+        choice.scheme.name(),
+        choice.reason,
     );
     Ok(ExitCode::SUCCESS)
 }

@@ -1,4 +1,5 @@
 //! The command line under bad input and faults: steps with which a run cannot end are refused,
+//! `check` names the scheme a run takes,
 //! warnings reach the terminal and the result files, a closed standard error is no panic,
 //! `--duration` is honoured on scenarios and `--vessel-motion` refused there, a vessel-motion
 //! file's errors name the right base directory and quote nothing of a file that is no table,
@@ -84,6 +85,37 @@ fn a_step_with_which_the_run_cannot_end_is_refused() {
         assert_eq!(run.status.code(), Some(2), "{name}: {}", stderr(&run));
         assert!(!out_dir.exists(), "a refused run writes nothing");
     }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn check_names_the_scheme_and_does_not_promise_an_adaptive_run_a_step_count() {
+    // The default `auto` takes adaptive generalized-α on the README example: the accuracy step
+    // bounds its steps from above only, so `check` gives a lower bound, not RK4's count.
+    let out = hawser(&[
+        "check",
+        root()
+            .join("examples/catenary_mooring.toml")
+            .to_str()
+            .unwrap(),
+    ]);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    assert!(
+        stdout.contains("scheme generalized-alpha (the accuracy step"),
+        "{stdout}"
+    );
+    assert!(stdout.contains("adaptive steps of at most"), "{stdout}");
+    assert!(stdout.contains("the response sets how many"), "{stdout}");
+    let dir = temp_dir("scheme");
+    let file = catenary(&dir, "rk4.toml", &[RK4]);
+    let out = hawser(&["check", file.to_str().unwrap()]);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        stdout.contains("scheme rk4 (set by the scenario)"),
+        "{stdout}"
+    );
+    assert!(!stdout.contains("adaptive"), "{stdout}");
     let _ = std::fs::remove_dir_all(&dir);
 }
 
