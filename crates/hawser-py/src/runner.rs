@@ -16,6 +16,7 @@ use hawser::session::{Observer, ObserverError, RunEnd, Session, SessionOptions, 
 use hawser::system::System;
 use hawser_io::results::{RunSummary, RunWriter, SampleTimes, state_json};
 use hawser_io::scenario::{LoadedScenario, ScenarioError};
+use pyo3::exceptions::PyKeyboardInterrupt;
 use pyo3::prelude::*;
 use std::path::PathBuf;
 use std::sync::Arc;
@@ -312,23 +313,32 @@ pub fn drive(
                 Err(mpsc::RecvTimeoutError::Timeout) => false,
                 Err(mpsc::RecvTimeoutError::Disconnected) => true,
             };
-            if let Some(bar) = bar {
-                let done: Real = progress
-                    .iter()
-                    .map(|p| Real::from_bits(p.load(Ordering::Relaxed)))
-                    .sum();
-                if let Err(e) = bar.call_method1("update_to", (done,))
-                    && first_error.is_none()
-                {
-                    first_error = Some(e);
-                    stop.store(true, Ordering::Relaxed);
-                }
-            }
+            // Signals first: a Ctrl-C that came during the wait would otherwise be raised
+            // inside the progress bar's Python code below.
             if signal.is_none()
                 && let Err(e) = py.check_signals()
             {
                 stop.store(true, Ordering::Relaxed);
                 signal = Some(e);
+            }
+            if let Some(bar) = bar {
+                let done: Real = progress
+                    .iter()
+                    .map(|p| Real::from_bits(p.load(Ordering::Relaxed)))
+                    .sum();
+                if let Err(e) = bar.call_method1("update_to", (done,)) {
+                    // A Ctrl-C that came while the bar's code ran is raised there: it is the
+                    // signal, with the runs' results, not an error of the bar.
+                    let slot = if e.is_instance_of::<PyKeyboardInterrupt>(py) {
+                        &mut signal
+                    } else {
+                        &mut first_error
+                    };
+                    if slot.is_none() {
+                        *slot = Some(e);
+                        stop.store(true, Ordering::Relaxed);
+                    }
+                }
             }
             if finished {
                 break;

@@ -33,30 +33,62 @@ def test_dict_round_trip_and_overrides():
     assert np_amp.to_dict()["points"][1]["motion"]["amplitude"] == [1.0, 0.0, 0.0]
 
 
-def test_ctrl_c_stops_a_run_and_keeps_its_results(tmp_path, monkeypatch):
-    # The signal comes at the progress bar's first update after the run has stepped, so it
-    # finds the run stepping on any machine (with a 2 s timer instead, one run on a loaded
-    # machine went to its end without seeing the signal; the cause was not found).
-    import hawser._progress as progress
+@pytest.fixture
+def ctrl_c():
+    """Python's own Ctrl-C handler for the test (a process started in the background by a
+    non-interactive shell inherits SIGINT ignored, and Python then installs no handler)."""
+    previous = signal.signal(signal.SIGINT, signal.default_int_handler)
+    yield
+    signal.signal(signal.SIGINT, previous)
 
-    class SignalOnceStepping:
-        sent = False
 
-        def update_to(self, done):
-            if done > 0.0 and not self.sent:
-                self.sent = True
+class _Bar:
+    """A progress bar that notes when the run has stepped, and can send Ctrl-C itself."""
+
+    def __init__(self, send_inside):
+        self.stepping = threading.Event()
+        self.send_inside = send_inside
+
+    def update_to(self, done):
+        if done > 0.0 and not self.stepping.is_set():
+            self.stepping.set()
+            if self.send_inside:
                 os.kill(os.getpid(), signal.SIGINT)
 
-        def close(self):
-            pass
+    def close(self):
+        pass
 
-    monkeypatch.setattr(progress, "make_bar", lambda total, desc: SignalOnceStepping())
+
+@pytest.mark.parametrize("inside_the_bar", [False, True])
+def test_ctrl_c_stops_a_run_and_keeps_its_results(tmp_path, monkeypatch, ctrl_c,
+                                                   inside_the_bar):
+    # Ctrl-C once the run is stepping: from another thread (as from the terminal), or while
+    # the progress bar's Python code runs, where Python raises it inside the bar.
+    import hawser._progress as progress
+
+    bar = _Bar(inside_the_bar)
+    monkeypatch.setattr(progress, "make_bar", lambda total, desc: bar)
+    cancelled = threading.Event()
+
+    def send():
+        if bar.stepping.wait(60) and not cancelled.is_set():
+            os.kill(os.getpid(), signal.SIGINT)
+
+    sender = threading.Thread(target=send)
+    if not inside_the_bar:
+        sender.start()
     sc = hawser.load(EXAMPLES / "catenary_mooring.toml")
-    with pytest.raises(KeyboardInterrupt) as info:
-        sc.run(duration=600.0, out=tmp_path / "run", progress=True)
+    try:
+        with pytest.raises(KeyboardInterrupt) as info:
+            sc.run(duration=6000.0, out=tmp_path / "run", progress=True)
+    finally:
+        cancelled.set()
+        bar.stepping.set()
+        if sender.is_alive():
+            sender.join()
     res = info.value.results
     assert res.interrupted and not res.complete
-    assert 0 < res.end_time < 600.0
+    assert 0 < res.end_time < 6000.0
     status = json.loads((tmp_path / "run" / "status.json").read_text())
     assert status["state"] == "interrupted"
     rows = (tmp_path / "run" / "timeseries.csv").read_text().splitlines()
