@@ -627,9 +627,8 @@ fn check(file: &Path, deck: &DeckArgs) -> Result<ExitCode> {
         // The accuracy step bounds the adaptive steps from above only: the response (slack,
         // contact, friction) sets how many are taken.
         format!(
-            "adaptive steps of at most {step:.4e} s ({sets}), at least {steps:.0} for {duration} s; \
-             the response sets how many (RK4's stable time step {limit:.4e} s, {culprit}, does \
-             not bind it)"
+            "adaptive steps of at most {step:.4e} s, at least {steps:.0} for {duration} s; the \
+             response sets how many (RK4's stable time step would be {limit:.4e} s)"
         )
     } else {
         format!(

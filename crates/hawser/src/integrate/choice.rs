@@ -91,9 +91,9 @@ pub fn choose_scheme(system: &System, settings: &Settings) -> SchemeChoice {
         given(
             Scheme::GeneralizedAlpha,
             format!(
-                "the accuracy step {accuracy:.3e} s ({what}) is {:.0}× RK4's stable step \
+                "the accuracy step {accuracy:.3e} s ({what}) is {} RK4's stable step \
                  {explicit:.3e} s (set by {culprit})",
-                accuracy / explicit
+                times(accuracy / explicit)
             ),
         )
     } else {
@@ -104,6 +104,15 @@ pub fn choose_scheme(system: &System, settings: &Settings) -> SchemeChoice {
                  accuracy step {accuracy:.3e} s ({what})"
             ),
         )
+    }
+}
+
+/// A ratio as "130×", or "7.95e302×" when it has more than four digits.
+fn times(ratio: Real) -> String {
+    if ratio < 1e4 {
+        format!("{ratio:.0}×")
+    } else {
+        format!("{ratio:.2e}×")
     }
 }
 
