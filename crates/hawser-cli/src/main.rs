@@ -628,7 +628,7 @@ fn check(file: &Path, deck: &DeckArgs) -> Result<ExitCode> {
         // contact, friction) sets how many are taken.
         format!(
             "adaptive steps of at most {step:.4e} s, at least {steps:.0} for {duration} s; the \
-             response sets how many (RK4's stable time step would be {limit:.4e} s)"
+             response sets how many (RK4's stable time step {limit:.4e} s)"
         )
     } else {
         format!(

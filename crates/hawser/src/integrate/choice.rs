@@ -91,7 +91,7 @@ pub fn choose_scheme(system: &System, settings: &Settings) -> SchemeChoice {
         given(
             Scheme::GeneralizedAlpha,
             format!(
-                "the accuracy step {accuracy:.3e} s ({what}) is {} RK4's stable step \
+                "the accuracy step {accuracy:.3e} s ({what}) is {} RK4's automatic step \
                  {explicit:.3e} s (set by {culprit})",
                 times(accuracy / explicit)
             ),
@@ -100,7 +100,7 @@ pub fn choose_scheme(system: &System, settings: &Settings) -> SchemeChoice {
         given(
             Scheme::Rk4,
             format!(
-                "RK4's stable step {explicit:.3e} s (set by {culprit}) is within {SPEEDUP}× the \
+                "RK4's automatic step {explicit:.3e} s (set by {culprit}) is within {SPEEDUP}× the \
                  accuracy step {accuracy:.3e} s ({what})"
             ),
         )
