@@ -1095,7 +1095,11 @@ impl GeneralizedAlpha {
             last = norm;
         }
         if !converged {
-            self.refresh = true;
+            // A Jacobian formed in this attempt (at an iterate of this step, from the same
+            // state) serves the shorter retry, whose iterates lie closer; the retry forms one
+            // of its own when its iterations diverge on it or contract too slowly (as RADAU5
+            // after a Newton failure: Hairer and Wanner's radau5.f, label 78).
+            self.refresh = !fresh;
             if adaptive {
                 self.statistics.rejected += 1;
                 return Ok(Attempt::Rejected {
