@@ -159,6 +159,14 @@ pub const MAX_ITERATIONS: usize = 12;
 /// Largest growth and shrinking of the adaptive step from one step to the next [-].
 const GROWTH: (Real, Real) = (0.2, 2.0);
 
+/// The step after Newton iterations that failed, relative to the failed one [-]: halved, as
+/// RADAU5 does (Hairer and Wanner, Solving ODEs II §IV.8; radau5.f, label 78). The failures
+/// are nonlinearity (a seabed contact switching on within the step), not an error estimate
+/// to scale by the order; on OC3 at tolerance 1e-3 (docs/implicit.md) a retry at a fifth of
+/// the step was mostly accepted at 0.01–0.13 of the tolerance, and the controller then took
+/// several steps to grow back.
+pub const NEWTON_RETRY: Real = 0.5;
+
 /// The adaptive step grows only when the controller asks for this factor or more [-].
 pub const HYSTERESIS: Real = 1.25;
 
@@ -969,8 +977,12 @@ impl GeneralizedAlpha {
     }
 
     /// The step [s] to try again after a step of h [s] refused with normalised error `error`
-    /// [-] (infinite: the Newton iterations failed): h · clamp(0.9 E^(−1/3), 0.2, 0.9).
+    /// [-]: h · clamp(0.9 E^(−1/3), 0.2, 0.9) (0.2 h for a NaN estimate), or
+    /// h · [`NEWTON_RETRY`] when the Newton iterations failed (`error` infinite).
     pub fn retry_step(&self, h: Real, error: Real) -> Real {
+        if error == Real::INFINITY {
+            return h * NEWTON_RETRY;
+        }
         let factor = if error.is_finite() {
             0.9 * error.powf(-1.0 / 3.0)
         } else {
@@ -1083,7 +1095,11 @@ impl GeneralizedAlpha {
             last = norm;
         }
         if !converged {
-            self.refresh = true;
+            // A Jacobian formed in this attempt (at an iterate of this step, from the same
+            // state) serves the shorter retry, whose iterates lie closer; the retry forms one
+            // of its own when its iterations diverge on it or contract too slowly (as RADAU5
+            // after a Newton failure: Hairer and Wanner's radau5.f, label 78).
+            self.refresh = !fresh;
             if adaptive {
                 self.statistics.rejected += 1;
                 return Ok(Attempt::Rejected {
