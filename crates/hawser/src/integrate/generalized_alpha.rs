@@ -423,6 +423,13 @@ impl GeneralizedAlpha {
         &self.params
     }
 
+    /// The accelerations q̈ [m/s², rad/s²] of the last accepted step, in the layout of the
+    /// state (each at its velocity's place): they satisfy M q̈ = F at the step's end to the
+    /// Newton tolerance ([`System::rhs_with_accelerations`] reads them).
+    pub fn accelerations(&self) -> &[Real] {
+        &self.acceleration
+    }
+
     /// Force evaluations of a Newton iteration.
     pub fn evaluations(&self) -> usize {
         1

@@ -130,6 +130,10 @@ pub struct Stepper {
     pub(crate) interrupt: Option<Arc<AtomicBool>>,
     /// Steps done when the workspace was last evaluated (`None`: never).
     evaluated_at: Option<u64>,
+    /// Steps done when generalized-α last accepted a step whose accelerations still belong to
+    /// the state (`None`: none, or the state or its inputs changed since): an evaluation there
+    /// takes them instead of solving the mass system ([`System::rhs_with_accelerations`]).
+    accelerations_at: Option<u64>,
     /// The scheme the run uses and why.
     scheme: SchemeChoice,
     /// Whether the next adaptive step was planned by [`Stepper::advance`].
@@ -267,6 +271,7 @@ impl Stepper {
             last_good: (initial.clone(), Clock::default()),
             interrupt: None,
             evaluated_at: None,
+            accelerations_at: None,
             state: initial,
             clock: Clock {
                 step,
@@ -385,6 +390,7 @@ impl Stepper {
         self.state.copy_from_slice(&saved.state);
         self.clock = saved.clock;
         self.evaluated_at = None;
+        self.accelerations_at = None;
         if saved.releases.len() == self.releases.len() {
             self.releases.copy_from_slice(&saved.releases);
         }
@@ -393,6 +399,7 @@ impl Stepper {
     /// Marks the workspace stale (the inputs of the next evaluation changed).
     pub(crate) fn invalidate(&mut self) {
         self.evaluated_at = None;
+        self.accelerations_at = None;
     }
 
     /// Goes back to a saved point of this run (or of a run of the same model); false when the
@@ -403,6 +410,7 @@ impl Stepper {
         self.state.copy_from_slice(&saved.state);
         self.clock = saved.clock;
         self.evaluated_at = None;
+        self.accelerations_at = None;
         if saved.releases.len() != self.releases.len() {
             return false;
         }
@@ -415,7 +423,14 @@ impl Stepper {
                 scheme.set_history(&saved.history, saved.last_step);
                 true
             }
-            Integrator::GeneralizedAlpha { scheme, .. } => scheme.set_history(&saved.history),
+            Integrator::GeneralizedAlpha { scheme, .. } => {
+                // The saved accelerations are those of the saved step, as in the saved run.
+                let fits = scheme.set_history(&saved.history);
+                if fits && !saved.history.is_empty() {
+                    self.accelerations_at = Some(self.clock.steps_done);
+                }
+                fits
+            }
             Integrator::Rk(_) => saved.history.is_empty(),
         }
     }
@@ -508,8 +523,11 @@ impl Stepper {
             self.state.copy_from_slice(&self.last_good.0);
             self.clock = self.last_good.1;
             self.evaluated_at = None;
+            self.accelerations_at = None;
             return Err(e);
         }
+        self.accelerations_at = matches!(self.integrator, Integrator::GeneralizedAlpha { .. })
+            .then_some(self.clock.steps_done);
         system.hold_pins(self.clock.time(), &mut self.state, &self.ws);
         Ok(())
     }
@@ -707,9 +725,26 @@ impl Stepper {
     fn evaluate_anew(&mut self, system: &System) -> Result<(), SimulationError> {
         let t = self.clock.time();
         self.evaluated_at = None;
-        system
-            .rhs(t, &self.state, &mut self.derivative, &mut self.ws)
-            .map_err(|loc| divergence(self.stable_step.0, t, loc, failed_solve(&self.ws)))?;
+        // After a generalized-α step, its accelerations where they are all a solve would give.
+        let given = match &self.integrator {
+            Integrator::GeneralizedAlpha { scheme, .. }
+                if self.accelerations_at == Some(self.clock.steps_done) =>
+            {
+                system.rhs_with_accelerations(
+                    t,
+                    &self.state,
+                    scheme.accelerations(),
+                    &mut self.derivative,
+                    &mut self.ws,
+                )
+            }
+            _ => false,
+        };
+        if !given {
+            system
+                .rhs(t, &self.state, &mut self.derivative, &mut self.ws)
+                .map_err(|loc| divergence(self.stable_step.0, t, loc, failed_solve(&self.ws)))?;
+        }
         // Runaway strain: more than 100 % is no cable.
         for (li, lw) in self.ws.lines.iter().enumerate() {
             if let Some(e) = lw.elements.strain.iter().position(|&s| !(s < 1.0)) {

@@ -2,6 +2,7 @@
 //! mass blocks, the coupled solve, and dy/dt.
 
 use super::*;
+use crate::linalg::EndKind;
 use crate::math::{Mat3, Real, Vec3, get3, set3};
 use crate::model::PointKind;
 use crate::physics::environment::Environment;
@@ -349,6 +350,61 @@ impl System {
             }
         }
         Ok(())
+    }
+
+    /// [`System::rhs`] with the line nodes' accelerations given instead of solved for: the
+    /// loads, tensions and mass blocks are evaluated at (t, y) as by `rhs`, the interior
+    /// nodes take their accelerations from `accelerations` (a vector in the layout of the
+    /// state, each acceleration at its velocity's place), and the end forces
+    /// F_end − (M_ee a_e + M_en a_n) read them ([`SystemLine::end_force`]). For an implicit
+    /// scheme's converged step, whose accelerations satisfy M q̈ = F at (t, y) to its Newton
+    /// tolerance: the mass solve of `rhs` is skipped. Returns false, having done nothing,
+    /// unless every line is an `fe` line without a winch whose two ends are known (fixed,
+    /// prescribed or coupled points) and there are no free points or bodies: the cases where
+    /// the interior accelerations are all the solve gives.
+    pub fn rhs_with_accelerations(
+        &self,
+        t: Real,
+        y: &[Real],
+        accelerations: &[Real],
+        dydt: &mut [Real],
+        ws: &mut Workspace,
+    ) -> bool {
+        let known_ends = self.free_points.is_empty()
+            && self.free_bodies.is_empty()
+            && self.point_slot.iter().all(Option::is_none)
+            && self.lines.iter().enumerate().all(|(li, l)| {
+                matches!(l.discretisation, Discretisation::Fe { .. })
+                    && ws.winches[li].is_none()
+                    && ws.blocks[li].end_a == EndKind::Known
+                    && ws.blocks[li].end_b == EndKind::Known
+            });
+        if !known_ends {
+            return false;
+        }
+        self.prepare_wave_tables(t, ws);
+        self.point_kinematics(t, y, ws);
+        // As in `rhs`: a lumped line's interior blocks stay in their factored form.
+        ws.blocks.iter_mut().for_each(|b| b.lumped.ends_only = true);
+        self.assemble_loads(t, y, Some(&mut *dydt), ws);
+        ws.blocks
+            .iter_mut()
+            .for_each(|b| b.lumped.ends_only = false);
+        for (li, l) in self.lines.iter().enumerate() {
+            let (o, m) = (self.layout.line_offset[li], self.layout.line_interior[li]);
+            // x holds the ends' known accelerations (assemble_loads put them there) and the
+            // interior forces, which the given accelerations replace.
+            let x = &mut ws.blocks[li].x;
+            for (i, a) in x[1..=m].iter_mut().enumerate() {
+                *a = get3(&accelerations[o + 3 * m + 3 * i..], 0);
+            }
+            l.write_rate(
+                &ws.lines[li],
+                &ws.blocks[li],
+                &mut dydt[self.layout.line_range(li)],
+            );
+        }
+        true
     }
 
     /// The equations of motion at (t, y), assembled but not solved: point kinematics (free
