@@ -281,3 +281,60 @@ fn a_dg_line_is_refused_naming_the_line() {
     assert_eq!(sim.scheme().scheme, Scheme::Rk4);
     assert!(sim.scheme().reason.contains(&model.lines[0].name));
 }
+
+/// The evaluation after an accepted generalized-α step takes the step's accelerations
+/// instead of solving the mass system again (`System::rhs_with_accelerations`). Fed the
+/// accelerations the solve gives, it must reproduce `System::rhs` bit for bit (the rates and
+/// both end forces, which read the interior accelerations through M_en a_n), with consistent
+/// and lumped mass, on the OC3 chain moving on its seabed in water; and it must decline a
+/// line with an end on a free point, whose acceleration only the coupled solve gives.
+#[test]
+fn given_accelerations_reproduce_the_solved_evaluation() {
+    for mass in [MassMatrix::Consistent, MassMatrix::Lumped] {
+        let mut model = oc3_chain(20, Vec3::new(5.2, 0.0, -70.0));
+        model.lines[0].mass_matrix = mass;
+        let system = System::new(&model).unwrap();
+        let mut y = system.straight_state();
+        // Moving nodes: drag, seabed damping and axial damping all act.
+        for node in 1..20 {
+            let (r, _) = node_state(&system, &y, 0, node);
+            let s = node as Real;
+            let v = Vec3::new(0.3 * s.sin(), 0.1 * (0.5 * s).cos(), -0.2 * (0.7 * s).sin());
+            set_node_state(&system, &mut y, 0, node, r, v);
+        }
+        let t = 1.25;
+        let (mut solved, mut given) = (system.workspace(), system.workspace());
+        let mut rate = vec![0.0; y.len()];
+        system.rhs(t, &y, &mut rate, &mut solved).unwrap();
+        let mut rate_given = vec![0.0; y.len()];
+        assert!(system.rhs_with_accelerations(t, &y, &rate, &mut rate_given, &mut given));
+        assert!(
+            rate.iter()
+                .zip(&rate_given)
+                .all(|(a, b)| a.to_bits() == b.to_bits()),
+            "{mass:?}: rates differ"
+        );
+        for end_b in [false, true] {
+            let (a, b) = (
+                system.end_force(&solved, 0, end_b),
+                system.end_force(&given, 0, end_b),
+            );
+            assert!(
+                a.iter()
+                    .zip(b.iter())
+                    .all(|(x, z)| x.to_bits() == z.to_bits()),
+                "{mass:?}, end_b {end_b}: {a:?} against {b:?}"
+            );
+            assert!(
+                a.norm() > 1e3,
+                "{mass:?}: the chain hangs with some tension: {a:?}"
+            );
+        }
+    }
+    let (system, y) = pendulum();
+    let mut ws = system.workspace();
+    let mut rate = vec![0.0; y.len()];
+    system.rhs(0.0, &y, &mut rate, &mut ws).unwrap();
+    let mut again = rate.clone();
+    assert!(!system.rhs_with_accelerations(0.0, &y, &rate, &mut again, &mut ws));
+}
