@@ -307,14 +307,7 @@ impl System {
         dydt: &mut [Real],
         ws: &mut Workspace,
     ) -> Result<(), Location> {
-        self.prepare_wave_tables(t, ws);
-        self.point_kinematics(t, y, ws);
-        // The solve below reads a lumped line's interior mass in its factored form only.
-        ws.blocks.iter_mut().for_each(|b| b.lumped.ends_only = true);
-        self.assemble_loads(t, y, Some(&mut *dydt), ws);
-        ws.blocks
-            .iter_mut()
-            .for_each(|b| b.lumped.ends_only = false);
+        self.assemble_for_rates(t, y, dydt, ws);
         ws.coupled
             .solve(&mut ws.blocks)
             .map_err(|s| self.singular_location(s))?;
@@ -382,14 +375,7 @@ impl System {
         if !known_ends {
             return false;
         }
-        self.prepare_wave_tables(t, ws);
-        self.point_kinematics(t, y, ws);
-        // As in `rhs`: a lumped line's interior blocks stay in their factored form.
-        ws.blocks.iter_mut().for_each(|b| b.lumped.ends_only = true);
-        self.assemble_loads(t, y, Some(&mut *dydt), ws);
-        ws.blocks
-            .iter_mut()
-            .for_each(|b| b.lumped.ends_only = false);
+        self.assemble_for_rates(t, y, dydt, ws);
         for (li, l) in self.lines.iter().enumerate() {
             let (o, m) = (self.layout.line_offset[li], self.layout.line_interior[li]);
             // x holds the ends' known accelerations (assemble_loads put them there) and the
@@ -405,6 +391,20 @@ impl System {
             );
         }
         true
+    }
+
+    /// What [`System::rhs`] and [`System::rhs_with_accelerations`] assemble before the
+    /// accelerations: wave tables, point kinematics and loads at (t, y), `dg` lines writing
+    /// their rate into `dydt`; a lumped line's interior mass stays in its factored form (the
+    /// solve reads only that; the given accelerations need only the ends' blocks).
+    fn assemble_for_rates(&self, t: Real, y: &[Real], dydt: &mut [Real], ws: &mut Workspace) {
+        self.prepare_wave_tables(t, ws);
+        self.point_kinematics(t, y, ws);
+        ws.blocks.iter_mut().for_each(|b| b.lumped.ends_only = true);
+        self.assemble_loads(t, y, Some(dydt), ws);
+        ws.blocks
+            .iter_mut()
+            .for_each(|b| b.lumped.ends_only = false);
     }
 
     /// The equations of motion at (t, y), assembled but not solved: point kinematics (free
