@@ -354,6 +354,13 @@ fn lanes(f: impl Fn(usize) -> Real) -> [Real; 2] {
     [f(0), f(1)]
 }
 
+/// The index of the fluid at height z [m] in [`SectionConstants`]' pairs: 0 in water (z < 0),
+/// 1 in air.
+#[inline(always)]
+fn fluid(z: Real) -> usize {
+    usize::from(!(z < 0.0))
+}
+
 /// Adds element e's consistent mass blocks [kg] into `b` (see [`line_forces`]).
 #[inline(always)]
 fn add_element_mass(
@@ -364,7 +371,6 @@ fn add_element_mass(
     za: Real,
     zb: Real,
 ) {
-    let fluid = |z: Real| usize::from(!(z < 0.0));
     let l0 = k.element_length;
     if (za < 0.0) == (zb < 0.0) {
         // Uniform density: exact shape-function integrals, ∫NaNa = ∫NbNb = 1/3 and
@@ -394,7 +400,6 @@ fn add_element_mass(
 /// uniform density; crossing the surface, each Gauss point takes its own density.
 #[inline(always)]
 fn lumped_element_mass(k: &SectionConstants, za: Real, zb: Real) -> ([Real; 2], [Real; 2]) {
-    let fluid = |z: Real| usize::from(!(z < 0.0));
     if (za < 0.0) == (zb < 0.0) {
         let (alpha, beta) = k.added_mass[fluid(za)];
         let c = (k.mass_per_length + alpha) * k.half_length;

@@ -563,18 +563,19 @@ impl GeneralizedAlpha {
             }
             self.weights_ready = false;
         }
+        // `rhs` formed only the ends' blocks of a lumped line; the Jacobian reads them all.
+        ws.blocks
+            .iter_mut()
+            .for_each(crate::linalg::LineBlocks::form_lumped_diagonal);
         self.form_jacobian(system, ws, t, y);
         self.started = true;
         Ok(())
     }
 
-    /// Forms the Jacobian's ingredients at (t, y), where `ws` holds [`System::assemble`]'s
-    /// or [`System::rhs`]'s evaluation (the mass blocks; after `rhs` a lumped line's interior
-    /// blocks are formed here from their factored form).
+    /// Forms the Jacobian's ingredients at (t, y), where `ws` holds an evaluation with every
+    /// mass block formed ([`System::assemble`]'s; [`GeneralizedAlpha::start`] forms a lumped
+    /// line's interior blocks after [`System::rhs`]).
     fn form_jacobian(&mut self, system: &System, ws: &mut Workspace, t: Real, y: &[Real]) {
-        ws.blocks
-            .iter_mut()
-            .for_each(crate::linalg::LineBlocks::form_lumped_diagonal);
         let j = &mut self.jacobian;
         for (li, b) in ws.blocks.iter().enumerate() {
             for (m, x) in j.line_mass[li].iter_mut().zip(b.blocks()) {

@@ -70,7 +70,7 @@ pub struct LineBlocks {
 /// c_i the structural mass and the isotropic added mass ρ A C_an of its share of its two
 /// elements, t₁ and t₂ the unit tangents of elements i − 1 and i, and b₁, b₂ the node's share of
 /// their anisotropic added mass ρ A (C_at − C_an) (position-vector paper eqs. 12, 17–18,
-/// lumped). [`LumpedMass::solve`] solves M_i x = f from these scalars in about 50 flops
+/// lumped). [`LumpedMass::solve_interior`] solves M_i x = f from these scalars in about 50 flops
 /// instead of assembling the 3×3 block and solving it by Cramer's rule.
 #[derive(Clone, Debug, Default)]
 pub struct LumpedMass {
@@ -88,7 +88,9 @@ pub struct LumpedMass {
     pub current: bool,
     /// Whether the `fe` loads may leave the interior nodes' diagonal blocks unwritten (only
     /// the ends' are formed): set by [`crate::system::System::rhs`] for its evaluation, whose
-    /// solve of an uncoupled line reads the factored form, and cleared by every other
+    /// solve of an uncoupled line reads the factored form (and by
+    /// [`crate::system::System::rhs_with_accelerations`], whose end forces read only the
+    /// ends' blocks), and cleared by every other
     /// assembly, whose readers (the three-level scheme, generalized-α, the linearisation)
     /// read the blocks. A reader of the blocks after `rhs` calls
     /// [`LineBlocks::form_lumped_diagonal`] first (generalized-α's start does).
@@ -121,19 +123,21 @@ impl LumpedMass {
         m
     }
 
-    /// Solves M_i x = f for an interior node i (0 < i < N): x [m/s²] for f [N], `None` when
-    /// M_i is singular relative to its diagonal (the test of [`crate::math::solve3`]).
+    /// Solves M_i x_i = f_i in place for the interior nodes i = 1 … N − 1 of a line of N + 1
+    /// nodes: `x` holds f [N] for those nodes and receives x [m/s²]. Err(i) for the first
+    /// node whose block is singular relative to its diagonal (the test of
+    /// [`crate::math::solve3`]).
     #[inline]
-    pub fn solve(&self, i: usize, f: &Vec3) -> Option<Vec3> {
-        let (t1, t2) = (&self.tangent[i - 1], &self.tangent[i]);
-        solve_two_rank_one(
-            self.isotropic[i],
-            self.rank_one[i - 1][1],
-            t1,
-            self.rank_one[i][0],
-            t2,
-            f,
-        )
+    pub fn solve_interior(&self, x: &mut [Vec3]) -> Result<(), usize> {
+        let n = x.len() + 1;
+        let nodes = x
+            .iter_mut()
+            .zip(&self.isotropic[1..n])
+            .zip(self.tangent.windows(2).zip(self.rank_one.windows(2)));
+        for (i, ((x, &c), (t, b))) in nodes.enumerate() {
+            *x = solve_two_rank_one(c, b[0][1], &t[0], b[1][0], &t[1], x).ok_or(i + 1)?;
+        }
+        Ok(())
     }
 }
 
@@ -719,19 +723,9 @@ impl CoupledSystem {
                         line.factor.solve_blocks(interior, &mut line.response_b);
                     }
                 } else if line.lumped.current {
-                    let m = &line.lumped;
-                    let nodes = line.x[1..n]
-                        .iter_mut()
-                        .zip(&m.isotropic[1..n])
-                        .zip(m.tangent.windows(2).zip(m.rank_one.windows(2)));
-                    for (i, ((x, &c), (t, b))) in nodes.enumerate() {
-                        *x = solve_two_rank_one(c, b[0][1], &t[0], b[1][0], &t[1], x).ok_or(
-                            Singular::Line {
-                                line: li,
-                                node: i + 1,
-                            },
-                        )?;
-                    }
+                    line.lumped
+                        .solve_interior(&mut line.x[1..n])
+                        .map_err(|node| Singular::Line { line: li, node })?;
                 } else {
                     for i in 1..n {
                         line.x[i] = crate::math::solve3(&line.diag[i], &line.x[i])
@@ -900,7 +894,9 @@ mod tests {
             m.tangent = vec![t1, t2];
             m.rank_one = vec![[0.3, beta], [0.8 * beta, 0.2]];
             let f = Vec3::new(1.0, -2.0 + 0.03 * k as Real, 0.5);
-            let x = m.solve(1, &f).unwrap();
+            let mut x = [f];
+            m.solve_interior(&mut x).unwrap();
+            let x = x[0];
             let reference = crate::math::solve3(&m.block(1), &f).unwrap();
             worst = worst.max((x - reference).norm() / reference.norm());
             assert!((m.block(1) * x - f).norm() < 1e-13 * f.norm());
@@ -908,7 +904,7 @@ mod tests {
         assert!(worst < 1e-12, "{worst}");
         // A singular block (no isotropic mass) is reported, not divided by.
         m.isotropic[1] = 0.0;
-        assert!(m.solve(1, &Vec3::x()).is_none());
+        assert_eq!(m.solve_interior(&mut [Vec3::x()]), Err(1));
     }
 
     /// Two lines sharing a free point, one end fixed each, compared with a dense solve.
