@@ -103,6 +103,50 @@ pub fn solve3(m: &Mat3, b: &Vec3) -> Option<Vec3> {
     ))
 }
 
+/// Whether the loops written lane by lane run their AVX2 version ([`wide_simd_fn`]): the
+/// processor has AVX2 and the environment variable `HAWSER_SIMD` is not `baseline` (read
+/// once per process; `HAWSER_SIMD=baseline` runs the SSE2 version, to check that a result
+/// does not depend on the instruction set).
+#[cfg(target_arch = "x86_64")]
+pub fn wide_simd() -> bool {
+    static WIDE: std::sync::LazyLock<bool> = std::sync::LazyLock::new(|| {
+        std::arch::is_x86_feature_detected!("avx2")
+            && std::env::var_os("HAWSER_SIMD").is_none_or(|v| v != "baseline")
+    });
+    *WIDE
+}
+
+/// Defines a function whose body is compiled twice, for AVX2 and for the target's baseline
+/// (SSE2 on x86-64), and runs the AVX2 version when [`wide_simd`]. For the hot loops
+/// written lane by lane (the `fe` element batches), whose lanes the compiler packs four to a
+/// register with AVX2 and two without. AVX2 brings wider registers, not other arithmetic (no
+/// fused multiply-add is formed), so both versions give the same bits (a test runs both);
+/// one binary runs on any x86-64 processor at the speed of the one it runs on.
+///
+/// The body must not name generic parameters (it is compiled into two inner functions).
+macro_rules! wide_simd_fn {
+    ($(#[$m:meta])* $vis:vis fn $name:ident($($arg:ident: $ty:ty),* $(,)?) $(-> $ret:ty)? $body:block) => {
+        $(#[$m])*
+        $vis fn $name($($arg: $ty),*) $(-> $ret)? {
+            #[cfg(target_arch = "x86_64")]
+            #[target_feature(enable = "avx2")]
+            #[allow(clippy::too_many_arguments)]
+            fn avx2($($arg: $ty),*) $(-> $ret)? $body
+            #[inline(always)]
+            #[allow(clippy::too_many_arguments)]
+            fn baseline($($arg: $ty),*) $(-> $ret)? $body
+            #[cfg(target_arch = "x86_64")]
+            if $crate::math::wide_simd() {
+                // SAFETY: the processor has AVX2 (`wide_simd`), the one feature `avx2` is
+                // compiled for.
+                return unsafe { avx2($($arg),*) };
+            }
+            baseline($($arg),*)
+        }
+    };
+}
+pub(crate) use wide_simd_fn;
+
 #[cfg(test)]
 mod tests {
     #[test]

@@ -21,26 +21,64 @@ use crate::math::{Mat3, Real, Vec3};
 use crate::model::MassMatrix;
 use crate::physics::environment::Environment;
 use crate::physics::hydrodynamics::{DragModel, added_mass_of, drag_force_with_factor};
+use crate::physics::material::AxialStiffness;
 use crate::physics::obstacles::{LineBall, Obstacle};
 
 /// Gauss points on [0, 1] for two-point quadrature (weight ½ each).
 const GAUSS: [Real; 2] = [0.5 - 0.288_675_134_594_812_9, 0.5 + 0.288_675_134_594_812_9];
 
-/// Evaluates the nodal forces [N] of an `fe` line at positions `r` [m] and velocities `v`
-/// [m/s] (nodes 0..=N, ends included) and, if asked, its mass blocks [kg] into `blocks`.
-///
-/// `forces[i]` is the total force the line's physics puts on node i: tension, weight,
-/// buoyancy, drag, fluid inertia, seabed and obstacle contact. End forces on attachments
-/// follow from it.
-///
-/// The element loop walks the line once, section by section, with everything that does not
-/// change along a section computed once (`SectionConstants`); each node's force is summed
-/// in a register while its two elements are evaluated (the contributions of element e − 1,
-/// then those of element e, in the order of the equations above: tension, weight and
-/// buoyancy, the two Gauss points, seabed contact), so that every node receives the same
-/// sums in the same order whatever the section boundaries.
+crate::math::wide_simd_fn! {
+    /// Evaluates the nodal forces [N] of an `fe` line at positions `r` [m] and velocities `v`
+    /// [m/s] (nodes 0..=N, ends included) and, if asked, its mass blocks [kg] into `blocks`.
+    ///
+    /// `forces[i]` is the total force the line's physics puts on node i: tension, weight,
+    /// buoyancy, drag, fluid inertia, seabed and obstacle contact. End forces on attachments
+    /// follow from it.
+    ///
+    /// The element loop walks the line once, section by section, with everything that does not
+    /// change along a section computed once (`SectionConstants`), four elements at a time
+    /// (`ElementBatch`): what depends on one element only (tangent, strain, tension, weight and
+    /// buoyancy, drag in fluid at rest) is computed lane by lane, then each node's force is
+    /// summed from the contributions of element e − 1, then those of element e, in the order
+    /// of the equations above (tension, weight and buoyancy, the two Gauss points, seabed
+    /// contact), so that every node receives the same sums in the same order whatever the
+    /// section boundaries and the lanes. Where a batch is clear of the seabed in fluid at rest
+    /// the node sums go lane by lane too.
+    ///
+    /// The loop is compiled for AVX2 and for SSE2 (`crate::math::wide_simd_fn`), with the
+    /// same bits from both.
+    #[allow(clippy::too_many_arguments)]
+    pub fn line_forces(
+        line: &Mesh,
+        mass_matrix: MassMatrix,
+        env: &Environment,
+        time: Real,
+        r: &[Vec3],
+        v: &[Vec3],
+        forces: &mut [Vec3],
+        elements: &mut ElementState,
+        blocks: Option<&mut LineBlocks>,
+        options: LoadOptions,
+    ) {
+        element_loop(
+            line,
+            mass_matrix,
+            env,
+            time,
+            r,
+            v,
+            forces,
+            elements,
+            blocks,
+            options,
+        )
+    }
+}
+
+/// The body of [`line_forces`], inlined into each of its instruction-set versions.
+#[inline(always)]
 #[allow(clippy::too_many_arguments)]
-pub fn line_forces(
+fn element_loop(
     line: &Mesh,
     mass_matrix: MassMatrix,
     env: &Environment,
@@ -73,7 +111,6 @@ pub fn line_forces(
     // unstretched length of element e − 1 (node e's share of it, 0 at node 0).
     let mut node_force = Vec3::zeros();
     let mut previous_half = 0.0;
-    let (mut ra, mut va) = (r[0], v[0]);
     let mut first = 0;
     while first < n {
         let section = line.element_section[first];
@@ -85,112 +122,122 @@ pub fn line_forces(
         let sec = &line.sections[section];
         let k = SectionConstants::new(sec, env);
         let lt = &sec.line_type;
-        let per_element = r[first + 1..=end]
-            .iter()
-            .zip(&v[first + 1..=end])
-            .zip(tension_out[first..end].iter_mut())
-            .zip(strain_out[first..end].iter_mut())
-            .zip(forces[first..end].iter_mut());
-        for (e, ((((&rb, &vb), tension_out), strain_out), force_out)) in
-            (first..end).zip(per_element)
-        {
-            let delta = rb - ra;
-            let length = delta.norm();
-            let t = delta * (1.0 / length);
-            let strain = length * sec.inverse_length - 1.0;
-            // ε̇ = t·(v_b − v_a)/L0 (eq. 14), less σ(1 + ε) on a winch (Mesh::length_rate).
-            let strain_rate =
-                t.dot(&(vb - va)) * sec.inverse_length - line.length_rate * (1.0 + strain);
-            let tension = sec.law.tension(strain, strain_rate);
-            *tension_out = tension;
-            *strain_out = strain;
-            let stretch = 1.0 + strain;
-            let ft = t * tension;
-            let mut fa = node_force;
-            let mut fb = Vec3::zeros();
-            fa += ft;
-            fb -= ft;
-
-            // Weight and buoyancy (eqs. 24–25), buoyancy on the submerged part only.
-            let (sub_a, sub_b) = submerged_shape_integrals(ra.z, rb.z);
-            fa.z += k.buoyancy * sub_a - k.weight;
-            fb.z += k.buoyancy * sub_b - k.weight;
-
-            // Drag and fluid inertia at two Gauss points (eqs. 16, 19–23).
-            let root_stretch = stretch.max(0.0).sqrt();
-            if still_water {
-                // Both Gauss points at once (lane g holds point g): the same operations as
-                // `fluid_load` in fluid at rest, which the compiler packs two by two.
-                let f = k.still_water_drag_pair(&ra, &rb, &va, &vb, root_stretch, &t);
-                for (f, xi) in f.iter().zip(GAUSS) {
-                    fa += f * (k.half_length * (1.0 - xi));
-                    fb += f * (k.half_length * xi);
-                }
-            } else {
-                for (g, &xi) in GAUSS.iter().enumerate() {
-                    let (na, nb) = (1.0 - xi, xi);
-                    let f = fluid_load(
-                        env,
-                        &options.fluid,
-                        2 * e + g,
-                        lt,
-                        sec.area,
-                        time,
-                        &(ra * na + rb * nb),
-                        &(va * na + vb * nb),
-                        &t,
-                        root_stretch,
-                        options.current_factor,
-                        still_water,
-                    );
-                    fa += f * (k.half_length * na);
-                    fb += f * (k.half_length * nb);
-                }
-            }
-
-            // Structural and added mass (eqs. 12, 17–18): per unit length
-            // γ0 I + ρ A (C_an (I − t tᵀ) + C_at t tᵀ) = (γ0 + ρ A C_an) I + ρ A (C_at − C_an) t tᵀ,
-            // integrated with the linear shape functions; exact with one evaluation unless
-            // the element crosses the surface, where each Gauss point takes its own density.
+        // Morison drag in fluid at rest: the batches compute it with the elements.
+        let batch_drag = still_water && k.morison.is_some();
+        let mut batch = ElementBatch::default();
+        for e0 in (first..end).step_by(LANES) {
+            let count = LANES.min(end - e0);
+            batch.evaluate(
+                &k,
+                sec,
+                line.length_rate,
+                &r[e0..=end],
+                &v[e0..=end],
+                batch_drag,
+            );
+            tension_out[e0..e0 + count].copy_from_slice(&batch.tension[..count]);
+            strain_out[e0..e0 + count].copy_from_slice(&batch.strain[..count]);
             if let Some(b) = blocks.as_deref_mut() {
-                if consistent {
-                    add_element_mass(b, e, &k, &t, ra.z, rb.z);
-                } else {
-                    let ([ca, cb], rank_one) = lumped_element_mass(&k, ra.z, rb.z);
-                    b.lumped.isotropic[e] = node_isotropic + ca;
-                    b.lumped.rank_one[e] = rank_one;
-                    b.lumped.tangent[e] = t;
-                    node_isotropic = cb;
+                for (lane, e) in (e0..e0 + count).enumerate() {
+                    let t = Vec3::new(batch.tx[lane], batch.ty[lane], batch.tz[lane]);
+                    let (za, zb) = (r[e].z, r[e + 1].z);
+                    add_mass(b, e, &k, &t, za, zb, consistent, &mut node_isotropic);
                 }
             }
-
-            // Seabed contact (DG paper eqs. 15–16) by nodal quadrature over the element.
-            if ra.z < bed_top || rb.z < bed_top {
-                let contact = |position: &Vec3, velocity: &Vec3, node_length: Real| {
-                    env.seabed.contact_force_with(
-                        &env.seabed_at(position.x, position.y),
-                        position,
-                        velocity,
-                        lt.diameter,
-                        root_stretch,
-                        k.seabed_damping,
-                        k.net_weight,
-                        node_length,
-                    ) * k.half_length
-                };
-                // Each node carries half of each adjacent element.
-                fa += contact(&ra, &va, previous_half + k.half_length);
-                let next_half = if e + 1 < n {
-                    0.5 * line.section(e + 1).element_length
-                } else {
-                    0.0
-                };
-                fb += contact(&rb, &vb, k.half_length + next_half);
+            if batch_drag && r[e0..=e0 + count].iter().all(|p| !(p.z < bed_top)) {
+                // Clear of the bed with nothing but the batch's own terms: the nodes' sums
+                // lane by lane too.
+                node_force = batch.sum_nodes(node_force, &mut forces[e0..e0 + count], count);
+                previous_half = k.half_length;
+                continue;
             }
-            *force_out = fa;
-            node_force = fb;
-            previous_half = k.half_length;
-            (ra, va) = (rb, vb);
+            for (lane, e) in (e0..e0 + count).enumerate() {
+                let (ra, rb, va, vb) = (r[e], r[e + 1], v[e], v[e + 1]);
+                let t = Vec3::new(batch.tx[lane], batch.ty[lane], batch.tz[lane]);
+                let ft = Vec3::new(batch.ftx[lane], batch.fty[lane], batch.ftz[lane]);
+                let mut fa = node_force;
+                let mut fb = Vec3::zeros();
+                fa += ft;
+                fb -= ft;
+
+                // Weight and buoyancy (eqs. 24–25), buoyancy on the submerged part only.
+                fa.z += batch.weight_a[lane];
+                fb.z += batch.weight_b[lane];
+
+                // Drag and fluid inertia at two Gauss points (eqs. 16, 19–23).
+                let root_stretch = batch.root_stretch[lane];
+                if batch_drag {
+                    for g in 0..2 {
+                        let [ax, ay, az] = &batch.drag_a[g];
+                        let [bx, by, bz] = &batch.drag_b[g];
+                        fa += Vec3::new(ax[lane], ay[lane], az[lane]);
+                        fb += Vec3::new(bx[lane], by[lane], bz[lane]);
+                    }
+                } else if still_water {
+                    // Drag loading functions in fluid at rest.
+                    for xi in GAUSS {
+                        let (na, nb) = (1.0 - xi, xi);
+                        let z = ra.z * na + rb.z * nb;
+                        let relative = -(va * na + vb * nb);
+                        let f = drag_force_with_factor(
+                            k.drag,
+                            k.drag_factor[fluid(z)],
+                            root_stretch,
+                            &t,
+                            &relative,
+                        );
+                        fa += f * (k.half_length * na);
+                        fb += f * (k.half_length * nb);
+                    }
+                } else {
+                    for (g, &xi) in GAUSS.iter().enumerate() {
+                        let (na, nb) = (1.0 - xi, xi);
+                        let f = fluid_load(
+                            env,
+                            &options.fluid,
+                            2 * e + g,
+                            lt,
+                            sec.area,
+                            time,
+                            &(ra * na + rb * nb),
+                            &(va * na + vb * nb),
+                            &t,
+                            root_stretch,
+                            options.current_factor,
+                            still_water,
+                        );
+                        fa += f * (k.half_length * na);
+                        fb += f * (k.half_length * nb);
+                    }
+                }
+
+                // Seabed contact (DG paper eqs. 15–16) by nodal quadrature over the element.
+                if ra.z < bed_top || rb.z < bed_top {
+                    let contact = |position: &Vec3, velocity: &Vec3, node_length: Real| {
+                        env.seabed.contact_force_with(
+                            &env.seabed_at(position.x, position.y),
+                            position,
+                            velocity,
+                            lt.diameter,
+                            root_stretch,
+                            k.seabed_damping,
+                            k.net_weight,
+                            node_length,
+                        ) * k.half_length
+                    };
+                    // Each node carries half of each adjacent element.
+                    fa += contact(&ra, &va, previous_half + k.half_length);
+                    let next_half = if e + 1 < n {
+                        0.5 * line.section(e + 1).element_length
+                    } else {
+                        0.0
+                    };
+                    fb += contact(&rb, &vb, k.half_length + next_half);
+                }
+                forces[e] = fa;
+                node_force = fb;
+                previous_half = k.half_length;
+            }
         }
         first = end;
     }
@@ -275,66 +322,6 @@ impl<'a> SectionConstants<'a> {
         }
     }
 
-    /// Drag per unit unstretched length [N/m] in fluid at rest at the two Gauss points of the
-    /// element from `ra` to `rb` [m] moving at `va`, `vb` [m/s], with unit tangent `t` and
-    /// √(1+ε) `root_stretch`: `drag_force` of the relative velocity −v at each point, in
-    /// water or in air by the point's height, Morison's drag written lane by lane (lane g is
-    /// Gauss point g) so that the two points are computed together.
-    #[inline(always)]
-    fn still_water_drag_pair(
-        &self,
-        ra: &Vec3,
-        rb: &Vec3,
-        va: &Vec3,
-        vb: &Vec3,
-        root_stretch: Real,
-        t: &Vec3,
-    ) -> [Vec3; 2] {
-        let (na, nb) = ([1.0 - GAUSS[0], 1.0 - GAUSS[1]], GAUSS);
-        let Some((normal, tangential)) = self.morison else {
-            let point = |g: usize| {
-                let z = ra.z * na[g] + rb.z * nb[g];
-                let factor = if z < 0.0 {
-                    self.drag_factor[0]
-                } else {
-                    self.drag_factor[1]
-                };
-                let relative = -(va * na[g] + vb * nb[g]);
-                drag_force_with_factor(self.drag, factor, root_stretch, t, &relative)
-            };
-            return [point(0), point(1)];
-        };
-        let z = lanes(|g| ra.z * na[g] + rb.z * nb[g]);
-        // The relative velocity −(va na + vb nb), component by component.
-        let rx = lanes(|g| -(va.x * na[g] + vb.x * nb[g]));
-        let ry = lanes(|g| -(va.y * na[g] + vb.y * nb[g]));
-        let rz = lanes(|g| -(va.z * na[g] + vb.z * nb[g]));
-        let vt = lanes(|g| rx[g] * t.x + ry[g] * t.y + rz[g] * t.z);
-        let nx = lanes(|g| rx[g] - t.x * vt[g]);
-        let ny = lanes(|g| ry[g] - t.y * vt[g]);
-        let nz = lanes(|g| rz[g] - t.z * vt[g]);
-        let vn = lanes(|g| (nx[g] * nx[g] + ny[g] * ny[g] + nz[g] * nz[g]).sqrt());
-        let q = lanes(|g| {
-            let factor = if z[g] < 0.0 {
-                self.drag_factor[0]
-            } else {
-                self.drag_factor[1]
-            };
-            factor * root_stretch
-        });
-        let cn = lanes(|g| normal * vn[g]);
-        let ct = lanes(|g| tangential * vt[g].abs());
-        // Written out rather than `[0, 1].map(..)`, which the compiler left as a call.
-        let point = |g: usize| {
-            Vec3::new(
-                q[g] * (cn[g] * nx[g] + ct[g] * (t.x * vt[g])),
-                q[g] * (cn[g] * ny[g] + ct[g] * (t.y * vt[g])),
-                q[g] * (cn[g] * nz[g] + ct[g] * (t.z * vt[g])),
-            )
-        };
-        [point(0), point(1)]
-    }
-
     /// The element's mass per unit length γ0 I + added mass at density index `fluid` (0
     /// water, 1 air), times `length` [m] ([`added_mass_of`]).
     #[inline(always)]
@@ -348,10 +335,201 @@ impl<'a> SectionConstants<'a> {
     }
 }
 
-/// [f(0), f(1)]: a quantity at both Gauss points.
-#[inline(always)]
-fn lanes(f: impl Fn(usize) -> Real) -> [Real; 2] {
-    [f(0), f(1)]
+/// Elements whose own quantities [`ElementBatch::evaluate`] computes together, lane by lane:
+/// the compiler packs the lanes into SIMD registers (two with SSE2, four with AVX2).
+const LANES: usize = 4;
+
+/// One quantity of each element of a batch (lane l: the batch's element l).
+type Lanes = [Real; LANES];
+
+/// The quantities of up to [`LANES`] consecutive elements of one section that depend on
+/// nothing but the element: unit tangent t, strain ε, tension T and its nodal force T t
+/// (eqs. 7–9, 13–15), √(1+ε), and in fluid at rest Morison's drag (eqs. 16, 19–23) at both
+/// Gauss points times each node's share of the Gauss weight, (L0/2) N_a(ξ_g) and
+/// (L0/2) N_b(ξ_g). [`line_forces`] adds them node by node in its own order. Each lane runs
+/// the expressions a per-element loop would, so the results are the same bits whatever the
+/// lane count or the instruction set.
+#[derive(Default)]
+struct ElementBatch {
+    /// Unit tangent components [-].
+    tx: Lanes,
+    ty: Lanes,
+    tz: Lanes,
+    /// Axial strain ε = L/L0 − 1 [-].
+    strain: Lanes,
+    /// Tension T(ε, ε̇) [N].
+    tension: Lanes,
+    /// √(max(1 + ε, 0)) [-]: the drag's diameter and length factor.
+    root_stretch: Lanes,
+    /// T t, the force on the element's first node [N] (its second node takes −T t).
+    ftx: Lanes,
+    fty: Lanes,
+    ftz: Lanes,
+    /// Weight and buoyancy on the first and second node, ρ_w A g L0 ∫N_a − γ0 g L0/2 and
+    /// the same with N_b (the integrals over the submerged part, eqs. 24–25) [N], upward.
+    weight_a: Lanes,
+    weight_b: Lanes,
+    /// Drag at Gauss point g times (L0/2) N_a(ξ_g), components x, y, z [N].
+    drag_a: [[Lanes; 3]; 2],
+    /// Drag at Gauss point g times (L0/2) N_b(ξ_g) [N].
+    drag_b: [[Lanes; 3]; 2],
+}
+
+// Lanes are indexed: the lane loops are what the compiler packs into registers.
+#[allow(clippy::needless_range_loop)]
+impl ElementBatch {
+    /// Evaluates the elements whose nodes are `r` [m] moving at `v` [m/s] (element l from
+    /// node l to node l + 1, at most [`LANES`] of them; lanes past the last element repeat
+    /// it), of section `sec` with constants `k`, on a line paid out at `length_rate` [1/s]
+    /// (ε̇ = t·(v_b − v_a)/L0 − σ(1 + ε), [`Mesh::length_rate`]), with Morison drag in fluid
+    /// at rest if `drag`.
+    #[inline(always)]
+    fn evaluate(
+        &mut self,
+        k: &SectionConstants,
+        sec: &SectionProperties,
+        length_rate: Real,
+        r: &[Vec3],
+        v: &[Vec3],
+        drag: bool,
+    ) {
+        let last = r.len() - 2;
+        let mut node = [[Lanes::default(); 3]; 4];
+        for l in 0..LANES {
+            let e = l.min(last);
+            let (ra, rb, va, vb) = (r[e], r[e + 1], v[e], v[e + 1]);
+            for c in 0..3 {
+                node[0][c][l] = ra[c];
+                node[1][c][l] = rb[c];
+                node[2][c][l] = va[c];
+                node[3][c][l] = vb[c];
+            }
+        }
+        let [[xa, ya, za], [xb, yb, zb], [vxa, vya, vza], [vxb, vyb, vzb]] = node;
+        let il = sec.inverse_length;
+        let mut rate = Lanes::default();
+        for l in 0..LANES {
+            let (dx, dy, dz) = (xb[l] - xa[l], yb[l] - ya[l], zb[l] - za[l]);
+            let length = (dx * dx + dy * dy + dz * dz).sqrt();
+            let inverse = 1.0 / length;
+            let (tx, ty, tz) = (dx * inverse, dy * inverse, dz * inverse);
+            let strain = length * il - 1.0;
+            let (dvx, dvy, dvz) = (vxb[l] - vxa[l], vyb[l] - vya[l], vzb[l] - vza[l]);
+            rate[l] = (tx * dvx + ty * dvy + tz * dvz) * il - length_rate * (1.0 + strain);
+            (self.tx[l], self.ty[l], self.tz[l]) = (tx, ty, tz);
+            self.strain[l] = strain;
+            self.root_stretch[l] = (1.0 + strain).max(0.0).sqrt();
+        }
+        let law = &sec.law;
+        match law.stiffness {
+            // AxialLaw::tension for a linear law, without its branches.
+            AxialStiffness::Linear(ea) => {
+                for l in 0..LANES {
+                    let strain = self.strain[l];
+                    let elastic = if strain > 0.0 || law.compression {
+                        ea * strain
+                    } else {
+                        0.0
+                    };
+                    self.tension[l] = elastic + law.damping * rate[l];
+                }
+            }
+            AxialStiffness::Table { .. } => {
+                for l in 0..LANES {
+                    self.tension[l] = law.tension(self.strain[l], rate[l]);
+                }
+            }
+        }
+        for l in 0..LANES {
+            let (sub_a, sub_b) = submerged_shape_integrals(za[l], zb[l]);
+            self.weight_a[l] = k.buoyancy * sub_a - k.weight;
+            self.weight_b[l] = k.buoyancy * sub_b - k.weight;
+        }
+        for l in 0..LANES {
+            let tension = self.tension[l];
+            self.ftx[l] = self.tx[l] * tension;
+            self.fty[l] = self.ty[l] * tension;
+            self.ftz[l] = self.tz[l] * tension;
+        }
+        let Some((normal, tangential)) = k.morison.filter(|_| drag) else {
+            return;
+        };
+        for (g, xi) in GAUSS.into_iter().enumerate() {
+            let (na, nb) = (1.0 - xi, xi);
+            let (wa, wb) = (k.half_length * na, k.half_length * nb);
+            for l in 0..LANES {
+                let (tx, ty, tz) = (self.tx[l], self.ty[l], self.tz[l]);
+                let z = za[l] * na + zb[l] * nb;
+                // The relative velocity −(v_a N_a + v_b N_b) of the fluid at rest.
+                let rx = -(vxa[l] * na + vxb[l] * nb);
+                let ry = -(vya[l] * na + vyb[l] * nb);
+                let rz = -(vza[l] * na + vzb[l] * nb);
+                let vt = rx * tx + ry * ty + rz * tz;
+                let (nx, ny, nz) = (rx - tx * vt, ry - ty * vt, rz - tz * vt);
+                let vn = (nx * nx + ny * ny + nz * nz).sqrt();
+                let factor = if z < 0.0 {
+                    k.drag_factor[0]
+                } else {
+                    k.drag_factor[1]
+                };
+                let q = factor * self.root_stretch[l];
+                let (cn, ct) = (normal * vn, tangential * vt.abs());
+                let f = [
+                    q * (cn * nx + ct * (tx * vt)),
+                    q * (cn * ny + ct * (ty * vt)),
+                    q * (cn * nz + ct * (tz * vt)),
+                ];
+                for c in 0..3 {
+                    self.drag_a[g][c][l] = f[c] * wa;
+                    self.drag_b[g][c][l] = f[c] * wb;
+                }
+            }
+        }
+    }
+
+    /// The forces on the first `count` elements' first nodes into `forces` [N], from
+    /// `carried`, the sum on the first node of the earlier elements' contributions; returns
+    /// that sum for the node after the last element. The terms of tension, weight and
+    /// buoyancy and drag (with Morison drag in the batch) are added in the order of
+    /// [`line_forces`]' element loop, lane l summing node l's: first element l − 1's
+    /// contributions (−T t, its weight, its two Gauss points), then element l's.
+    #[inline(always)]
+    fn sum_nodes(&self, carried: Vec3, forces: &mut [Vec3], count: usize) -> Vec3 {
+        // Each element's contributions to its second node, from zero.
+        let mut second = [Lanes::default(); 3];
+        let ft = [&self.ftx, &self.fty, &self.ftz];
+        for c in 0..3 {
+            for l in 0..LANES {
+                let mut f = 0.0 - ft[c][l];
+                if c == 2 {
+                    f += self.weight_b[l];
+                }
+                f += self.drag_b[0][c][l];
+                f += self.drag_b[1][c][l];
+                second[c][l] = f;
+            }
+        }
+        // Node l starts from element l − 1's (the carried sum for l = 0).
+        let mut node = [Lanes::default(); 3];
+        for c in 0..3 {
+            node[c][0] = carried[c];
+            node[c][1..].copy_from_slice(&second[c][..LANES - 1]);
+            for l in 0..LANES {
+                let mut f = node[c][l] + ft[c][l];
+                if c == 2 {
+                    f += self.weight_a[l];
+                }
+                f += self.drag_a[0][c][l];
+                f += self.drag_a[1][c][l];
+                node[c][l] = f;
+            }
+        }
+        for (l, f) in forces[..count].iter_mut().enumerate() {
+            *f = Vec3::new(node[0][l], node[1][l], node[2][l]);
+        }
+        let last = count - 1;
+        Vec3::new(second[0][last], second[1][last], second[2][last])
+    }
 }
 
 /// The index of the fluid at height z [m] in [`SectionConstants`]' pairs: 0 in water (z < 0),
@@ -359,6 +537,37 @@ fn lanes(f: impl Fn(usize) -> Real) -> [Real; 2] {
 #[inline(always)]
 fn fluid(z: Real) -> usize {
     usize::from(!(z < 0.0))
+}
+
+/// Adds element e's mass to `b` (see [`line_forces`]): its consistent blocks, or its lumped
+/// parts, the isotropic mass of node e completed from `node_isotropic` (element e − 1's
+/// share, replaced by element e's share of node e + 1).
+///
+/// Structural and added mass (eqs. 12, 17–18): per unit length
+/// γ0 I + ρ A (C_an (I − t tᵀ) + C_at t tᵀ) = (γ0 + ρ A C_an) I + ρ A (C_at − C_an) t tᵀ,
+/// integrated with the linear shape functions; exact with one evaluation unless the element
+/// crosses the surface, where each Gauss point takes its own density.
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+fn add_mass(
+    b: &mut LineBlocks,
+    e: usize,
+    k: &SectionConstants,
+    t: &Vec3,
+    za: Real,
+    zb: Real,
+    consistent: bool,
+    node_isotropic: &mut Real,
+) {
+    if consistent {
+        add_element_mass(b, e, k, t, za, zb);
+    } else {
+        let ([ca, cb], rank_one) = lumped_element_mass(k, za, zb);
+        b.lumped.isotropic[e] = *node_isotropic + ca;
+        b.lumped.rank_one[e] = rank_one;
+        b.lumped.tangent[e] = *t;
+        *node_isotropic = cb;
+    }
 }
 
 /// Adds element e's consistent mass blocks [kg] into `b` (see [`line_forces`]).
