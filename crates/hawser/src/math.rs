@@ -1,4 +1,5 @@
-//! Linear-algebra aliases. No other module names the linear-algebra crate directly.
+//! Linear-algebra aliases and small helpers, and the instruction-set dispatch of the hot loops
+//! ([`wide_simd_fn`]). No other module names the linear-algebra crate directly.
 
 /// Floating-point type of every physical quantity.
 pub type Real = f64;
