@@ -60,204 +60,187 @@ crate::math::wide_simd_fn! {
         blocks: Option<&mut LineBlocks>,
         options: LoadOptions,
     ) {
-        element_loop(
-            line,
-            mass_matrix,
-            env,
-            time,
-            r,
-            v,
-            forces,
-            elements,
-            blocks,
-            options,
-        )
-    }
-}
-
-/// The body of [`line_forces`], inlined into each of its instruction-set versions.
-#[inline(always)]
-#[allow(clippy::too_many_arguments)]
-fn element_loop(
-    line: &Mesh,
-    mass_matrix: MassMatrix,
-    env: &Environment,
-    time: Real,
-    r: &[Vec3],
-    v: &[Vec3],
-    forces: &mut [Vec3],
-    elements: &mut ElementState,
-    blocks: Option<&mut LineBlocks>,
-    options: LoadOptions,
-) {
-    let n = line.elements();
-    let (r, v, forces) = (&r[..=n], &v[..=n], &mut forces[..=n]);
-    let (tension_out, strain_out) = (&mut elements.tension[..n], &mut elements.strain[..n]);
-    // Nothing above the bed's highest point touches it (−depth for a flat bed).
-    let bed_top = env.seabed_top();
-    let consistent = mass_matrix == MassMatrix::Consistent;
-    // No current and no waves: the fluid is at rest everywhere.
-    let still_water = env.is_still_water();
-    let mut blocks = blocks;
-    if let Some(b) = blocks.as_deref_mut() {
-        // A lumped line's diagonal blocks are all written below, from its `LumpedMass`.
-        if consistent || b.coupled {
-            b.clear();
+        let n = line.elements();
+        let (r, v, forces) = (&r[..=n], &v[..=n], &mut forces[..=n]);
+        let (tension_out, strain_out) = (&mut elements.tension[..n], &mut elements.strain[..n]);
+        // Nothing above the bed's highest point touches it (−depth for a flat bed).
+        let bed_top = env.seabed_top();
+        let consistent = mass_matrix == MassMatrix::Consistent;
+        // No current and no waves: the fluid is at rest everywhere.
+        let still_water = env.is_still_water();
+        let mut blocks = blocks;
+        if let Some(b) = blocks.as_deref_mut() {
+            // A lumped line's diagonal blocks are all written below, from its `LumpedMass`.
+            if consistent || b.coupled {
+                b.clear();
+            }
         }
-    }
-    // The isotropic mass c [kg] of node e summed so far (element e − 1's share).
-    let mut node_isotropic = 0.0;
-    // The force on node e summed so far (the contributions of element e − 1), and half the
-    // unstretched length of element e − 1 (node e's share of it, 0 at node 0).
-    let mut node_force = Vec3::zeros();
-    let mut previous_half = 0.0;
-    let mut first = 0;
-    while first < n {
-        let section = line.element_section[first];
-        let end = first
-            + line.element_section[first..]
-                .iter()
-                .position(|&s| s != section)
-                .unwrap_or(n - first);
-        let sec = &line.sections[section];
-        let k = SectionConstants::new(sec, env);
-        let lt = &sec.line_type;
-        // Morison drag in fluid at rest: the batches compute it with the elements.
-        let batch_drag = still_water && k.morison.is_some();
-        let mut batch = ElementBatch::default();
-        for e0 in (first..end).step_by(LANES) {
-            let count = LANES.min(end - e0);
-            batch.evaluate(
-                &k,
-                sec,
-                line.length_rate,
-                &r[e0..=end],
-                &v[e0..=end],
-                batch_drag,
-            );
-            tension_out[e0..e0 + count].copy_from_slice(&batch.tension[..count]);
-            strain_out[e0..e0 + count].copy_from_slice(&batch.strain[..count]);
-            if let Some(b) = blocks.as_deref_mut() {
+        // The isotropic mass c [kg] of node e summed so far (element e − 1's share).
+        let mut node_isotropic = 0.0;
+        // The force on node e summed so far (the contributions of element e − 1), and half the
+        // unstretched length of element e − 1 (node e's share of it, 0 at node 0).
+        let mut node_force = Vec3::zeros();
+        let mut previous_half = 0.0;
+        let mut first = 0;
+        while first < n {
+            let section = line.element_section[first];
+            let end = first
+                + line.element_section[first..]
+                    .iter()
+                    .position(|&s| s != section)
+                    .unwrap_or(n - first);
+            let sec = &line.sections[section];
+            let k = SectionConstants::new(sec, env);
+            let lt = &sec.line_type;
+            // Morison drag in fluid at rest: the batches compute it with the elements.
+            let batch_drag = still_water && k.morison.is_some();
+            let mut batch = ElementBatch::default();
+            for e0 in (first..end).step_by(LANES) {
+                let count = LANES.min(end - e0);
+                batch.evaluate(
+                    &k,
+                    sec,
+                    line.length_rate,
+                    &r[e0..=end],
+                    &v[e0..=end],
+                    batch_drag,
+                );
+                tension_out[e0..e0 + count].copy_from_slice(&batch.tension[..count]);
+                strain_out[e0..e0 + count].copy_from_slice(&batch.strain[..count]);
+                // Structural and added mass (eqs. 12, 17–18): per unit length
+                // γ0 I + ρ A (C_an (I − t tᵀ) + C_at t tᵀ) = (γ0 + ρ A C_an) I + ρ A (C_at − C_an) t tᵀ,
+                // integrated with the linear shape functions; exact with one evaluation unless
+                // the element crosses the surface, where each Gauss point takes its own density.
+                if let Some(b) = blocks.as_deref_mut() {
+                    for (lane, e) in (e0..e0 + count).enumerate() {
+                        let t = Vec3::new(batch.tx[lane], batch.ty[lane], batch.tz[lane]);
+                        let (za, zb) = (r[e].z, r[e + 1].z);
+                        if consistent {
+                            add_element_mass(b, e, &k, &t, za, zb);
+                        } else {
+                            let ([ca, cb], rank_one) = lumped_element_mass(&k, za, zb);
+                            b.lumped.isotropic[e] = node_isotropic + ca;
+                            b.lumped.rank_one[e] = rank_one;
+                            b.lumped.tangent[e] = t;
+                            node_isotropic = cb;
+                        }
+                    }
+                }
+                if batch_drag && r[e0..=e0 + count].iter().all(|p| !(p.z < bed_top)) {
+                    // Clear of the bed with nothing but the batch's own terms: the nodes' sums
+                    // lane by lane too.
+                    node_force = batch.sum_nodes(node_force, &mut forces[e0..e0 + count], count);
+                    previous_half = k.half_length;
+                    continue;
+                }
                 for (lane, e) in (e0..e0 + count).enumerate() {
+                    let (ra, rb, va, vb) = (r[e], r[e + 1], v[e], v[e + 1]);
                     let t = Vec3::new(batch.tx[lane], batch.ty[lane], batch.tz[lane]);
-                    let (za, zb) = (r[e].z, r[e + 1].z);
-                    add_mass(b, e, &k, &t, za, zb, consistent, &mut node_isotropic);
-                }
-            }
-            if batch_drag && r[e0..=e0 + count].iter().all(|p| !(p.z < bed_top)) {
-                // Clear of the bed with nothing but the batch's own terms: the nodes' sums
-                // lane by lane too.
-                node_force = batch.sum_nodes(node_force, &mut forces[e0..e0 + count], count);
-                previous_half = k.half_length;
-                continue;
-            }
-            for (lane, e) in (e0..e0 + count).enumerate() {
-                let (ra, rb, va, vb) = (r[e], r[e + 1], v[e], v[e + 1]);
-                let t = Vec3::new(batch.tx[lane], batch.ty[lane], batch.tz[lane]);
-                let ft = Vec3::new(batch.ftx[lane], batch.fty[lane], batch.ftz[lane]);
-                let mut fa = node_force;
-                let mut fb = Vec3::zeros();
-                fa += ft;
-                fb -= ft;
+                    let ft = Vec3::new(batch.ftx[lane], batch.fty[lane], batch.ftz[lane]);
+                    let mut fa = node_force;
+                    let mut fb = Vec3::zeros();
+                    fa += ft;
+                    fb -= ft;
 
-                // Weight and buoyancy (eqs. 24–25), buoyancy on the submerged part only.
-                fa.z += batch.weight_a[lane];
-                fb.z += batch.weight_b[lane];
+                    // Weight and buoyancy (eqs. 24–25), buoyancy on the submerged part only.
+                    fa.z += batch.weight_a[lane];
+                    fb.z += batch.weight_b[lane];
 
-                // Drag and fluid inertia at two Gauss points (eqs. 16, 19–23).
-                let root_stretch = batch.root_stretch[lane];
-                if batch_drag {
-                    for g in 0..2 {
-                        let [ax, ay, az] = &batch.drag_a[g];
-                        let [bx, by, bz] = &batch.drag_b[g];
-                        fa += Vec3::new(ax[lane], ay[lane], az[lane]);
-                        fb += Vec3::new(bx[lane], by[lane], bz[lane]);
-                    }
-                } else if still_water {
-                    // Drag loading functions in fluid at rest.
-                    for xi in GAUSS {
-                        let (na, nb) = (1.0 - xi, xi);
-                        let z = ra.z * na + rb.z * nb;
-                        let relative = -(va * na + vb * nb);
-                        let f = drag_force_with_factor(
-                            k.drag,
-                            k.drag_factor[fluid(z)],
-                            root_stretch,
-                            &t,
-                            &relative,
-                        );
-                        fa += f * (k.half_length * na);
-                        fb += f * (k.half_length * nb);
-                    }
-                } else {
-                    for (g, &xi) in GAUSS.iter().enumerate() {
-                        let (na, nb) = (1.0 - xi, xi);
-                        let f = fluid_load(
-                            env,
-                            &options.fluid,
-                            2 * e + g,
-                            lt,
-                            sec.area,
-                            time,
-                            &(ra * na + rb * nb),
-                            &(va * na + vb * nb),
-                            &t,
-                            root_stretch,
-                            options.current_factor,
-                            still_water,
-                        );
-                        fa += f * (k.half_length * na);
-                        fb += f * (k.half_length * nb);
-                    }
-                }
-
-                // Seabed contact (DG paper eqs. 15–16) by nodal quadrature over the element.
-                if ra.z < bed_top || rb.z < bed_top {
-                    let contact = |position: &Vec3, velocity: &Vec3, node_length: Real| {
-                        env.seabed.contact_force_with(
-                            &env.seabed_at(position.x, position.y),
-                            position,
-                            velocity,
-                            lt.diameter,
-                            root_stretch,
-                            k.seabed_damping,
-                            k.net_weight,
-                            node_length,
-                        ) * k.half_length
-                    };
-                    // Each node carries half of each adjacent element.
-                    fa += contact(&ra, &va, previous_half + k.half_length);
-                    let next_half = if e + 1 < n {
-                        0.5 * line.section(e + 1).element_length
+                    // Drag and fluid inertia at two Gauss points (eqs. 16, 19–23).
+                    let root_stretch = batch.root_stretch[lane];
+                    if batch_drag {
+                        for g in 0..2 {
+                            let [ax, ay, az] = &batch.drag_a[g];
+                            let [bx, by, bz] = &batch.drag_b[g];
+                            fa += Vec3::new(ax[lane], ay[lane], az[lane]);
+                            fb += Vec3::new(bx[lane], by[lane], bz[lane]);
+                        }
+                    } else if still_water {
+                        // Drag loading functions in fluid at rest.
+                        for xi in GAUSS {
+                            let (na, nb) = (1.0 - xi, xi);
+                            let z = ra.z * na + rb.z * nb;
+                            let relative = -(va * na + vb * nb);
+                            let f = drag_force_with_factor(
+                                k.drag,
+                                k.drag_factor[fluid(z)],
+                                root_stretch,
+                                &t,
+                                &relative,
+                            );
+                            fa += f * (k.half_length * na);
+                            fb += f * (k.half_length * nb);
+                        }
                     } else {
-                        0.0
-                    };
-                    fb += contact(&rb, &vb, k.half_length + next_half);
+                        for (g, &xi) in GAUSS.iter().enumerate() {
+                            let (na, nb) = (1.0 - xi, xi);
+                            let f = fluid_load(
+                                env,
+                                &options.fluid,
+                                2 * e + g,
+                                lt,
+                                sec.area,
+                                time,
+                                &(ra * na + rb * nb),
+                                &(va * na + vb * nb),
+                                &t,
+                                root_stretch,
+                                options.current_factor,
+                                still_water,
+                            );
+                            fa += f * (k.half_length * na);
+                            fb += f * (k.half_length * nb);
+                        }
+                    }
+
+                    // Seabed contact (DG paper eqs. 15–16) by nodal quadrature over the element.
+                    if ra.z < bed_top || rb.z < bed_top {
+                        let contact = |position: &Vec3, velocity: &Vec3, node_length: Real| {
+                            env.seabed.contact_force_with(
+                                &env.seabed_at(position.x, position.y),
+                                position,
+                                velocity,
+                                lt.diameter,
+                                root_stretch,
+                                k.seabed_damping,
+                                k.net_weight,
+                                node_length,
+                            ) * k.half_length
+                        };
+                        // Each node carries half of each adjacent element.
+                        fa += contact(&ra, &va, previous_half + k.half_length);
+                        let next_half = if e + 1 < n {
+                            0.5 * line.section(e + 1).element_length
+                        } else {
+                            0.0
+                        };
+                        fb += contact(&rb, &vb, k.half_length + next_half);
+                    }
+                    forces[e] = fa;
+                    node_force = fb;
+                    previous_half = k.half_length;
                 }
-                forces[e] = fa;
-                node_force = fb;
-                previous_half = k.half_length;
+            }
+            first = end;
+        }
+        forces[n] = node_force;
+        if let Some(b) = blocks.filter(|_| !consistent) {
+            b.lumped.isotropic[n] = node_isotropic;
+            b.lumped.current = true;
+            if b.lumped.ends_only && !b.coupled {
+                b.diag[0] = b.lumped.block(0);
+                b.diag[n] = b.lumped.block(n);
+            } else {
+                b.form_lumped_diagonal();
             }
         }
-        first = end;
-    }
-    forces[n] = node_force;
-    if let Some(b) = blocks.filter(|_| !consistent) {
-        b.lumped.isotropic[n] = node_isotropic;
-        b.lumped.current = true;
-        if b.lumped.ends_only && !b.coupled {
-            b.diag[0] = b.lumped.block(0);
-            b.diag[n] = b.lumped.block(n);
-        } else {
-            b.form_lumped_diagonal();
-        }
-    }
 
-    // Obstacle contact by the same nodal quadrature.
-    if !env.obstacles.is_empty() {
-        obstacle_contacts(line, &env.obstacles, time, r, v, |_, node, f, w| {
-            forces[node] += f * w
-        });
+        // Obstacle contact by the same nodal quadrature.
+        if !env.obstacles.is_empty() {
+            obstacle_contacts(line, &env.obstacles, time, r, v, |_, node, f, w| {
+                forces[node] += f * w
+            });
+        }
     }
 }
 
@@ -537,37 +520,6 @@ impl ElementBatch {
 #[inline(always)]
 fn fluid(z: Real) -> usize {
     usize::from(!(z < 0.0))
-}
-
-/// Adds element e's mass to `b` (see [`line_forces`]): its consistent blocks, or its lumped
-/// parts, the isotropic mass of node e completed from `node_isotropic` (element e − 1's
-/// share, replaced by element e's share of node e + 1).
-///
-/// Structural and added mass (eqs. 12, 17–18): per unit length
-/// γ0 I + ρ A (C_an (I − t tᵀ) + C_at t tᵀ) = (γ0 + ρ A C_an) I + ρ A (C_at − C_an) t tᵀ,
-/// integrated with the linear shape functions; exact with one evaluation unless the element
-/// crosses the surface, where each Gauss point takes its own density.
-#[inline(always)]
-#[allow(clippy::too_many_arguments)]
-fn add_mass(
-    b: &mut LineBlocks,
-    e: usize,
-    k: &SectionConstants,
-    t: &Vec3,
-    za: Real,
-    zb: Real,
-    consistent: bool,
-    node_isotropic: &mut Real,
-) {
-    if consistent {
-        add_element_mass(b, e, k, t, za, zb);
-    } else {
-        let ([ca, cb], rank_one) = lumped_element_mass(k, za, zb);
-        b.lumped.isotropic[e] = *node_isotropic + ca;
-        b.lumped.rank_one[e] = rank_one;
-        b.lumped.tangent[e] = *t;
-        *node_isotropic = cb;
-    }
 }
 
 /// Adds element e's consistent mass blocks [kg] into `b` (see [`line_forces`]).
