@@ -43,25 +43,31 @@ impl BandedLu {
     }
 
     /// Factorises in place; `Err(k)` on a zero (or non-finite) pivot in row k.
+    ///
+    /// Row by row on the band's storage: the update of row i by row k is one pass over the
+    /// columns k + 1 … k + kd, which lie side by side in both rows.
     pub fn factor(&mut self) -> Result<(), usize> {
         let (n, kd) = (self.n, self.kd);
+        let width = 2 * kd + 1;
         for k in 0..n {
-            let pivot = self.a[self.at(k, k)];
+            let pivot = self.a[k * width + kd];
             if pivot == 0.0 || !pivot.is_finite() {
                 return Err(k);
             }
             let last = (k + kd).min(n - 1);
-            for i in k + 1..=last {
-                let ik = self.at(i, k);
-                let l = self.a[ik] / pivot;
-                self.a[ik] = l;
+            // Row k's columns k + 1 ..= last, and the rows below it.
+            let (head, below) = self.a.split_at_mut((k + 1) * width);
+            let row_k = &head[k * width + kd + 1..k * width + kd + 1 + (last - k)];
+            for (i, row_i) in (k + 1..=last).zip(below.chunks_exact_mut(width)) {
+                // Column j of row i is at j + kd − i.
+                let ik = k + kd - i;
+                let l = row_i[ik] / pivot;
+                row_i[ik] = l;
                 if l == 0.0 {
                     continue;
                 }
-                for j in k + 1..=last {
-                    let kj = self.a[self.at(k, j)];
-                    let ij = self.at(i, j);
-                    self.a[ij] -= l * kj;
+                for (x, &kj) in row_i[ik + 1..ik + 1 + row_k.len()].iter_mut().zip(row_k) {
+                    *x -= l * kj;
                 }
             }
         }
@@ -71,21 +77,28 @@ impl BandedLu {
     /// Solves A x = b in place after [`BandedLu::factor`].
     pub fn solve(&self, b: &mut [Real]) {
         let (n, kd) = (self.n, self.kd);
-        for i in 0..n {
+        let width = 2 * kd + 1;
+        let b = &mut b[..n];
+        for (i, row) in self.a.chunks_exact(width).enumerate().take(n) {
             let first = i.saturating_sub(kd);
-            let mut s = b[i];
-            for (j, bj) in b.iter().enumerate().take(i).skip(first) {
-                s -= self.a[self.at(i, j)] * bj;
+            let (done, rest) = b.split_at_mut(i);
+            let mut s = rest[0];
+            for (a, bj) in row[first + kd - i..kd].iter().zip(&done[first..]) {
+                s -= a * bj;
             }
-            b[i] = s;
+            rest[0] = s;
         }
-        for i in (0..n).rev() {
+        for (i, row) in self.a.chunks_exact(width).enumerate().take(n).rev() {
             let last = (i + kd).min(n - 1);
-            let mut s = b[i];
-            for (j, bj) in b.iter().enumerate().take(last + 1).skip(i + 1) {
-                s -= self.a[self.at(i, j)] * bj;
+            let (head, after) = b.split_at_mut(i + 1);
+            let mut s = head[i];
+            for (a, bj) in row[kd + 1..kd + 1 + (last - i)]
+                .iter()
+                .zip(&after[..last - i])
+            {
+                s -= a * bj;
             }
-            b[i] = s / self.a[self.at(i, i)];
+            head[i] = s / row[kd];
         }
     }
 }
@@ -97,23 +110,31 @@ mod tests {
 
     #[test]
     fn matches_dense_lu() {
-        let (n, kd) = (17, 5);
-        let mut band = BandedLu::new(n, kd);
-        let mut dense = DMatrix::<f64>::zeros(n, n);
-        for i in 0..n {
-            for j in i.saturating_sub(kd)..=(i + kd).min(n - 1) {
-                let v = ((i * 7 + j * 3) % 11) as f64 / 11.0 - 0.5 + if i == j { 6.0 } else { 0.0 };
-                band.set(i, j, v);
-                dense[(i, j)] = v;
+        // Bands narrower and wider than the matrix, and a 1×1.
+        for (n, kd) in [(17, 5), (8, 1), (3, 5), (1, 2)] {
+            let mut band = BandedLu::new(n, kd);
+            let mut dense = DMatrix::<f64>::zeros(n, n);
+            for i in 0..n {
+                for j in i.saturating_sub(kd)..=(i + kd).min(n - 1) {
+                    let v =
+                        ((i * 7 + j * 3) % 11) as f64 / 11.0 - 0.5 + if i == j { 6.0 } else { 0.0 };
+                    band.set(i, j, v);
+                    dense[(i, j)] = v;
+                }
             }
-        }
-        let b = DVector::from_fn(n, |i, _| (i as f64).sin());
-        let xd = dense.lu().solve(&b).unwrap();
-        band.factor().unwrap();
-        let mut x: Vec<f64> = b.iter().copied().collect();
-        band.solve(&mut x);
-        for i in 0..n {
-            assert!((x[i] - xd[i]).abs() < 1e-13, "{i}: {} vs {}", x[i], xd[i]);
+            let b = DVector::from_fn(n, |i, _| (i as f64).sin() + 1.0);
+            let xd = dense.lu().solve(&b).unwrap();
+            band.factor().unwrap();
+            let mut x: Vec<f64> = b.iter().copied().collect();
+            band.solve(&mut x);
+            for i in 0..n {
+                assert!(
+                    (x[i] - xd[i]).abs() < 1e-13,
+                    "n {n} kd {kd}, {i}: {} vs {}",
+                    x[i],
+                    xd[i]
+                );
+            }
         }
     }
 }
