@@ -23,6 +23,7 @@ use crate::physics::environment::Environment;
 use crate::physics::hydrodynamics::{DragModel, added_mass_of, drag_force_with_factor};
 use crate::physics::material::AxialStiffness;
 use crate::physics::obstacles::{LineBall, Obstacle};
+use crate::physics::static_kinematics::FluidPoints;
 
 /// Gauss points on [0, 1] for two-point quadrature (weight ½ each).
 const GAUSS: [Real; 2] = [0.5 - 0.288_675_134_594_812_9, 0.5 + 0.288_675_134_594_812_9];
@@ -68,6 +69,11 @@ crate::math::wide_simd_fn! {
         let consistent = mass_matrix == MassMatrix::Consistent;
         // No current and no waves: the fluid is at rest everywhere.
         let still_water = env.is_still_water();
+        // A steady current and no waves, with the fluid taken at each point: the batches
+        // compute the fluid load too.
+        let steady_current = env.waves.is_none()
+            && !env.current.is_unsteady()
+            && matches!(options.fluid, FluidPoints::Direct);
         let mut blocks = blocks;
         if let Some(b) = blocks.as_deref_mut() {
             // A lumped line's diagonal blocks are all written below, from its `LumpedMass`.
@@ -93,7 +99,7 @@ crate::math::wide_simd_fn! {
             let k = SectionConstants::new(sec, env);
             let lt = &sec.line_type;
             // Morison drag in fluid at rest: the batches compute it with the elements.
-            let batch_drag = still_water && k.morison.is_some();
+            let batch_drag = (still_water || steady_current) && k.morison.is_some();
             let mut batch = ElementBatch::default();
             for e0 in (first..end).step_by(LANES) {
                 let count = LANES.min(end - e0);
@@ -103,8 +109,18 @@ crate::math::wide_simd_fn! {
                     line.length_rate,
                     &r[e0..=end],
                     &v[e0..=end],
-                    batch_drag,
+                    batch_drag && still_water,
                 );
+                if batch_drag && !still_water {
+                    batch.current_drag(
+                        &k,
+                        env,
+                        sec.area,
+                        (lt.normal_added_mass, lt.tangential_added_mass),
+                        time,
+                        options.current_factor,
+                    );
+                }
                 tension_out[e0..e0 + count].copy_from_slice(&batch.tension[..count]);
                 strain_out[e0..e0 + count].copy_from_slice(&batch.strain[..count]);
                 // Structural and added mass (eqs. 12, 17–18): per unit length
@@ -356,6 +372,8 @@ struct ElementBatch {
     drag_a: [[Lanes; 3]; 2],
     /// Drag at Gauss point g times (L0/2) N_b(ξ_g) [N].
     drag_b: [[Lanes; 3]; 2],
+    /// The nodes, [r_a, r_b, v_a, v_b][component][lane] [m, m/s].
+    node: [[Lanes; 3]; 4],
 }
 
 // Lanes are indexed: the lane loops are what the compiler packs into registers.
@@ -388,6 +406,7 @@ impl ElementBatch {
                 node[3][c][l] = vb[c];
             }
         }
+        self.node = node;
         let [[xa, ya, za], [xb, yb, zb], [vxa, vya, vza], [vxb, vyb, vzb]] = node;
         let il = sec.inverse_length;
         let mut rate = Lanes::default();
@@ -461,6 +480,75 @@ impl ElementBatch {
                     q * (cn * nx + ct * (tx * vt)),
                     q * (cn * ny + ct * (ty * vt)),
                     q * (cn * nz + ct * (tz * vt)),
+                ];
+                for c in 0..3 {
+                    self.drag_a[g][c][l] = f[c] * wa;
+                    self.drag_b[g][c][l] = f[c] * wb;
+                }
+            }
+        }
+    }
+
+    /// The fluid load in a steady current without waves at both Gauss points, times each
+    /// node's share of the Gauss weight, into `drag_a` and `drag_b`: what [`fluid_load`]
+    /// computes there, lane by lane but for the current's velocity (one call a point):
+    /// Morison drag on the relative velocity u c_f − v (u the current under water, none in
+    /// the air; c_f `current_factor`) with the point's fluid density, plus the Froude–Krylov
+    /// and added-mass force of the fluid's acceleration, which is zero (kept, for the same
+    /// bits).
+    #[inline(always)]
+    fn current_drag(
+        &mut self,
+        k: &SectionConstants,
+        env: &Environment,
+        area: Real,
+        added_mass: (Real, Real),
+        time: Real,
+        current_factor: Real,
+    ) {
+        let Some((normal, tangential)) = k.morison else {
+            return;
+        };
+        let [[xa, ya, za], [xb, yb, zb], [vxa, vya, vza], [vxb, vyb, vzb]] = &self.node;
+        let (can, cat) = added_mass;
+        for (g, xi) in GAUSS.into_iter().enumerate() {
+            let (na, nb) = (1.0 - xi, xi);
+            let (wa, wb) = (k.half_length * na, k.half_length * nb);
+            let mut u = [Lanes::default(); 3];
+            for l in 0..LANES {
+                let z = za[l] * na + zb[l] * nb;
+                let point = Vec3::new(xa[l] * na + xb[l] * nb, ya[l] * na + yb[l] * nb, z);
+                let velocity = env.fluid_kinematics(&point, time).0;
+                for c in 0..3 {
+                    u[c][l] = velocity[c];
+                }
+            }
+            for l in 0..LANES {
+                let (tx, ty, tz) = (self.tx[l], self.ty[l], self.tz[l]);
+                let z = za[l] * na + zb[l] * nb;
+                let rx = u[0][l] * current_factor - (vxa[l] * na + vxb[l] * nb);
+                let ry = u[1][l] * current_factor - (vya[l] * na + vyb[l] * nb);
+                let rz = u[2][l] * current_factor - (vza[l] * na + vzb[l] * nb);
+                let vt = rx * tx + ry * ty + rz * tz;
+                let (nx, ny, nz) = (rx - tx * vt, ry - ty * vt, rz - tz * vt);
+                let vn = (nx * nx + ny * ny + nz * nz).sqrt();
+                let (density, factor) = if z < 0.0 {
+                    (env.water_density, k.drag_factor[0])
+                } else {
+                    (env.air_density, k.drag_factor[1])
+                };
+                let q = factor * self.root_stretch[l];
+                let (cn, ct) = (normal * vn, tangential * vt.abs());
+                // `fluid_inertia_force` of the zero acceleration: a_t = t (0·t), a_n = 0 − a_t.
+                let a0 = 0.0 * tx + 0.0 * ty + 0.0 * tz;
+                let inertia = |t: Real| {
+                    let at = t * a0;
+                    density * area * ((1.0 + can) * (0.0 - at) + cat * at)
+                };
+                let f = [
+                    q * (cn * nx + ct * (tx * vt)) + inertia(tx),
+                    q * (cn * ny + ct * (ty * vt)) + inertia(ty),
+                    q * (cn * nz + ct * (tz * vt)) + inertia(tz),
                 ];
                 for c in 0..3 {
                     self.drag_a[g][c][l] = f[c] * wa;
