@@ -39,12 +39,12 @@ crate::math::wide_simd_fn! {
     /// The element loop walks the line once, section by section, with everything that does not
     /// change along a section computed once (`SectionConstants`), four elements at a time
     /// (`ElementBatch`): what depends on one element only (tangent, strain, tension, weight and
-    /// buoyancy, drag in fluid at rest) is computed lane by lane, then each node's force is
-    /// summed from the contributions of element e − 1, then those of element e, in the order
-    /// of the equations above (tension, weight and buoyancy, the two Gauss points, seabed
-    /// contact), so that every node receives the same sums in the same order whatever the
-    /// section boundaries and the lanes. Where a batch is clear of the seabed in fluid at rest
-    /// the node sums go lane by lane too.
+    /// buoyancy, Morison's fluid load in fluid at rest or a steady current without waves) is
+    /// computed lane by lane, then each node's force is summed from the contributions of
+    /// element e − 1, then those of element e, in the order of the equations above (tension,
+    /// weight and buoyancy, the two Gauss points, seabed contact), so that every node receives
+    /// the same sums in the same order whatever the section boundaries and the lanes. Where a batch is clear of the seabed and its fluid
+    /// load is in the lanes, the node sums go lane by lane too.
     ///
     /// The loop is compiled for AVX2 and for SSE2 (`crate::math::wide_simd_fn`), with the
     /// same bits from both.
@@ -98,7 +98,8 @@ crate::math::wide_simd_fn! {
             let sec = &line.sections[section];
             let k = SectionConstants::new(sec, env);
             let lt = &sec.line_type;
-            // Morison drag in fluid at rest: the batches compute it with the elements.
+            // Morison's fluid load in fluid at rest or a steady current: the batches compute it
+            // with the elements.
             let batch_drag = (still_water || steady_current) && k.morison.is_some();
             let mut batch = ElementBatch::default();
             for e0 in (first..end).step_by(LANES) {
@@ -143,8 +144,8 @@ crate::math::wide_simd_fn! {
                     }
                 }
                 if batch_drag && r[e0..=e0 + count].iter().all(|p| !(p.z < bed_top)) {
-                    // Clear of the bed with nothing but the batch's own terms: the nodes' sums
-                    // lane by lane too.
+                    // Clear of the bed, the fluid load in the lanes: nothing but the batch's own
+                    // terms, so the nodes' sums lane by lane too.
                     node_force = batch.sum_nodes(node_force, &mut forces[e0..e0 + count], count);
                     previous_half = k.half_length;
                     continue;
@@ -343,8 +344,9 @@ type Lanes = [Real; LANES];
 
 /// The quantities of up to [`LANES`] consecutive elements of one section that depend on
 /// nothing but the element: unit tangent t, strain ε, tension T and its nodal force T t
-/// (eqs. 7–9, 13–15), √(1+ε), and in fluid at rest Morison's drag (eqs. 16, 19–23) at both
-/// Gauss points times each node's share of the Gauss weight, (L0/2) N_a(ξ_g) and
+/// (eqs. 7–9, 13–15), √(1+ε), weight and buoyancy, and in fluid at rest or a steady current
+/// Morison's fluid load (eqs. 16, 19–23) at both Gauss points times each node's share of
+/// the Gauss weight, (L0/2) N_a(ξ_g) and
 /// (L0/2) N_b(ξ_g). [`line_forces`] adds them node by node in its own order. Each lane runs
 /// the expressions a per-element loop would, so the results are the same bits whatever the
 /// lane count or the instruction set.
