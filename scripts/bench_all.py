@@ -155,7 +155,8 @@ def oc3_same_step(a, md_deck, x0, surge, md_steps, nodes):
     print(f"  MoorDyn RK2 dt 2 ms: {statistics.median(md_step) * 1e6:.1f} us CPU per step, "
           f"{nodes / statistics.median(md_step):.3e} node-steps per CPU s")
     print(f"  hawser RK4 lumped dt 2 ms: {statistics.median(h_step) * 1e6:.1f} us CPU per step, "
-          f"{ns:.3e} node-steps per CPU s")
+          f"{ns:.3e} node-steps per CPU s (element loop on "
+          f"{same[0].get('instruction_set', 'an unreported instruction set')})")
     print(f"  target: hawser >= 1.0e7 node-steps per CPU s (RK4, lumped): {ns:.3e} "
           f"[{'met' if ns >= 1e7 else 'NOT met'}]")
     print(f"  target: MoorDyn CPU per step / hawser's >= 2 at the same step: {ratio_same:.2f} "

@@ -288,6 +288,8 @@ fn bench_compares_bodies_with_points_and_seas_with_still_water() {
         let bodies = r["free_bodies"].as_u64().unwrap();
         assert_eq!((points, bodies), if points > 0 { (8, 0) } else { (0, 8) });
         assert!(r["us_per_step"].as_f64().unwrap() > 0.0);
+        let isa = r["instruction_set"].as_str();
+        assert!(matches!(isa, Some("avx2" | "sse2" | "baseline")), "{r}");
         if bodies > 0 {
             assert!(
                 r["body_overhead_us_per_body_step"]

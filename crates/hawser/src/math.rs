@@ -107,14 +107,30 @@ pub fn solve3(m: &Mat3, b: &Vec3) -> Option<Vec3> {
 /// Whether the loops written lane by lane run their AVX2 version ([`wide_simd_fn`]): the
 /// processor has AVX2 and the environment variable `HAWSER_SIMD` is not `baseline` (read
 /// once per process; `HAWSER_SIMD=baseline` runs the SSE2 version, to check that a result
-/// does not depend on the instruction set).
-#[cfg(target_arch = "x86_64")]
+/// does not depend on the instruction set). Always false off x86-64.
 pub fn wide_simd() -> bool {
-    static WIDE: std::sync::LazyLock<bool> = std::sync::LazyLock::new(|| {
-        std::arch::is_x86_feature_detected!("avx2")
-            && std::env::var_os("HAWSER_SIMD").is_none_or(|v| v != "baseline")
-    });
-    *WIDE
+    #[cfg(target_arch = "x86_64")]
+    {
+        static WIDE: std::sync::LazyLock<bool> = std::sync::LazyLock::new(|| {
+            std::arch::is_x86_feature_detected!("avx2")
+                && std::env::var_os("HAWSER_SIMD").is_none_or(|v| v != "baseline")
+        });
+        *WIDE
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    false
+}
+
+/// The instruction set the lane-by-lane loops run on: "avx2", "sse2" (x86-64 without AVX2 or
+/// with `HAWSER_SIMD=baseline`) or "baseline" (other targets). `hawser bench` reports it.
+pub fn instruction_set() -> &'static str {
+    if wide_simd() {
+        "avx2"
+    } else if cfg!(target_arch = "x86_64") {
+        "sse2"
+    } else {
+        "baseline"
+    }
 }
 
 /// Defines a function whose body is compiled twice, for AVX2 and for the target's baseline

@@ -402,6 +402,7 @@ fn bench(
             "wave_table_bytes": memory,
             "wave_table_points": sim.workspace().wave_points.tables().map(|t| t.points()),
             "us_per_step": cpu * 1e6 / steps as f64,
+            "instruction_set": hawser::math::instruction_set(),
         }));
     }
     add_differences(&mut results);
@@ -482,6 +483,10 @@ fn bench(
                 r["node_evaluations_per_s"].as_f64().unwrap_or(0.0)
             );
         }
+        out!(
+            "fe element loop on {} (HAWSER_SIMD=baseline for the SSE2 version)",
+            hawser::math::instruction_set()
+        );
     }
     Ok(ExitCode::SUCCESS)
 }
