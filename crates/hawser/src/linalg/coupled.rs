@@ -514,9 +514,9 @@ impl CoupledSystem {
         }
     }
 
-    /// Steps 1 and 2 of [`CoupledSystem::solve`] for a line of block bandwidth w > 1: the
-    /// interior by banded LU, its responses to the free ends, and its contributions to the
-    /// points' Schur complement, S_pp += A_ee − Σ_j A_ej R_j, b_p += x_e − Σ_j A_ej z_j.
+    /// Step 1 of [`CoupledSystem::solve`] for a line of block bandwidth w > 1: the interior by
+    /// banded LU and its responses to the free ends (step 2 is
+    /// [`CoupledSystem::banded_contributions`]).
     fn eliminate_banded(&mut self, li: usize, line: &mut LineBlocks) -> Result<(), Singular> {
         let n = line.nodes() - 1;
         let w = line.width();
@@ -595,6 +595,16 @@ impl CoupledSystem {
                 }
             }
         }
+        Ok(())
+    }
+
+    /// Step 2 of [`CoupledSystem::solve`] for a line of block bandwidth w > 1 after
+    /// [`CoupledSystem::eliminate_banded`]: its contributions to the points' Schur
+    /// complement, S_pp += A_ee − Σ_j A_ej R_j, b_p += x_e − Σ_j A_ej z_j.
+    fn banded_contributions(&mut self, line: &LineBlocks) {
+        let n = line.nodes() - 1;
+        let w = line.width();
+        let near = |i: usize, node: usize| i.abs_diff(node) <= w;
         for (end, node) in [(line.end_a, 0), (line.end_b, n)] {
             let EndKind::Free(p) = end else { continue };
             let d = line.diag[node];
@@ -633,7 +643,6 @@ impl CoupledSystem {
                 }
             }
         }
-        Ok(())
     }
 
     /// Solves the whole system in place: every line's `x` and `point_x` become the solution.
@@ -709,7 +718,7 @@ impl CoupledSystem {
                                 node: k + 1,
                             })?;
                     }
-                    line.factor.solve(interior, &mut line.x[1..n]);
+                    // The solve waits for the other lines' (below).
                     if !self.factoring {
                         // The responses depend on the blocks only: kept.
                     } else if let EndKind::Free(_) = line.end_a {
@@ -733,7 +742,32 @@ impl CoupledSystem {
                     }
                 }
             }
-            // 2. Contributions of this line to the point system.
+        }
+        // The coupled tridiagonal lines' solves, interleaved four lines at a time.
+        let mut group: [Option<(&BlockTridiagonal, usize, &mut [Vec3])>; 4] = Default::default();
+        let mut members = 0;
+        let solvable = lines
+            .iter_mut()
+            .filter(|l| l.coupled && l.width() == 1 && l.nodes() > 2);
+        for line in solvable {
+            let n = line.nodes() - 1;
+            group[members] = Some((&line.factor, n - 1, &mut line.x[1..n]));
+            members += 1;
+            if members == group.len() {
+                BlockTridiagonal::solve_group(&mut group);
+                group = Default::default();
+                members = 0;
+            }
+        }
+        BlockTridiagonal::solve_group(&mut group);
+        // 2. Contributions of each line to the point system, in the lines' order.
+        for line in lines.iter() {
+            if line.coupled && line.width() > 1 {
+                self.banded_contributions(line);
+                continue;
+            }
+            let n = line.nodes() - 1;
+            let interior = n - 1;
             for (end, node, next) in [(line.end_a, 0usize, 1usize), (line.end_b, n, n - 1)] {
                 let EndKind::Free(p) = end else { continue };
                 let d = line.diag[node];
