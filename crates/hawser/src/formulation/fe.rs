@@ -468,21 +468,9 @@ impl ElementBatch {
                 let rx = -(vxa[l] * na + vxb[l] * nb);
                 let ry = -(vya[l] * na + vyb[l] * nb);
                 let rz = -(vza[l] * na + vzb[l] * nb);
-                let vt = rx * tx + ry * ty + rz * tz;
-                let (nx, ny, nz) = (rx - tx * vt, ry - ty * vt, rz - tz * vt);
-                let vn = (nx * nx + ny * ny + nz * nz).sqrt();
-                let factor = if z < 0.0 {
-                    k.drag_factor[0]
-                } else {
-                    k.drag_factor[1]
-                };
+                let factor = k.drag_factor[fluid(z)];
                 let q = factor * self.root_stretch[l];
-                let (cn, ct) = (normal * vn, tangential * vt.abs());
-                let f = [
-                    q * (cn * nx + ct * (tx * vt)),
-                    q * (cn * ny + ct * (ty * vt)),
-                    q * (cn * nz + ct * (tz * vt)),
-                ];
+                let f = morison_lane((normal, tangential), q, [tx, ty, tz], [rx, ry, rz]);
                 for c in 0..3 {
                     self.drag_a[g][c][l] = f[c] * wa;
                     self.drag_b[g][c][l] = f[c] * wb;
@@ -531,16 +519,9 @@ impl ElementBatch {
                 let rx = u[0][l] * current_factor - (vxa[l] * na + vxb[l] * nb);
                 let ry = u[1][l] * current_factor - (vya[l] * na + vyb[l] * nb);
                 let rz = u[2][l] * current_factor - (vza[l] * na + vzb[l] * nb);
-                let vt = rx * tx + ry * ty + rz * tz;
-                let (nx, ny, nz) = (rx - tx * vt, ry - ty * vt, rz - tz * vt);
-                let vn = (nx * nx + ny * ny + nz * nz).sqrt();
-                let (density, factor) = if z < 0.0 {
-                    (env.water_density, k.drag_factor[0])
-                } else {
-                    (env.air_density, k.drag_factor[1])
-                };
-                let q = factor * self.root_stretch[l];
-                let (cn, ct) = (normal * vn, tangential * vt.abs());
+                let density = env.fluid_density(z);
+                let q = k.drag_factor[fluid(z)] * self.root_stretch[l];
+                let drag = morison_lane((normal, tangential), q, [tx, ty, tz], [rx, ry, rz]);
                 // `fluid_inertia_force` of the zero acceleration: a_t = t (0·t), a_n = 0 − a_t.
                 let a0 = 0.0 * tx + 0.0 * ty + 0.0 * tz;
                 let inertia = |t: Real| {
@@ -548,9 +529,9 @@ impl ElementBatch {
                     density * area * ((1.0 + can) * (0.0 - at) + cat * at)
                 };
                 let f = [
-                    q * (cn * nx + ct * (tx * vt)) + inertia(tx),
-                    q * (cn * ny + ct * (ty * vt)) + inertia(ty),
-                    q * (cn * nz + ct * (tz * vt)) + inertia(tz),
+                    drag[0] + inertia(tx),
+                    drag[1] + inertia(ty),
+                    drag[2] + inertia(tz),
                 ];
                 for c in 0..3 {
                     self.drag_a[g][c][l] = f[c] * wa;
@@ -603,6 +584,26 @@ impl ElementBatch {
         let last = count - 1;
         Vec3::new(second[0][last], second[1][last], second[2][last])
     }
+}
+
+/// Morison's drag per unit unstretched length [N/m] (DG paper eq. 17) at one point of one
+/// lane: q (C_dn |v_n| v_n + C_dt |v_t| v_t) for the relative velocity `r` [m/s] split along
+/// the unit tangent `t`, q = ½ ρ d √(1+ε) [kg/m²] and (C_dn, C_dt) `coefficients`; the
+/// operations of [`drag_force_with_factor`], written out so that the lanes pack.
+#[inline(always)]
+fn morison_lane(coefficients: (Real, Real), q: Real, t: [Real; 3], r: [Real; 3]) -> [Real; 3] {
+    let (normal, tangential) = coefficients;
+    let [tx, ty, tz] = t;
+    let [rx, ry, rz] = r;
+    let vt = rx * tx + ry * ty + rz * tz;
+    let (nx, ny, nz) = (rx - tx * vt, ry - ty * vt, rz - tz * vt);
+    let vn = (nx * nx + ny * ny + nz * nz).sqrt();
+    let (cn, ct) = (normal * vn, tangential * vt.abs());
+    [
+        q * (cn * nx + ct * (tx * vt)),
+        q * (cn * ny + ct * (ty * vt)),
+        q * (cn * nz + ct * (tz * vt)),
+    ]
 }
 
 /// The index of the fluid at height z [m] in [`SectionConstants`]' pairs: 0 in water (z < 0),
