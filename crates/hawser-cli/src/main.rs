@@ -626,9 +626,14 @@ fn check(file: &Path, deck: &DeckArgs) -> Result<ExitCode> {
     let plan = if adaptive {
         // The accuracy step bounds the adaptive steps from above only: the response (slack,
         // contact, friction) sets how many are taken.
+        let switching = if model.settings.scheme == Scheme::Auto {
+            "; where generalized-α does more work than RK4 would, RK4 steps that stretch"
+        } else {
+            ""
+        };
         format!(
             "adaptive steps of at most {step:.4e} s, at least {steps:.0} for {duration} s; the \
-             response sets how many (RK4's stable time step {limit:.4e} s)"
+             response sets how many (RK4's stable time step {limit:.4e} s){switching}"
         )
     } else {
         format!(

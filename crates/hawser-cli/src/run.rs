@@ -653,6 +653,9 @@ fn drive(
                         s.jacobians
                     );
                 }
+                if let Some(w) = session.scheme_switch() {
+                    err!("{}", switch_summary(&w, session.sample_interval()));
+                }
             }
             Ok(ExitCode::SUCCESS)
         }
@@ -674,5 +677,20 @@ fn drive(
             );
             Ok(ExitCode::from(1))
         }
+    }
+}
+
+/// `auto`'s switching in words: the time stepped by each scheme and the switches.
+fn switch_summary(w: &hawser::integrate::choice::SchemeSwitch, interval: f64) -> String {
+    let explicit = w.explicit_outputs as f64 * interval;
+    if w.switches == 0 {
+        "auto: generalized-α throughout (it did less work than RK4 would have in every window)"
+            .to_string()
+    } else {
+        format!(
+            "auto: RK4 stepped {explicit:.2} s where generalized-α did more work than it would \
+             have; {} switches between the two",
+            w.switches
+        )
     }
 }

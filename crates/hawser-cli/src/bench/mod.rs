@@ -382,6 +382,12 @@ fn bench(
             "formulation": system.lines.first().map_or("fe", |l| l.discretisation.name()),
             "order": model.lines.first().filter(|l| l.formulation == Formulation::Dg).map(|l| l.sections[0].order),
             "scheme": sim.scheme().scheme.name(),
+            // `auto` started with generalized-α: its switches to RK4 and back, and the share of
+            // the simulated time RK4 stepped.
+            "scheme_switches": sim.scheme_switch().map(|w| w.switches),
+            "rk4_share": sim.scheme_switch().map(|w| {
+                w.explicit_outputs as f64 * model.settings.output_interval / model.settings.duration
+            }),
             "stable_step": limit,
             "mass_matrix": format!("{:?}", c.mass).to_lowercase(),
             "nodes": nodes,

@@ -187,6 +187,102 @@ pub fn shortest_period(system: &System) -> Option<Real> {
     shortest.is_finite().then_some(shortest)
 }
 
+/// Work of one generalized-α Newton iteration, in RK4 force evaluations [-]: an evaluation of
+/// the forces and mass, the residual, a block solve and the step's share of the predictor,
+/// error estimate and commit. Measured at 1.9 (README example), 2.1 (OC3 in surge) and 2.7
+/// (the stiff-seabed chain): CPU per iteration over CPU per RK4 evaluation on the same
+/// scenario (docs/implicit.md).
+pub const ITERATION_WORK: Real = 2.2;
+
+/// Work of forming generalized-α's Jacobian, in RK4 force evaluations [-]: the coloured finite
+/// differences take 2 (2w + 1)·3 + 2 = 20 line evaluations for the tridiagonal blocks (w = 1)
+/// of an `fe` line.
+pub const JACOBIAN_WORK: Real = 20.0;
+
+/// Generalized-α stays while its work over a window is within this factor of what RK4 at its
+/// automatic step would do there [-]: a small preference for the scheme that controls its
+/// error, within the spread of the measured work per iteration (1.9 to 2.7). On the
+/// stiff-seabed chain 1.0, 1.2 and 1.5 gave 5.2, 5.0 and 5.7 s of CPU (docs/implicit.md).
+pub const SWITCH_MARGIN: Real = 1.5;
+
+/// Output intervals in a window over which the two schemes' work is compared [-].
+pub const WINDOW_OUTPUTS: u64 = 10;
+
+/// The longest stretch RK4 runs before generalized-α is tried again, in windows [-]: after
+/// k windows lost in a row, RK4 runs 2^k windows, at most this many.
+pub const LONGEST_EXPLICIT_STRETCH: u64 = 64;
+
+/// `scheme = "auto"` while the run goes: which of generalized-α and RK4 steps now, and the
+/// work that decides it. A run that `auto` starts with adaptive generalized-α compares, over
+/// windows of [`WINDOW_OUTPUTS`] output intervals, the work its Newton iterations and
+/// Jacobians did ([`ITERATION_WORK`], [`JACOBIAN_WORK`]) with the 4 n evaluations per output
+/// interval of RK4 at its automatic step (n steps per interval). When generalized-α's exceeds
+/// [`SWITCH_MARGIN`] times RK4's (already within a window, or over it), the run goes on with
+/// RK4 from that output time; after RK4 has run 2^k windows (k the windows generalized-α lost
+/// in a row, the stretch at most [`LONGEST_EXPLICIT_STRETCH`] windows) generalized-α is tried
+/// again from the state there. The rule reads counts only, never a clock, so a run makes the
+/// same choices, and gives the same bits, every time; a snap, whose ringing holds the
+/// adaptive step below RK4's stable step, is stepped by RK4, and the calm between snaps by
+/// generalized-α.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct SchemeSwitch {
+    /// Whether RK4 steps now (generalized-α otherwise).
+    pub explicit: bool,
+    /// The output index at which the current window (generalized-α) or stretch (RK4) began.
+    pub since_output: u64,
+    /// Generalized-α's work in the current window [RK4 evaluations].
+    pub work: Real,
+    /// Windows generalized-α lost in a row.
+    pub losses: u32,
+    /// Switches so far, either way.
+    pub switches: u64,
+    /// Output intervals stepped by RK4 so far.
+    pub explicit_outputs: u64,
+    /// Generalized-α's nominal step when RK4 took over [s]: its first step when it comes back.
+    pub implicit_nominal: Real,
+}
+
+impl SchemeSwitch {
+    /// Adds a generalized-α attempt's work: its Newton `iterations` and `jacobians` formed.
+    pub fn add_attempt(&mut self, iterations: u64, jacobians: u64) {
+        self.work += ITERATION_WORK * iterations as Real + JACOBIAN_WORK * jacobians as Real;
+    }
+
+    /// At the sample of output index `output` (k of t = k Δt_out), with RK4 taking
+    /// `explicit_steps` steps per output interval: whether the scheme changes now (true: the
+    /// other scheme steps from here).
+    pub fn at_output(&mut self, output: u64, explicit_steps: u64) -> bool {
+        let elapsed = output.saturating_sub(self.since_output);
+        let rk4 = |outputs: u64| 4.0 * (explicit_steps * outputs) as Real;
+        if self.explicit {
+            self.explicit_outputs += 1;
+            let stretch = (1u64 << self.losses.min(63)).min(LONGEST_EXPLICIT_STRETCH);
+            if elapsed < stretch * WINDOW_OUTPUTS {
+                return false;
+            }
+            self.explicit = false;
+        } else {
+            let over = |outputs: u64| self.work > SWITCH_MARGIN * rk4(outputs);
+            if over(WINDOW_OUTPUTS) || (elapsed >= WINDOW_OUTPUTS && over(elapsed)) {
+                self.losses = self.losses.saturating_add(1);
+                self.explicit = true;
+            } else if elapsed >= WINDOW_OUTPUTS {
+                // Generalized-α won the window: a new one starts.
+                self.losses = 0;
+                self.since_output = output;
+                self.work = 0.0;
+                return false;
+            } else {
+                return false;
+            }
+        }
+        self.since_output = output;
+        self.work = 0.0;
+        self.switches += 1;
+        true
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -195,6 +291,69 @@ mod tests {
     /// the rounding of K) and scales as tol^(-1/3): a hundredfold tolerance gives
     /// 100^(1/3) = 4.64 times the steps, as the controller's measured 4.1 to 4.6 (round-off
     /// only, 1e-12).
+    /// Generalized-α keeps stepping while its work in a window stays within the margin of
+    /// RK4's, the window starting again after each; a window whose work passes it hands over
+    /// to RK4 at once (here at the third output of a window), for 2, 4, 8, … windows after 1,
+    /// 2, 3, … lost in a row, at most 64; a window won resets the count. The work is set in
+    /// fractions of the window's budget, so the test holds for any value of the constants.
+    #[test]
+    fn switches_when_generalized_alpha_does_more_work_than_rk4() {
+        let mut w = SchemeSwitch::default();
+        w.add_attempt(3, 2);
+        assert_eq!(w.work, 3.0 * ITERATION_WORK + 2.0 * JACOBIAN_WORK);
+        w.work = 0.0;
+        // RK4: 5 steps per output; the window's budget: the margin times its 200 evaluations.
+        let steps = 5;
+        let budget = SWITCH_MARGIN * 4.0 * (steps * WINDOW_OUTPUTS) as Real;
+        let per_output = budget / WINDOW_OUTPUTS as Real;
+        for k in 1..=25 {
+            w.work += 0.25 * per_output;
+            assert!(!w.at_output(k, steps), "output {k}");
+        }
+        assert_eq!((w.since_output, w.losses, w.switches), (20, 0, 0));
+        // Four times the allowance per output: over the budget at the third output.
+        let mut k = 25;
+        let switched = loop {
+            k += 1;
+            w.work += 4.0 * per_output;
+            if w.at_output(k, steps) {
+                break k;
+            }
+        };
+        assert_eq!(
+            switched, 28,
+            "1.25 + 12 > 10 outputs' allowance at the third output"
+        );
+        assert!(w.explicit);
+        assert_eq!((w.losses, w.switches, w.work), (1, 1, 0.0));
+        // RK4 for 2 windows (20 outputs), then generalized-α again.
+        for j in 1..=20 {
+            let back = w.at_output(switched + j, steps);
+            assert_eq!(back, j == 20, "output {}", switched + j);
+        }
+        assert!(!w.explicit);
+        assert_eq!(w.explicit_outputs, 20);
+        // It loses again at once (a tenth over the budget), and RK4 runs 4 windows.
+        w.work = 1.1 * budget;
+        assert!(w.at_output(switched + 21, steps));
+        assert_eq!(w.losses, 2);
+        let back = (1..=40).find(|j| w.at_output(switched + 21 + j, steps));
+        assert_eq!(back, Some(40));
+        // Many losses: the stretch stops growing at 64 windows.
+        w.losses = 40;
+        w.explicit = true;
+        w.since_output = 0;
+        let back = (1..=1000).find(|&j| w.at_output(j, steps));
+        assert_eq!(back, Some(LONGEST_EXPLICIT_STRETCH * WINDOW_OUTPUTS));
+        // A window won (work within the margin over all ten outputs) resets the losses.
+        let start = w.since_output;
+        for j in 1..=10 {
+            w.work += 0.95 * per_output;
+            assert!(!w.at_output(start + j, steps));
+        }
+        assert_eq!((w.losses, w.since_output), (0, start + 10));
+    }
+
     #[test]
     fn steps_per_period_scales_as_the_cube_root() {
         let (n4, n6) = (steps_per_period(1e-4), steps_per_period(1e-6));

@@ -45,14 +45,20 @@ impl BlockTridiagonal {
 
     /// Solves in place for one right-hand side of `n` 3-vectors.
     #[inline]
+    #[allow(clippy::needless_range_loop)] // rows i of three arrays
     pub fn solve(&self, n: usize, x: &mut [Vec3]) {
+        // Each substitution's last result is carried in registers to the next row, rather than
+        // stored and loaded again (a store-to-load delay on the dependency chain).
+        let mut last = x[0];
         for i in 1..n {
-            let y = x[i] - self.multiplier[i] * x[i - 1];
-            x[i] = y;
+            last = x[i] - self.multiplier[i] * last;
+            x[i] = last;
         }
-        x[n - 1] = self.inv_diag[n - 1] * x[n - 1];
+        last = self.inv_diag[n - 1] * last;
+        x[n - 1] = last;
         for i in (0..n.saturating_sub(1)).rev() {
-            x[i] = self.inv_diag[i] * (x[i] - self.upper[i] * x[i + 1]);
+            last = self.inv_diag[i] * (x[i] - self.upper[i] * last);
+            x[i] = last;
         }
     }
 

@@ -6,21 +6,23 @@
 //! ([`model_hash`], u64), then the run: samples taken and the last sample time, the clock, the
 //! stability limit and what sets it, the state vector, the scheme's history (the three-level
 //! scheme's previous level and last step; generalized-α's accelerations, step controller and
-//! Jacobian), the line failures' releases (version 2), the coupling tracks and interval, and the saved start of the coupling
-//! interval. Every number is stored exactly (f64 bits), so a restored run steps exactly as the
+//! Jacobian), the line failures' releases (version 2), `scheme = "auto"`'s switching between
+//! generalized-α and RK4 (version 3), the coupling tracks and interval, and the saved start of
+//! the coupling interval. Every number is stored exactly (f64 bits), so a restored run steps exactly as the
 //! saved one would have. A checkpoint of another model, of another format version or a
 //! truncated one is refused with [`SimulationError::Checkpoint`].
 
 use super::stepper::{Clock, Saved};
 use super::{Session, SessionOptions};
 use crate::error::SimulationError;
+use crate::integrate::choice::SchemeSwitch;
 use crate::math::{Real, Vec3, quat_from_coords};
 use crate::model::{BodyTrack, Model, PointTrack};
 use crate::system::CouplingTracks;
 
 const MAGIC: &[u8; 8] = b"HAWSERCK";
 /// The checkpoint format version this build writes and reads.
-pub const CHECKPOINT_VERSION: u32 = 2;
+pub const CHECKPOINT_VERSION: u32 = 3;
 
 /// FNV-1a (64 bits) of `bytes`: stable across platforms and Rust versions.
 pub fn fnv1a(bytes: &[u8]) -> u64 {
@@ -189,6 +191,14 @@ fn put_saved(e: &mut Encoder, s: &Saved) {
             super::ReleaseCause::Host => 2,
         });
     }
+    let w = &s.switch;
+    e.bool(w.explicit);
+    e.u64(w.since_output);
+    e.f64(w.work);
+    e.u64(w.losses as u64);
+    e.u64(w.switches);
+    e.u64(w.explicit_outputs);
+    e.f64(w.implicit_nominal);
 }
 
 fn get_saved(d: &mut Decoder) -> Result<Saved, SimulationError> {
@@ -220,6 +230,15 @@ fn get_saved(d: &mut Decoder) -> Result<Saved, SimulationError> {
                 }));
             }
             releases
+        },
+        switch: SchemeSwitch {
+            explicit: d.bool()?,
+            since_output: d.u64()?,
+            work: d.f64()?,
+            losses: u32::try_from(d.u64()?).map_err(|_| truncated())?,
+            switches: d.u64()?,
+            explicit_outputs: d.u64()?,
+            implicit_nominal: d.f64()?,
         },
     })
 }

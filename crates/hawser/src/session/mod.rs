@@ -262,6 +262,13 @@ impl Session {
         self.stepper.implicit_statistics()
     }
 
+    /// `scheme = "auto"`'s switching between generalized-α and RK4 so far
+    /// ([`crate::integrate::choice::SchemeSwitch`]; `None` unless `auto` started the run with
+    /// adaptive generalized-α).
+    pub fn scheme_switch(&self) -> Option<crate::integrate::choice::SchemeSwitch> {
+        self.stepper.scheme_switch()
+    }
+
     /// Steps taken so far.
     pub fn steps_done(&self) -> u64 {
         self.stepper.steps_done()

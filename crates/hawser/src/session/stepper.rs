@@ -3,8 +3,11 @@
 //! low-level [`crate::simulation::Simulation`] borrows a system for tests that compose parts.
 
 use crate::error::{ModelError, SimulationError};
+use crate::integrate::choice::SchemeSwitch;
 use crate::integrate::generalized_alpha::{Attempt, Statistics};
-use crate::integrate::{ExplicitRk, GeneralizedAlpha, SchemeChoice, ThreeLevel, choose_scheme};
+use crate::integrate::{
+    ExplicitRk, GeneralizedAlpha, RK4, SchemeChoice, ThreeLevel, choose_scheme,
+};
 use crate::math::Real;
 use crate::model::{Scheme, Settings, TimeStep};
 use crate::system::{Location, System, Workspace};
@@ -108,6 +111,26 @@ pub(crate) struct Saved {
     pub last_step: Real,
     /// Per failure of the system: its release, if it happened ([`Stepper::releases`]).
     pub releases: Vec<Option<super::Release>>,
+    /// `scheme = "auto"`'s switching between generalized-α and RK4 (default when the run
+    /// does not switch).
+    pub switch: SchemeSwitch,
+}
+
+/// What a run that `scheme = "auto"` started with adaptive generalized-α needs to go on with
+/// RK4 and back ([`SchemeSwitch`]): the scheme not stepping now, sized at the start so that a
+/// switch allocates nothing, and each scheme's step and stability limit.
+#[derive(Clone, Debug)]
+pub(crate) struct AutoSwitch {
+    /// Which scheme steps, and the work that decides it.
+    pub state: SchemeSwitch,
+    /// The integrator not stepping now.
+    standby: Integrator,
+    /// The stability limit [s] and what sets it of the scheme not stepping now.
+    standby_limit: (Real, String),
+    /// RK4's automatic step [s]: the output interval in `explicit_steps` equal steps.
+    explicit_step: Real,
+    /// RK4's steps per output interval.
+    explicit_steps: u64,
 }
 
 /// A run in progress on some system: integrator, clock, state and scratch, sized once.
@@ -143,6 +166,9 @@ pub struct Stepper {
     /// The run's first step [s]: an adaptive generalized-α run restarts its controller from
     /// it (or from its current step, when shorter) after a release ([`Stepper::restart`]).
     pub(crate) first_step: Real,
+    /// `scheme = "auto"` started with adaptive generalized-α: the switching to RK4 and back
+    /// ([`SchemeSwitch`]); `None` for every other run.
+    pub(crate) auto: Option<Box<AutoSwitch>>,
 }
 
 /// What a step size rule found wrong.
@@ -264,6 +290,29 @@ impl Stepper {
         } else {
             step * per_output
         };
+        // `auto` chose adaptive generalized-α: RK4 at its automatic step stands by for the
+        // stretches where it is the cheaper ([`SchemeSwitch`]).
+        let auto = if adaptive
+            && settings.scheme == Scheme::Auto
+            && scheme_error(system, Scheme::Rk4).is_none()
+        {
+            let (limit, culprit) = system.stable_step(Scheme::Rk4);
+            let steps = (interval / (settings.safety_factor * limit))
+                .ceil()
+                .max(1.0);
+            // A degenerate RK4 step (zero, not finite, or beyond any run's length) never wins.
+            (steps.is_finite() && steps <= MAX_STEPS).then(|| {
+                Box::new(AutoSwitch {
+                    state: SchemeSwitch::default(),
+                    standby: Integrator::Rk(ExplicitRk::new(&RK4, n)),
+                    standby_limit: (limit, culprit),
+                    explicit_step: interval / steps,
+                    explicit_steps: steps as u64,
+                })
+            })
+        } else {
+            None
+        };
         Ok(Self {
             ws,
             integrator,
@@ -289,7 +338,50 @@ impl Stepper {
             planned: false,
             releases: vec![None; system.failures.len()],
             first_step: step,
+            auto,
         })
+    }
+
+    /// `scheme = "auto"`'s switching so far (`None` unless `auto` started the run with
+    /// adaptive generalized-α): switches made and output intervals stepped by RK4.
+    pub fn scheme_switch(&self) -> Option<SchemeSwitch> {
+        self.auto.as_ref().map(|a| a.state)
+    }
+
+    /// Puts the standby scheme in place of the stepping one ([`SchemeSwitch`]), at an output
+    /// time: RK4 takes its automatic step; generalized-α starts again from the state as at
+    /// the start of a run (its reference tensions kept), from the step it had when it left.
+    /// Allocates nothing.
+    fn swap_scheme(&mut self) {
+        let Some(auto) = self.auto.as_deref_mut() else {
+            return;
+        };
+        std::mem::swap(&mut self.integrator, &mut auto.standby);
+        std::mem::swap(&mut self.stable_step, &mut auto.standby_limit);
+        match &mut self.integrator {
+            Integrator::GeneralizedAlpha { scheme, .. } => {
+                scheme.restart(&self.ws);
+                self.clock.nominal = auto.state.implicit_nominal;
+            }
+            _ => {
+                auto.state.implicit_nominal = self.clock.nominal;
+                self.clock.set_step(auto.explicit_step);
+                self.clock.nominal = auto.explicit_step;
+            }
+        }
+        self.accelerations_at = None;
+    }
+
+    /// The generalized-α integrator of the run, stepping or standing by.
+    fn implicit_mut(&mut self) -> Option<&mut GeneralizedAlpha> {
+        let standby = self.auto.as_deref_mut().map(|a| &mut a.standby);
+        [Some(&mut self.integrator), standby]
+            .into_iter()
+            .flatten()
+            .find_map(|i| match i {
+                Integrator::GeneralizedAlpha { scheme, .. } => Some(&mut **scheme),
+                _ => None,
+            })
     }
 
     /// The scheme the run uses and why ([`choose_scheme`]).
@@ -299,10 +391,14 @@ impl Stepper {
 
     /// What the generalized-α scheme did so far (`None` for the other schemes).
     pub fn implicit_statistics(&self) -> Option<Statistics> {
-        match &self.integrator {
-            Integrator::GeneralizedAlpha { scheme, .. } => Some(scheme.statistics),
-            _ => None,
-        }
+        let standby = self.auto.as_deref().map(|a| &a.standby);
+        [Some(&self.integrator), standby]
+            .into_iter()
+            .flatten()
+            .find_map(|i| match i {
+                Integrator::GeneralizedAlpha { scheme, .. } => Some(scheme.statistics),
+                _ => None,
+            })
     }
 
     /// Whether each step is chosen by an error estimate (generalized-α with automatic steps).
@@ -353,8 +449,11 @@ impl Stepper {
 
     /// Saves what the next step needs into `saved` (no allocation once `saved` has the sizes).
     pub(crate) fn save(&self, saved: &mut Saved) {
-        // The sample's part (state, clock, releases), then the scheme's history.
+        // The sample's part (state, clock, releases, switching), then the scheme's history:
+        // generalized-α's also while RK4 steps for `auto` (its reference tensions are the
+        // run's, from the start).
         self.save_sample(saved);
+        let standby = self.auto.as_deref().map(|a| &a.standby);
         match &self.integrator {
             Integrator::ThreeLevel { scheme, .. } => {
                 let (previous, last_step) = scheme.history();
@@ -363,8 +462,12 @@ impl Stepper {
                 saved.last_step = last_step;
             }
             Integrator::GeneralizedAlpha { scheme, .. } => scheme.history(&mut saved.history),
-            // No history: save_sample left it empty, with no last step.
-            Integrator::Rk(_) => {}
+            Integrator::Rk(_) => {
+                if let Some(Integrator::GeneralizedAlpha { scheme, .. }) = standby {
+                    scheme.history(&mut saved.history);
+                }
+                // Otherwise no history: save_sample left it empty, with no last step.
+            }
         }
     }
 
@@ -379,6 +482,7 @@ impl Stepper {
         saved.clock = self.clock;
         saved.releases.clear();
         saved.releases.extend_from_slice(&self.releases);
+        saved.switch = self.scheme_switch().unwrap_or_default();
         saved.history.clear();
         saved.last_step = 0.0;
     }
@@ -415,6 +519,22 @@ impl Stepper {
             return false;
         }
         self.releases.copy_from_slice(&saved.releases);
+        if let Some(auto) = self.auto.as_deref_mut() {
+            // The saved run's scheme steps; its generalized-α history is set below.
+            if auto.state.explicit != saved.switch.explicit {
+                std::mem::swap(&mut self.integrator, &mut auto.standby);
+                std::mem::swap(&mut self.stable_step, &mut auto.standby_limit);
+            }
+            auto.state = saved.switch;
+            if let Integrator::Rk(_) = self.integrator {
+                return saved.history.is_empty()
+                    || self
+                        .implicit_mut()
+                        .is_some_and(|s| s.set_history(&saved.history));
+            }
+        } else if saved.switch != SchemeSwitch::default() {
+            return false;
+        }
         match &mut self.integrator {
             Integrator::ThreeLevel { scheme, .. } => {
                 if saved.history.len() != self.state.len() {
@@ -548,9 +668,17 @@ impl Stepper {
             let Integrator::GeneralizedAlpha { scheme, .. } = &mut self.integrator else {
                 unreachable!("an implicit step of the generalized-α scheme")
             };
+            let before = scheme.statistics;
             let attempt = scheme
                 .step(system, &mut self.ws, t, dt, &mut self.state, adaptive)
                 .map_err(|f| (f.location, f.reason))?;
+            if let Some(auto) = self.auto.as_deref_mut() {
+                let after = scheme.statistics;
+                auto.state.add_attempt(
+                    after.iterations - before.iterations,
+                    after.jacobians - before.jacobians,
+                );
+            }
             match attempt {
                 Attempt::Accepted { error } => {
                     if adaptive {
@@ -701,7 +829,14 @@ impl Stepper {
     /// steps no longer than the wave limit at the current strains and the stiffness estimate.
     pub fn take_output(&mut self, system: &System) {
         let first = self.clock.next_output == 0;
+        let output = self.clock.next_output;
         self.clock.take_output();
+        if !first
+            && let Some(auto) = self.auto.as_deref_mut()
+            && auto.state.at_output(output, auto.explicit_steps)
+        {
+            self.swap_scheme();
+        }
         if !first && let Integrator::ThreeLevel { variable: true, .. } = self.integrator {
             let wave = system.wave_step(&self.ws, WAVE_COURANT).0;
             let wanted = self.safety_factor * wave.min(self.stiffness_limit);
