@@ -14,6 +14,9 @@
 //! Cost: about six seconds of CPU in release (`cargo test --release -p hawser-io --test
 //! stiff_seabed_chain`).
 
+#[path = "../../hawser/tests/alloc_count/mod.rs"]
+mod alloc_count;
+
 use hawser::analysis::Channel;
 use hawser::math::Real;
 use hawser::model::{Model, Scheme, TimeStep};
@@ -182,4 +185,18 @@ fn auto_switching_resumes_bit_for_bit() {
         );
     }
     assert_eq!(seen, [true, true], "saved only under one scheme");
+}
+
+/// Switching allocates nothing: both integrators are sized when the run starts, and a switch
+/// swaps them and restarts generalized-α from the state (its start's evaluation and Jacobian
+/// take the scratch it already has). Counted from 0.5 s to the end, over switches both ways.
+#[test]
+fn auto_switching_does_not_allocate() {
+    let mut session = hawser::Session::new(model()).unwrap();
+    session.advance_to(0.5).unwrap();
+    let before = session.scheme_switch().unwrap().switches;
+    let count = alloc_count::allocations_in(|| session.advance_to(DURATION).unwrap());
+    let switches = session.scheme_switch().unwrap().switches - before;
+    assert!(switches >= 2, "{switches} switches to count over");
+    assert_eq!(count, 0, "{count} allocations over {switches} switches");
 }
