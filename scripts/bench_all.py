@@ -234,7 +234,7 @@ def stiff(a, tmp):
           f"on a 0.2 m / 1.25 s vertical circle, {sc.DURATION:g} s simulated)")
     print(f"  MoorDyn RK2 dtM {a.stiff_dtm:.3e} s: CPU {statistics.median(m for m, _ in pairs):.3f}"
           f" s, cycle maxima within {md_err * 100:.3f} % of the RK4 reference")
-    print(f"  hawser auto ({pairs[0][1]['scheme']}): CPU "
+    print(f"  hawser auto ({sc.scheme_label(pairs[0][1])}): CPU "
           f"{statistics.median(h['cpu_s'] for _, h in pairs):.3f} s, {stats or 'explicit'}")
     print(f"  target: MoorDyn CPU / hawser auto's >= 20: {ratio:.2f} "
           f"[{'met' if ratio >= 20 else 'NOT met'}]")

@@ -146,6 +146,16 @@ def hawser_series(hawser, path, tmp):
     return times, values, stats
 
 
+def scheme_label(record):
+    """The scheme of a `hawser bench` record, with the share of the run RK4 stepped when
+    `auto` switched between generalized-α and RK4 (docs/implicit.md)."""
+    share = record.get("rk4_share")
+    if share:
+        return f"{record['scheme']} (RK4 for {share * 100:.0f} % of the run, " \
+               f"{record.get('scheme_switches')} switches)"
+    return record["scheme"]
+
+
 def hawser_bench(hawser, path, repeat=1):
     """`hawser bench PATH --json`: the first run's record."""
     out = subprocess.run([hawser, "bench", path, "--json", "--repeat", str(repeat)],
@@ -296,7 +306,7 @@ def main():
             mx = cycle_maxima(t, v)
             r = hawser_bench(a.hawser, path, repeat=3)
             label = f"tol {tol:g}" if tol else "auto, default tolerance"
-            print(f"hawser {r['scheme']} {label}: CPU {r['cpu_s']:.3f} s (best of "
+            print(f"hawser {scheme_label(r)} {label}: CPU {r['cpu_s']:.3f} s (best of "
                   f"3), maxima {' '.join(f'{m:.5f}' for m in mx)} N, worst "
                   f"{worst_error(mx, ref) * 100:.3f} %; {stats or 'steps %d' % r['steps']}",
                   flush=True)
@@ -324,7 +334,7 @@ def main():
             _, _, md = moordyn_run(tmp, dtm, a.coupling)
             h = hawser_bench(a.hawser, path)
             pairs.append((md, h["cpu_s"]))
-            print(f"  MoorDyn {md:.3f} s, hawser {h['scheme']} {h['cpu_s']:.4f} s: "
+            print(f"  MoorDyn {md:.3f} s, hawser {scheme_label(h)} {h['cpu_s']:.4f} s: "
                   f"{md / h['cpu_s']:.2f}", flush=True)
         print(f"median ratio MoorDyn RK2 dtM {dtm:.3e} / hawser auto: "
               f"{statistics.median(m / h for m, h in pairs):.2f}")
