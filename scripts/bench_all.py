@@ -98,12 +98,18 @@ def main():
     p.add_argument("--only", default=",".join(parts),
                    help="comma-separated parts to run (default: all): oc3 (1-2), waves (3), "
                    "chain (4), stiff (5), best (6), defaults (7), sweep (8)")
+    p.add_argument("--record", action="store_true",
+                   help="also write what this run prints into BENCHMARKS.md, as its section "
+                   "\"Last recorded run\" (replacing the one before), with the command, the "
+                   "date, the commit and the load")
     a = p.parse_args()
     only = set(a.only.split(","))
     if not only <= set(parts):
         p.error(f"--only: unknown part(s) {sorted(only - set(parts))}; expected {parts}")
     from importlib.metadata import version
 
+    tee = Tee(sys.stdout)
+    sys.stdout = tee
     tmp = tempfile.mkdtemp(prefix="bench-all-")
     surge = os.path.join(tmp, "surge.txt")
     with open(surge, "w") as f:
@@ -117,9 +123,9 @@ def main():
     md_steps = int(round(a.duration / 0.002))
     nodes = 63
 
+    load = os.getloadavg()[0]
     print(f"hawser bench vs MoorDyn {version('moordyn')} (RK2), paired CPU time, median of "
-          f"{a.repeats} pairs; load average at start {os.getloadavg()[0]:.1f} on "
-          f"{os.cpu_count()} cores")
+          f"{a.repeats} pairs; load average at start {load:.1f} on {os.cpu_count()} cores")
 
     if "oc3" in only:
         oc3_same_step(a, md_deck, x0, surge, md_steps, nodes)
@@ -135,6 +141,9 @@ def main():
         fast_defaults(a, tmp)
     if "sweep" in only:
         sweep(a, tmp)
+    sys.stdout = tee.out
+    if a.record:
+        record(sys.argv[1:], "".join(tee.text), load)
 
 
 def oc3_same_step(a, md_deck, x0, surge, md_steps, nodes):
@@ -407,6 +416,57 @@ def sweep(a, tmp):
         print(f"  --jobs {jobs}: CPU {cpu:.2f} s ({6 / cpu:.3f} cases per CPU second, per core), "
               f"wall {wall:.2f} s ({6 / wall:.3f} cases per wall second), CPU ratio to --jobs 1 "
               f"{cpu / cpu1:.3f}")
+
+
+class Tee:
+    """Standard output that also keeps what was written (for `--record`)."""
+
+    def __init__(self, out):
+        self.out, self.text = out, []
+
+    def write(self, text):
+        self.text.append(text)
+        return self.out.write(text)
+
+    def flush(self):
+        self.out.flush()
+
+
+BEGIN = "<!-- bench_all.py --record: begin (written by the script; edit the script, not this) -->"
+END = "<!-- bench_all.py --record: end -->"
+
+
+def record(argv, text, load, path=os.path.join(ROOT, "BENCHMARKS.md")):
+    """Writes `text`, a run's printed targets, into BENCHMARKS.md between BEGIN and END (the
+    section before the first `## ` heading after the targets table when there is none yet)."""
+    commit = subprocess.run(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"],
+                            capture_output=True, text=True).stdout.strip() or "unknown"
+    dirty = subprocess.run(["git", "-C", ROOT, "status", "--porcelain", "--untracked-files=no"],
+                           capture_output=True, text=True).stdout.strip()
+    when = time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime())
+    block = "\n".join([
+        BEGIN,
+        "### Last recorded run",
+        "",
+        f"`python3 scripts/bench_all.py {' '.join(argv)}` on {when}, commit {commit}"
+        f"{' with uncommitted changes' if dirty else ''}, load average {load:.1f} at the start "
+        f"on {os.cpu_count()} cores: what it printed.",
+        "",
+        "```text",
+        text.strip("\n"),
+        "```",
+        END,
+    ])
+    with open(path, encoding="utf-8") as fh:
+        doc = fh.read()
+    if BEGIN in doc and END in doc:
+        doc = doc[:doc.index(BEGIN)] + block + doc[doc.index(END) + len(END):]
+    else:
+        at = doc.index("\n## ", doc.index("## All targets in one run"))
+        doc = doc[:at] + "\n\n" + block + "\n" + doc[at:]
+    with open(path, "w", encoding="utf-8") as fh:
+        fh.write(doc)
+    print(f"recorded in {path}")
 
 
 if __name__ == "__main__":

@@ -6,7 +6,7 @@
 # how: scripts/bench_all.py. Results are recorded in BENCHMARKS.md.
 #
 # Usage: scripts/bench_all.sh [bench_all.py options: --repeats N, --duration S, --segments
-#        20,40,..., --chain-duration S, --only PARTS]
+#        20,40,..., --chain-duration S, --only PARTS, --record]
 # Environment: as scripts/moordyn_venv.sh (BENCH_VENV, MOORDYN_VERSION, PYTHON).
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
