@@ -19,7 +19,7 @@ use crate::formulation::fluid_load;
 use crate::linalg::LineBlocks;
 use crate::math::{Mat3, Real, Vec3};
 use crate::model::MassMatrix;
-use crate::physics::environment::{Current, Environment};
+use crate::physics::environment::{Current, Environment, profile_at};
 use crate::physics::hydrodynamics::{DragModel, added_mass_of, drag_force_with_factor};
 use crate::physics::material::AxialStiffness;
 use crate::physics::obstacles::{LineBall, Obstacle};
@@ -506,39 +506,15 @@ impl ElementBatch {
             let (wa, wb) = (k.half_length * na, k.half_length * nb);
             let mut u = [Lanes::default(); 3];
             match &env.current {
-                Current::Profile { z: zs, velocity } if zs.len() >= 2 && env.waves.is_none() => {
-                    // [`Environment::fluid_kinematics`] of a depth profile, lane by lane: each
-                    // point's bracket in the table, then the interpolation weight (a division)
-                    // and the blend in the lanes, plus the waves' zero velocity under water.
-                    let n = zs.len();
-                    let (mut num, mut den) = ([0.0; LANES], [1.0; LANES]);
-                    let (mut low, mut high) = ([Lanes::default(); 3], [Lanes::default(); 3]);
-                    let mut wet = [false; LANES];
+                Current::Profile { z: zs, velocity } if env.waves.is_none() => {
+                    // [`Environment::fluid_kinematics`] of a depth profile without waves, its
+                    // profile lookup inlined here: the current's velocity plus the waves' zero
+                    // under water, nothing in the air.
                     for l in 0..LANES {
                         let z = za[l] * na + zb[l] * nb;
-                        wet[l] = z < 0.0;
-                        // `bracket`'s cases: w = 0 at and below the first height, 1 at and
-                        // above the last, (z − z_{k−1}) / (z_k − z_{k−1}) between.
-                        let k = if z <= zs[0] {
-                            1
-                        } else if z >= zs[n - 1] {
-                            num[l] = 1.0;
-                            n - 1
-                        } else {
-                            let k = zs.partition_point(|&v| v <= z).clamp(1, n - 1);
-                            (num[l], den[l]) = (z - zs[k - 1], zs[k] - zs[k - 1]);
-                            k
-                        };
+                        let profile = profile_at(zs, velocity, z);
                         for c in 0..3 {
-                            low[c][l] = velocity[k - 1][c];
-                            high[c][l] = velocity[k][c];
-                        }
-                    }
-                    for l in 0..LANES {
-                        let w = num[l] / den[l];
-                        for c in 0..3 {
-                            let profile = low[c][l] * (1.0 - w) + high[c][l] * w;
-                            u[c][l] = if wet[l] { profile + 0.0 } else { 0.0 };
+                            u[c][l] = if z < 0.0 { profile[c] + 0.0 } else { 0.0 };
                         }
                     }
                 }

@@ -116,7 +116,7 @@ fn bracket(xs: &[Real], x: Real) -> (usize, Real) {
 
 /// Velocity [m/s] of a profile `velocity` at heights `zs` [m], at height z [m].
 #[inline]
-fn profile_at(zs: &[Real], velocity: &[Vec3], z: Real) -> Vec3 {
+pub(crate) fn profile_at(zs: &[Real], velocity: &[Vec3], z: Real) -> Vec3 {
     match zs.len() {
         0 => Vec3::zeros(),
         1 => velocity[0],

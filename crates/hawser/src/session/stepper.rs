@@ -127,9 +127,8 @@ pub(crate) struct AutoSwitch {
     standby: Integrator,
     /// The stability limit [s] and what sets it of the scheme not stepping now.
     standby_limit: (Real, String),
-    /// RK4's automatic step [s]: the output interval in `explicit_steps` equal steps.
-    explicit_step: Real,
-    /// RK4's steps per output interval.
+    /// RK4's steps per output interval: its automatic step is the interval in that many
+    /// equal steps.
     explicit_steps: u64,
 }
 
@@ -306,7 +305,6 @@ impl Stepper {
                     state: SchemeSwitch::default(),
                     standby: Integrator::Rk(ExplicitRk::new(&RK4, n)),
                     standby_limit: (limit, culprit),
-                    explicit_step: interval / steps,
                     explicit_steps: steps as u64,
                 })
             })
@@ -365,21 +363,22 @@ impl Stepper {
             }
             _ => {
                 auto.state.implicit_nominal = self.clock.nominal;
-                self.clock.set_step(auto.explicit_step);
-                self.clock.nominal = auto.explicit_step;
+                let step = self.clock.interval / auto.explicit_steps as Real;
+                self.clock.set_step(step);
+                self.clock.nominal = step;
             }
         }
         self.accelerations_at = None;
     }
 
-    /// The generalized-α integrator of the run, stepping or standing by.
-    fn implicit_mut(&mut self) -> Option<&mut GeneralizedAlpha> {
-        let standby = self.auto.as_deref_mut().map(|a| &mut a.standby);
-        [Some(&mut self.integrator), standby]
+    /// The generalized-α integrator of the run, stepping or standing by for `auto`.
+    fn implicit(&self) -> Option<&GeneralizedAlpha> {
+        let standby = self.auto.as_deref().map(|a| &a.standby);
+        [Some(&self.integrator), standby]
             .into_iter()
             .flatten()
             .find_map(|i| match i {
-                Integrator::GeneralizedAlpha { scheme, .. } => Some(&mut **scheme),
+                Integrator::GeneralizedAlpha { scheme, .. } => Some(&**scheme),
                 _ => None,
             })
     }
@@ -391,14 +390,7 @@ impl Stepper {
 
     /// What the generalized-α scheme did so far (`None` for the other schemes).
     pub fn implicit_statistics(&self) -> Option<Statistics> {
-        let standby = self.auto.as_deref().map(|a| &a.standby);
-        [Some(&self.integrator), standby]
-            .into_iter()
-            .flatten()
-            .find_map(|i| match i {
-                Integrator::GeneralizedAlpha { scheme, .. } => Some(scheme.statistics),
-                _ => None,
-            })
+        self.implicit().map(|s| s.statistics)
     }
 
     /// Whether each step is chosen by an error estimate (generalized-α with automatic steps).
@@ -453,22 +445,15 @@ impl Stepper {
         // generalized-α's also while RK4 steps for `auto` (its reference tensions are the
         // run's, from the start).
         self.save_sample(saved);
-        let standby = self.auto.as_deref().map(|a| &a.standby);
-        match &self.integrator {
-            Integrator::ThreeLevel { scheme, .. } => {
-                let (previous, last_step) = scheme.history();
-                saved.history.clear();
-                saved.history.extend_from_slice(previous);
-                saved.last_step = last_step;
-            }
-            Integrator::GeneralizedAlpha { scheme, .. } => scheme.history(&mut saved.history),
-            Integrator::Rk(_) => {
-                if let Some(Integrator::GeneralizedAlpha { scheme, .. }) = standby {
-                    scheme.history(&mut saved.history);
-                }
-                // Otherwise no history: save_sample left it empty, with no last step.
-            }
+        if let Integrator::ThreeLevel { scheme, .. } = &self.integrator {
+            let (previous, last_step) = scheme.history();
+            saved.history.clear();
+            saved.history.extend_from_slice(previous);
+            saved.last_step = last_step;
+        } else if let Some(scheme) = self.implicit() {
+            scheme.history(&mut saved.history);
         }
+        // Otherwise (RK4 alone) no history: save_sample left it empty, with no last step.
     }
 
     /// Saves the state, clock and releases into `saved`, not the scheme's history (cleared):
@@ -526,12 +511,6 @@ impl Stepper {
                 std::mem::swap(&mut self.stable_step, &mut auto.standby_limit);
             }
             auto.state = saved.switch;
-            if let Integrator::Rk(_) = self.integrator {
-                return saved.history.is_empty()
-                    || self
-                        .implicit_mut()
-                        .is_some_and(|s| s.set_history(&saved.history));
-            }
         } else if saved.switch != SchemeSwitch::default() {
             return false;
         }
@@ -551,7 +530,16 @@ impl Stepper {
                 }
                 fits
             }
-            Integrator::Rk(_) => saved.history.is_empty(),
+            // No history of its own; for `auto`, its standby generalized-α's.
+            Integrator::Rk(_) => {
+                saved.history.is_empty()
+                    || match self.auto.as_deref_mut().map(|a| &mut a.standby) {
+                        Some(Integrator::GeneralizedAlpha { scheme, .. }) => {
+                            scheme.set_history(&saved.history)
+                        }
+                        _ => false,
+                    }
+            }
         }
     }
 
