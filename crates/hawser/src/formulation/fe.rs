@@ -129,16 +129,31 @@ crate::math::wide_simd_fn! {
                 // integrated with the linear shape functions; exact with one evaluation unless
                 // the element crosses the surface, where each Gauss point takes its own density.
                 if let Some(b) = blocks.as_deref_mut() {
-                    for (lane, e) in (e0..e0 + count).enumerate() {
-                        let t = Vec3::new(batch.tx[lane], batch.ty[lane], batch.tz[lane]);
-                        let (za, zb) = (r[e].z, r[e + 1].z);
-                        if consistent {
-                            add_element_mass(b, e, &k, &t, za, zb);
-                        } else {
-                            let ([ca, cb], rank_one) = lumped_element_mass(&k, za, zb);
-                            b.lumped.isotropic[e] = node_isotropic + ca;
-                            b.lumped.rank_one[e] = rank_one;
-                            b.lumped.tangent[e] = t;
+                    if consistent {
+                        for (lane, e) in (e0..e0 + count).enumerate() {
+                            let t = Vec3::new(batch.tx[lane], batch.ty[lane], batch.tz[lane]);
+                            add_element_mass(b, e, &k, &t, r[e].z, r[e + 1].z);
+                        }
+                    } else {
+                        let lumped = &mut b.lumped;
+                        let elements = e0..e0 + count;
+                        let isotropic = &mut lumped.isotropic[elements.clone()];
+                        let [rank_a, rank_b] = &mut lumped.rank_one;
+                        let (rank_a, rank_b) =
+                            (&mut rank_a[elements.clone()], &mut rank_b[elements.clone()]);
+                        let [tx, ty, tz] = &mut lumped.tangent;
+                        let (tx, ty, tz) = (
+                            &mut tx[elements.clone()],
+                            &mut ty[elements.clone()],
+                            &mut tz[elements.clone()],
+                        );
+                        for lane in 0..count {
+                            let (za, zb) = (r[e0 + lane].z, r[e0 + lane + 1].z);
+                            let ([ca, cb], [ba, bb]) = lumped_element_mass(&k, za, zb);
+                            isotropic[lane] = node_isotropic + ca;
+                            (rank_a[lane], rank_b[lane]) = (ba, bb);
+                            (tx[lane], ty[lane], tz[lane]) =
+                                (batch.tx[lane], batch.ty[lane], batch.tz[lane]);
                             node_isotropic = cb;
                         }
                     }
@@ -397,19 +412,36 @@ impl ElementBatch {
         drag: bool,
     ) {
         let last = r.len() - 2;
-        let mut node = [[Lanes::default(); 3]; 4];
-        for l in 0..LANES {
-            let e = l.min(last);
-            let (ra, rb, va, vb) = (r[e], r[e + 1], v[e], v[e + 1]);
-            for c in 0..3 {
-                node[0][c][l] = ra[c];
-                node[1][c][l] = rb[c];
-                node[2][c][l] = va[c];
-                node[3][c][l] = vb[c];
+        let node = &mut self.node;
+        if last + 1 >= LANES {
+            // A full batch: node l + 1 is lane l's second node and lane l + 1's first, each
+            // read once.
+            for j in 0..=LANES {
+                let (p, u) = (r[j], v[j]);
+                for c in 0..3 {
+                    if j < LANES {
+                        node[0][c][j] = p[c];
+                        node[2][c][j] = u[c];
+                    }
+                    if j > 0 {
+                        node[1][c][j - 1] = p[c];
+                        node[3][c][j - 1] = u[c];
+                    }
+                }
+            }
+        } else {
+            for l in 0..LANES {
+                let e = l.min(last);
+                let (ra, rb, va, vb) = (r[e], r[e + 1], v[e], v[e + 1]);
+                for c in 0..3 {
+                    node[0][c][l] = ra[c];
+                    node[1][c][l] = rb[c];
+                    node[2][c][l] = va[c];
+                    node[3][c][l] = vb[c];
+                }
             }
         }
-        self.node = node;
-        let [[xa, ya, za], [xb, yb, zb], [vxa, vya, vza], [vxb, vyb, vzb]] = node;
+        let [[xa, ya, za], [xb, yb, zb], [vxa, vya, vza], [vxb, vyb, vzb]] = *node;
         let il = sec.inverse_length;
         let mut rate = Lanes::default();
         for l in 0..LANES {
