@@ -133,8 +133,8 @@ impl LumpedMass {
     /// Sets element e's unit tangent `t` and its weights `rank_one` ([b_a, b_b]).
     #[inline(always)]
     pub fn set_element(&mut self, e: usize, t: [Real; 3], rank_one: [Real; 2]) {
-        for k in 0..3 {
-            self.tangent[k][e] = t[k];
+        for (component, value) in self.tangent.iter_mut().zip(t) {
+            component[e] = value;
         }
         self.rank_one[0][e] = rank_one[0];
         self.rank_one[1][e] = rank_one[1];
