@@ -91,6 +91,19 @@ fn hawser(args: &[&str]) -> Output {
         .expect("run hawser")
 }
 
+/// `hawser run FILE --out OUT_DIR`, which must succeed (`dir`: the test's directory, for the
+/// message).
+fn run_ok(dir: &Path, file: &Path, out_dir: &Path) -> Output {
+    let out = hawser(&[
+        "run",
+        file.to_str().unwrap(),
+        "--out",
+        out_dir.to_str().unwrap(),
+    ]);
+    assert!(out.status.success(), "{}", stderr(&out, dir));
+    out
+}
+
 /// Stderr with the temporary directory replaced by `[TMP]`, for stable snapshots.
 fn stderr(out: &Output, dir: &Path) -> String {
     String::from_utf8_lossy(&out.stderr).replace(&dir.display().to_string(), "[TMP]")
@@ -372,13 +385,7 @@ fn run_off_a_terminal_prints_progress_lines() {
     let dir = temp_dir("progress");
     let file = write(&dir, "valid.toml", VALID);
     let out_dir = dir.join("out");
-    let out = hawser(&[
-        "run",
-        file.to_str().unwrap(),
-        "--out",
-        out_dir.to_str().unwrap(),
-    ]);
-    assert!(out.status.success(), "{}", stderr(&out, &dir));
+    let out = run_ok(&dir, &file, &out_dir);
     let err = stderr(&out, &dir);
     let lines: Vec<&str> = err
         .lines()
@@ -412,4 +419,86 @@ fn run_off_a_terminal_prints_progress_lines() {
     assert!(out.status.success());
     assert!(!stderr(&out, &dir).contains("progress: "));
     std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// `summary.json` records what the time integration did: the scheme and why, the steps of
+/// every scheme, the step at the end, generalized-α's counts (those `hawser run` prints) and
+/// `auto`'s switching, `null` where a scheme did not run.
+#[test]
+fn summary_records_the_integrator() {
+    let dir = temp_dir("integrator");
+    let run = |name: &str, simulation: &str| -> (serde_json::Value, String) {
+        let text = VALID.replacen(
+            "[simulation]\nduration = 1.0\ntime_step = \"auto\"\n",
+            &format!("[simulation]\nduration = 1.0\n{simulation}\n"),
+            1,
+        );
+        assert_ne!(text, VALID);
+        let file = write(&dir, &format!("{name}.toml"), &text);
+        let out_dir = dir.join(name);
+        let out = run_ok(&dir, &file, &out_dir);
+        let summary = std::fs::read_to_string(out_dir.join("summary.json")).expect("summary");
+        let v: serde_json::Value = serde_json::from_str(&summary).expect("JSON");
+        (v["integrator"].clone(), stderr(&out, &dir))
+    };
+
+    // RK4 at a fixed step: 400 steps of 2.5 ms, nothing of generalized-α or auto.
+    let (rk4, _) = run("rk4", "time_step = 0.0025\nscheme = \"rk4\"");
+    assert_eq!(rk4["scheme"], "rk4", "{rk4}");
+    assert_eq!(rk4["reason"], "set by the scenario", "{rk4}");
+    assert_eq!(rk4["steps"], 400, "{rk4}");
+    assert_eq!(rk4["time_step"], 0.0025, "{rk4}");
+    assert!(rk4["generalized_alpha"].is_null(), "{rk4}");
+    assert!(rk4["auto_switching"].is_null(), "{rk4}");
+
+    // Adaptive generalized-α: its counts are the ones `hawser run` prints, every step its own.
+    let (ga, err) = run("ga", "time_step = \"auto\"\nscheme = \"generalized-alpha\"");
+    assert_eq!(ga["scheme"], "generalized-alpha", "{ga}");
+    let g = &ga["generalized_alpha"];
+    let count = |key: &str| g[key].as_u64().unwrap_or_else(|| panic!("{key} in {ga}"));
+    let printed = format!(
+        "generalized-α: {} steps ({} refused), {} Newton iterations, {} Jacobians",
+        count("steps"),
+        count("refused"),
+        count("newton_iterations"),
+        count("jacobians")
+    );
+    assert!(err.contains(&printed), "{printed}\n{err}");
+    assert_eq!(ga["steps"].as_u64(), Some(count("steps")), "{ga}");
+    assert!(
+        count("steps") > 0 && count("newton_iterations") >= count("steps"),
+        "{ga}"
+    );
+    assert!(
+        ga["time_step"]
+            .as_f64()
+            .is_some_and(|h| h > 0.0 && h <= 1.0),
+        "{ga}"
+    );
+    assert!(ga["auto_switching"].is_null(), "{ga}");
+
+    // auto: the scheme it started with, and its switching when that is generalized-α, whose
+    // steps and RK4's add up to the run's.
+    let (auto, _) = run("auto", "time_step = \"auto\"\nscheme = \"auto\"");
+    let reason = auto["reason"].as_str().expect("reason");
+    assert!(
+        !reason.is_empty() && reason != "set by the scenario",
+        "{auto}"
+    );
+    match auto["scheme"].as_str() {
+        Some("generalized-alpha") => {
+            let w = &auto["auto_switching"];
+            let rk4_time = w["rk4_time"].as_f64().expect("rk4_time");
+            assert!((0.0..=1.0).contains(&rk4_time), "{auto}");
+            let ga_steps = auto["generalized_alpha"]["steps"].as_u64().expect("steps");
+            let steps = auto["steps"].as_u64().expect("steps");
+            assert!(ga_steps <= steps, "{auto}");
+            assert_eq!(ga_steps == steps, w["switches"] == 0, "{auto}");
+        }
+        Some("rk4") => {
+            assert!(auto["generalized_alpha"].is_null(), "{auto}");
+            assert!(auto["auto_switching"].is_null(), "{auto}");
+        }
+        other => panic!("auto chose {other:?}: {auto}"),
+    }
 }

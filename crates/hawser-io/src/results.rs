@@ -19,8 +19,8 @@ pub use csv::{RowSink, RowWriter, SampleTimes, Table, TableReader, push_number, 
 #[cfg(feature = "parquet")]
 pub use parquet::{write_columns_parquet, write_parquet};
 pub use summary::{
-    RunSummary, section_json, statistics_json, statistics_options_json, strength_json,
-    timeseries_statistics,
+    RunSummary, integrator_json, section_json, statistics_json, statistics_options_json,
+    strength_json, timeseries_statistics,
 };
 pub use vtk::{PVD_FILE, VTK_DIR, VtkWriter};
 
@@ -561,7 +561,7 @@ impl Observer for RunWriter {
     }
 
     fn finish(&mut self, view: &View<'_>, end: &RunEnd) -> Result<(), ObserverError> {
-        self.summary.set_warnings(&end.warnings);
+        self.summary.set_end(end);
         self.summary.set_failures(view);
         Ok(self.write_end(view, end.error.as_deref(), end.interrupted)?)
     }

@@ -149,6 +149,16 @@ fn auto_hands_the_snaps_to_rk4_and_does_less_work() {
         switch.explicit_outputs < (DURATION / m.settings.output_interval) as u64,
         "RK4 throughout: {switch:?}"
     );
+    // The results' record of it (`summary.json`'s `integrator`): the same switches, RK4's
+    // time on the output grid, RK4's steps beside generalized-α's.
+    let report = auto.integrator_report();
+    let w = report.switching.expect("switching recorded");
+    assert_eq!(w.switches, switch.switches);
+    let rk4_time = switch.explicit_outputs as Real * m.settings.output_interval;
+    assert!((w.rk4_time - rk4_time).abs() <= 1e-12 * DURATION, "{w:?}");
+    let ga = report.generalized_alpha.expect("generalized-α stepped");
+    assert!(ga.steps > 0 && ga.steps < report.steps, "{report:?}");
+    assert_eq!(report.choice.scheme, Scheme::GeneralizedAlpha);
     m.settings.scheme = Scheme::GeneralizedAlpha;
     let mut implicit = hawser::Session::new(m).unwrap();
     implicit.run().unwrap();

@@ -154,7 +154,7 @@ impl Observer for Recorder {
 
     fn finish(&mut self, view: &View<'_>, end: &RunEnd) -> Result<(), ObserverError> {
         self.summary.finish();
-        self.summary.set_warnings(&end.warnings);
+        self.summary.set_end(end);
         self.summary.set_failures(view);
         // The design statistics of the samples kept, as `hawser run` computes them from its
         // time series read back.

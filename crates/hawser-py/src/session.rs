@@ -183,6 +183,15 @@ impl Session {
         Ok(self.session(py)?.step_size())
     }
 
+    /// What the time integration did so far, as `summary.json`'s `integrator`: the scheme the
+    /// run started with and why, steps, the step now [s], generalized-α's counts and
+    /// `scheme = "auto"`'s switching to RK4 (after `init`).
+    #[getter]
+    fn integrator<'py>(&mut self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let report = self.session(py)?.integrator_report();
+        crate::convert::json_to_py(py, &hawser_io::results::integrator_json(&report))
+    }
+
     /// Whether `init` was called.
     #[getter]
     fn initialised(&mut self) -> bool {

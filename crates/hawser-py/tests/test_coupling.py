@@ -78,6 +78,26 @@ def test_coupled_stepping_equals_the_prescribed_run(scenarios, accelerations):
     assert s.line_tension(0).shape == (21,)
 
 
+def test_the_session_reports_its_integrator(scenarios):
+    """`Session.integrator` is `summary.json`'s `integrator` of the steps taken so far."""
+    _, coupled = scenarios
+    s = hawser.Session(coupled)
+    s.init(X0)
+    assert s.integrator["steps"] == 0
+    run_on(s, X0, 1, 11)
+    r = s.integrator
+    assert r["steps"] > 0 and r["time_step"] == s.time_step
+    assert r["reason"]
+    if r["scheme"] == "rk4":
+        # A fixed step: one step per time step of the second.
+        assert r["steps"] == round(s.time / s.time_step)
+        assert r["generalized_alpha"] is None and r["auto_switching"] is None
+    else:
+        assert r["scheme"] == "generalized-alpha", r
+        g = r["generalized_alpha"]
+        assert 0 < g["steps"] <= r["steps"] and g["newton_iterations"] >= g["steps"], r
+
+
 def test_a_repeated_interval_replaces_the_first(scenarios):
     _, coupled = scenarios
     x0 = X0

@@ -40,6 +40,8 @@ pub struct RunSummary {
     row: Vec<Real>,
     /// The run's warnings, written into `summary.json` and `status.json` at its end.
     warnings: Vec<hawser::Warning>,
+    /// What the run's time integration did, written into `summary.json` at its end.
+    integrator: Option<hawser::integrate::IntegratorReport>,
     /// The run's line failures, `None` when its model has none (no `failures` key then).
     failures: Option<Vec<hawser::session::FailureEvent>>,
 }
@@ -70,14 +72,16 @@ impl RunSummary {
             last_time: 0.0,
             samples: 0,
             warnings: Vec::new(),
+            integrator: None,
             failures: (!system.failures.is_empty()).then(Vec::new),
         }
     }
 
-    /// The run's warnings ([`hawser::session::RunEnd::warnings`]), written into
-    /// `summary.json` at its end.
-    pub fn set_warnings(&mut self, warnings: &[hawser::Warning]) {
-        self.warnings = warnings.to_vec();
+    /// How the run ended ([`hawser::session::RunEnd`]): its warnings and what its time
+    /// integration did, written into `summary.json` at its end.
+    pub fn set_end(&mut self, end: &hawser::session::RunEnd) {
+        self.warnings = end.warnings.clone();
+        self.integrator = Some(end.integrator.clone());
     }
 
     /// The line failures that happened by the end of the run (`view.releases`), written into
@@ -94,7 +98,7 @@ impl RunSummary {
         self.failures.as_deref()
     }
 
-    /// The run's warnings set by [`RunSummary::set_warnings`].
+    /// The run's warnings set by [`RunSummary::set_end`].
     pub fn warnings(&self) -> &[hawser::Warning] {
         &self.warnings
     }
@@ -254,6 +258,12 @@ impl RunSummary {
                 "strength": "per section of each line, the largest node tension over the statistics window (max_tension [N]), where (at: unstretched arc length from end A [m]) and when (time [s]); utilisation = max_tension / minimum_breaking_load, design_utilisation = max_tension / (minimum_breaking_load / design_safety_factor); worst: the section with the largest design utilisation (utilisation without a safety factor)",
             },
         });
+        if let Some(r) = &self.integrator {
+            v["integrator"] = integrator_json(r);
+            v["definitions"]["integrator"] = json!(
+                "the time integration: the scheme the run started with (scheme = \"auto\" resolved) and why, the steps taken by every scheme, the step at the end [s] (adaptive generalized-α: the nominal step it would take next), generalized-α's steps, refused steps, Newton iterations and Jacobians (null if it never stepped), and auto's switching between generalized-α and RK4 (null unless auto started with adaptive generalized-α): the switches, the simulated time RK4 stepped [s] and whether RK4 stepped at the end"
+            );
+        }
         if let Some(f) = &self.failures {
             v["failures"] = super::failures_json(f);
             v["definitions"]["failures"] = json!(
@@ -455,5 +465,26 @@ pub fn statistics_options_json(options: &StatisticsOptions, names: &[String]) ->
             "most_probable_minimum": "x̄ − σ √(2 ln(storm_duration / T_z))",
             "linked": "the linked channels' values at the sample of the channel's minimum and maximum",
         },
+    })
+}
+
+/// `summary.json`'s `integrator` ([`hawser::integrate::IntegratorReport`]).
+pub fn integrator_json(r: &hawser::integrate::IntegratorReport) -> Value {
+    json!({
+        "scheme": r.choice.scheme.name(),
+        "reason": r.choice.reason,
+        "steps": r.steps,
+        "time_step": r.time_step,
+        "generalized_alpha": r.generalized_alpha.map(|s| json!({
+            "steps": s.steps,
+            "refused": s.rejected,
+            "newton_iterations": s.iterations,
+            "jacobians": s.jacobians,
+        })),
+        "auto_switching": r.switching.map(|w| json!({
+            "switches": w.switches,
+            "rk4_time": w.rk4_time,
+            "rk4_at_end": w.rk4_now,
+        })),
     })
 }

@@ -133,6 +133,11 @@ class Session:
     def time_step(self) -> float:
         """The integrator's time step [s]."""
     @property
+    def integrator(self) -> Dict[str, Any]:
+        """What the time integration did so far (``summary.json``'s ``integrator``): scheme,
+        reason, steps, time_step [s], generalized_alpha (steps, refused, newton_iterations,
+        jacobians) and auto_switching (switches, rk4_time [s], rk4_at_end)."""
+    @property
     def initialised(self) -> bool: ...
     @property
     def channels(self) -> List[str]:

@@ -15,6 +15,35 @@ pub use three_level::ThreeLevel;
 use crate::math::Real;
 use crate::model::Scheme;
 
+/// What the time integration of a run did, as its results record it (`summary.json`'s
+/// `integrator`; the Python package's results and session).
+#[derive(Clone, Debug, PartialEq)]
+pub struct IntegratorReport {
+    /// The scheme the run started with (`scheme = "auto"` resolved) and why.
+    pub choice: SchemeChoice,
+    /// Steps taken by every scheme [-].
+    pub steps: u64,
+    /// The step now [s]: the fixed or automatic step, or adaptive generalized-α's nominal step
+    /// (the one it would take next).
+    pub time_step: Real,
+    /// What generalized-α did (`None` if it never stepped).
+    pub generalized_alpha: Option<generalized_alpha::Statistics>,
+    /// `scheme = "auto"` handing stretches to RK4 while the run goes (`None` unless `auto`
+    /// started the run with adaptive generalized-α).
+    pub switching: Option<SwitchingReport>,
+}
+
+/// `scheme = "auto"`'s switching over a run ([`choice::SchemeSwitch`] in results' terms).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SwitchingReport {
+    /// Switches between generalized-α and RK4, either way [-].
+    pub switches: u64,
+    /// Simulated time stepped by RK4 [s].
+    pub rk4_time: Real,
+    /// Whether RK4 steps now (at the end of the run).
+    pub rk4_now: bool,
+}
+
 impl Scheme {
     /// The smallest radius R of the scheme's stability region over the left half-plane, for
     /// the stable step R/|λ|max ([`crate::system::System::stable_step`]): RK4 2.6 (2.615

@@ -44,7 +44,9 @@ pub enum Scheme {
     /// spectral radius is [`Settings::spectral_radius`].
     GeneralizedAlpha,
     /// The cheapest of RK4 and generalized-α at the accuracy the settings ask for, chosen when
-    /// the run starts ([`crate::integrate::choose_scheme`]). The default.
+    /// the run starts ([`crate::integrate::choose_scheme`]); a run started with adaptive
+    /// generalized-α hands stretches to RK4 where that does less work
+    /// ([`crate::integrate::choice::SchemeSwitch`]). The default.
     #[default]
     Auto,
 }

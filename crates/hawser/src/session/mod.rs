@@ -269,6 +269,26 @@ impl Session {
         self.stepper.scheme_switch()
     }
 
+    /// What the time integration did so far: the scheme and why, steps, the step now,
+    /// generalized-α's counts and `auto`'s switching ([`crate::integrate::IntegratorReport`]).
+    pub fn integrator_report(&self) -> crate::integrate::IntegratorReport {
+        let interval = self.stepper.sample_interval();
+        crate::integrate::IntegratorReport {
+            choice: self.stepper.scheme().clone(),
+            steps: self.stepper.steps_done(),
+            time_step: self.stepper.step_size(),
+            generalized_alpha: self.stepper.implicit_statistics(),
+            switching: self
+                .stepper
+                .scheme_switch()
+                .map(|w| crate::integrate::SwitchingReport {
+                    switches: w.switches,
+                    rk4_time: w.explicit_outputs as Real * interval,
+                    rk4_now: w.explicit,
+                }),
+        }
+    }
+
     /// Steps taken so far.
     pub fn steps_done(&self) -> u64 {
         self.stepper.steps_done()
@@ -506,6 +526,7 @@ impl Session {
             error: error.map(|e| e.to_string()),
             interrupted: matches!(error, Some(SimulationError::Interrupted { .. })),
             warnings: self.warnings.clone(),
+            integrator: self.integrator_report(),
         };
         let mut observers = std::mem::take(&mut self.observers);
         let view = self.current_view();

@@ -230,4 +230,6 @@ pub struct RunEnd {
     pub interrupted: bool,
     /// The run's warnings ([`crate::Session::warnings`]).
     pub warnings: Vec<crate::warning::Warning>,
+    /// What the time integration did ([`crate::Session::integrator_report`]).
+    pub integrator: crate::integrate::IntegratorReport,
 }
