@@ -441,7 +441,8 @@ impl GeneralizedAlpha {
     /// matrix was formed for with its body points' offsets (a restored run forms the same
     /// matrix where the saved run would have kept its factors), and the Jacobian's
     /// ingredients (the modified Newton iteration reuses them, so a restored run iterates
-    /// exactly as the saved one would have).
+    /// exactly as the saved one would have), and the counts of [`Statistics`] (exact as f64
+    /// below 2⁵³), so that a resumed run reports what the whole run would have.
     pub fn history(&self, out: &mut Vec<Real>) {
         out.clear();
         out.extend_from_slice(&self.acceleration);
@@ -454,6 +455,8 @@ impl GeneralizedAlpha {
         out.push(self.previous_step);
         out.push(self.contraction);
         out.push(self.matrix_step);
+        let c = self.statistics;
+        out.extend([c.steps, c.rejected, c.iterations, c.jacobians].map(|n| n as Real));
         for slot in &self.solver.body_slots {
             out.extend_from_slice(slot.offset.as_slice());
         }
@@ -466,7 +469,8 @@ impl GeneralizedAlpha {
         let n = self.acceleration.len();
         let lines = self.reference.len();
         let slots = 3 * self.solver.body_slots.len();
-        if history.len() != 3 * n + lines + 6 + slots + self.jacobian.len() {
+        const FLAGS: usize = 6 + 4;
+        if history.len() != 3 * n + lines + FLAGS + slots + self.jacobian.len() {
             return false;
         }
         self.acceleration.copy_from_slice(&history[..n]);
@@ -474,7 +478,7 @@ impl GeneralizedAlpha {
         self.previous.copy_from_slice(&history[2 * n..3 * n]);
         self.reference
             .copy_from_slice(&history[3 * n..3 * n + lines]);
-        let flags = &history[3 * n + lines..3 * n + lines + 6];
+        let flags = &history[3 * n + lines..3 * n + lines + FLAGS];
         self.started = flags[0] != 0.0;
         self.formed = flags[1] != 0.0;
         self.refresh = flags[2] != 0.0;
@@ -482,11 +486,18 @@ impl GeneralizedAlpha {
         self.contraction = flags[4];
         self.matrix_step = Real::NAN;
         self.restored_matrix_step = flags[5];
+        let count = |x: Real| x as u64;
+        self.statistics = Statistics {
+            steps: count(flags[6]),
+            rejected: count(flags[7]),
+            iterations: count(flags[8]),
+            jacobians: count(flags[9]),
+        };
         self.factored = false;
         self.weights_ready = false;
         // The body points' offsets the saved matrix was formed with (its ρ_f), which a matrix
         // formed again at `restored_matrix_step` takes instead of the iterate's.
-        let offsets = &history[3 * n + lines + 6..3 * n + lines + 6 + slots];
+        let offsets = &history[3 * n + lines + FLAGS..3 * n + lines + FLAGS + slots];
         for (slot, o) in self
             .solver
             .body_slots
@@ -495,7 +506,7 @@ impl GeneralizedAlpha {
         {
             slot.offset = Vec3::new(o[0], o[1], o[2]);
         }
-        let mut rest = history[3 * n + lines + 6 + slots..].iter().copied();
+        let mut rest = history[3 * n + lines + FLAGS + slots..].iter().copied();
         self.jacobian.set_numbers(&mut rest)
     }
 

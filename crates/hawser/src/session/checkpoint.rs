@@ -5,9 +5,10 @@
 //! Format (little-endian): the magic `HAWSERCK`, the format version (u32), the model's hash
 //! ([`model_hash`], u64), then the run: samples taken and the last sample time, the clock, the
 //! stability limit and what sets it, the state vector, the scheme's history (the three-level
-//! scheme's previous level and last step; generalized-α's accelerations, step controller and
-//! Jacobian), the line failures' releases (version 2), `scheme = "auto"`'s switching between
-//! generalized-α and RK4 (version 3), the coupling tracks and interval, and the saved start of
+//! scheme's previous level and last step; generalized-α's accelerations, step controller,
+//! Jacobian and, from version 4, its counts of steps, iterations and Jacobians), the line
+//! failures' releases (version 2), `scheme = "auto"`'s switching between generalized-α and
+//! RK4 (version 3), the coupling tracks and interval, and the saved start of
 //! the coupling interval. Every number is stored exactly (f64 bits), so a restored run steps exactly as the
 //! saved one would have. A checkpoint of another model, of another format version or a
 //! truncated one is refused with [`SimulationError::Checkpoint`].
@@ -22,7 +23,7 @@ use crate::system::CouplingTracks;
 
 const MAGIC: &[u8; 8] = b"HAWSERCK";
 /// The checkpoint format version this build writes and reads.
-pub const CHECKPOINT_VERSION: u32 = 3;
+pub const CHECKPOINT_VERSION: u32 = 4;
 
 /// FNV-1a (64 bits) of `bytes`: stable across platforms and Rust versions.
 pub fn fnv1a(bytes: &[u8]) -> u64 {
