@@ -39,7 +39,7 @@ crate::math::wide_simd_fn! {
     /// The element loop walks the line once, section by section, with everything that does not
     /// change along a section computed once (`SectionConstants`), four elements at a time
     /// (`ElementBatch`): what depends on one element only (tangent, strain, tension, weight and
-    /// buoyancy, Morison's fluid load in fluid at rest or a steady current without waves) is
+    /// buoyancy, Morison's fluid load with the fluid's kinematics taken point by point) is
     /// computed lane by lane, then each node's force is summed from the contributions of
     /// element e − 1, then those of element e, in the order of the equations above (tension,
     /// weight and buoyancy, the two Gauss points, seabed contact), so that every node receives
@@ -69,11 +69,6 @@ crate::math::wide_simd_fn! {
         let consistent = mass_matrix == MassMatrix::Consistent;
         // No current and no waves: the fluid is at rest everywhere.
         let still_water = env.is_still_water();
-        // A steady current and no waves, with the fluid taken at each point: the batches
-        // compute the fluid load too.
-        let steady_current = env.waves.is_none()
-            && !env.current.is_unsteady()
-            && matches!(options.fluid, FluidPoints::Direct);
         let mut blocks = blocks;
         if let Some(b) = blocks.as_deref_mut() {
             // A lumped line's diagonal blocks are all written below, from its `LumpedMass`.
@@ -98,9 +93,9 @@ crate::math::wide_simd_fn! {
             let sec = &line.sections[section];
             let k = SectionConstants::new(sec, env);
             let lt = &sec.line_type;
-            // Morison's fluid load in fluid at rest or a steady current: the batches compute it
-            // with the elements.
-            let batch_drag = (still_water || steady_current) && k.morison.is_some();
+            // Morison's fluid load (drag, and in moving water Froude–Krylov and added-mass
+            // force): the batches compute it with the elements.
+            let batch_drag = k.morison.is_some();
             let mut batch = ElementBatch::default();
             for e0 in (first..end).step_by(LANES) {
                 let count = LANES.min(end - e0);
@@ -113,9 +108,11 @@ crate::math::wide_simd_fn! {
                     batch_drag && still_water,
                 );
                 if batch_drag && !still_water {
-                    batch.current_drag(
+                    batch.fluid_drag(
                         &k,
                         env,
+                        &options.fluid,
+                        2 * e0,
                         sec.area,
                         (lt.normal_added_mass, lt.tangential_added_mass),
                         time,
@@ -195,7 +192,7 @@ crate::math::wide_simd_fn! {
                             let relative = -(va * na + vb * nb);
                             let f = drag_force_with_factor(
                                 k.drag,
-                                k.drag_factor[fluid(z)],
+                                k.drag_factor[fluid_index(z)],
                                 root_stretch,
                                 &t,
                                 &relative,
@@ -359,8 +356,9 @@ type Lanes = [Real; LANES];
 
 /// The quantities of up to [`LANES`] consecutive elements of one section that depend on
 /// nothing but the element: unit tangent t, strain ε, tension T and its nodal force T t
-/// (eqs. 7–9, 13–15), √(1+ε), weight and buoyancy, and in fluid at rest or a steady current
-/// Morison's fluid load (eqs. 16, 19–23) at both Gauss points times each node's share of
+/// (eqs. 7–9, 13–15), √(1+ε), weight and buoyancy, and with Morison drag the fluid load
+/// (eqs. 16, 19–23; in moving water with the fluid's inertia) at both Gauss points times each
+/// node's share of
 /// the Gauss weight, (L0/2) N_a(ξ_g) and
 /// (L0/2) N_b(ξ_g). [`line_forces`] adds them node by node in its own order. Each lane runs
 /// the expressions a per-element loop would, so the results are the same bits whatever the
@@ -391,6 +389,8 @@ struct ElementBatch {
     drag_b: [[Lanes; 3]; 2],
     /// The nodes, [r_a, r_b, v_a, v_b][component][lane] [m, m/s].
     node: [[Lanes; 3]; 4],
+    /// The last lane holding an element of its own (the lanes after it repeat it).
+    last: usize,
 }
 
 // Lanes are indexed: the lane loops are what the compiler packs into registers.
@@ -412,6 +412,7 @@ impl ElementBatch {
         drag: bool,
     ) {
         let last = r.len() - 2;
+        self.last = last.min(LANES - 1);
         let node = &mut self.node;
         if last + 1 >= LANES {
             // A full batch: node l + 1 is lane l's second node and lane l + 1's first, each
@@ -500,7 +501,7 @@ impl ElementBatch {
                 let rx = -(vxa[l] * na + vxb[l] * nb);
                 let ry = -(vya[l] * na + vyb[l] * nb);
                 let rz = -(vza[l] * na + vzb[l] * nb);
-                let factor = k.drag_factor[fluid(z)];
+                let factor = k.drag_factor[fluid_index(z)];
                 let q = factor * self.root_stretch[l];
                 let f = morison_lane((normal, tangential), q, [tx, ty, tz], [rx, ry, rz]);
                 for c in 0..3 {
@@ -511,18 +512,24 @@ impl ElementBatch {
         }
     }
 
-    /// The fluid load in a steady current without waves at both Gauss points, times each
-    /// node's share of the Gauss weight, into `drag_a` and `drag_b`: what [`fluid_load`]
-    /// computes there, lane by lane but for the current's velocity (one call a point):
-    /// Morison drag on the relative velocity u c_f − v (u the current under water, none in
-    /// the air; c_f `current_factor`) with the point's fluid density, plus the Froude–Krylov
-    /// and added-mass force of the fluid's acceleration, which is zero (kept, for the same
-    /// bits).
+    /// The fluid load in moving water at both Gauss points, times each node's share of the
+    /// Gauss weight, into `drag_a` and `drag_b`: what [`fluid_load`] computes there, lane by
+    /// lane but for the fluid's kinematics (one call a point, `fluid` at the line's point
+    /// `first_point` + 2 l + g for lane l and Gauss point g, as [`fluid_load`] is called):
+    /// Morison drag on the relative velocity u c_f − v (c_f `current_factor`) with the
+    /// point's fluid density, plus the Froude–Krylov and added-mass force of the fluid's
+    /// acceleration a_w, ρ A ((1 + C_an) a_w,n + C_at a_w,t) (DG paper eq. 13), in the
+    /// operations of [`fluid_inertia_force`] (zero, and kept for the same bits, in a steady
+    /// current). A depth-profile current without waves, taken at the points themselves, is
+    /// looked up here ([`profile_at`]).
     #[inline(always)]
-    fn current_drag(
+    #[allow(clippy::too_many_arguments)]
+    fn fluid_drag(
         &mut self,
         k: &SectionConstants,
         env: &Environment,
+        fluid: &FluidPoints,
+        first_point: usize,
         area: Real,
         added_mass: (Real, Real),
         time: Real,
@@ -533,15 +540,20 @@ impl ElementBatch {
         };
         let [[xa, ya, za], [xb, yb, zb], [vxa, vya, vza], [vxb, vyb, vzb]] = &self.node;
         let (can, cat) = added_mass;
+        // The lanes past the batch's last element repeat it (`evaluate`).
+        let last = self.last;
         for (g, xi) in GAUSS.into_iter().enumerate() {
             let (na, nb) = (1.0 - xi, xi);
             let (wa, wb) = (k.half_length * na, k.half_length * nb);
             let mut u = [Lanes::default(); 3];
+            let mut acceleration = [Lanes::default(); 3];
             match &env.current {
-                Current::Profile { z: zs, velocity } if env.waves.is_none() => {
+                Current::Profile { z: zs, velocity }
+                    if env.waves.is_none() && matches!(fluid, FluidPoints::Direct) =>
+                {
                     // [`Environment::fluid_kinematics`] of a depth profile without waves, its
                     // profile lookup inlined here: the current's velocity plus the waves' zero
-                    // under water, nothing in the air.
+                    // under water, nothing in the air; no acceleration.
                     for l in 0..LANES {
                         let z = za[l] * na + zb[l] * nb;
                         let profile = profile_at(zs, velocity, z);
@@ -554,9 +566,11 @@ impl ElementBatch {
                     for l in 0..LANES {
                         let z = za[l] * na + zb[l] * nb;
                         let point = Vec3::new(xa[l] * na + xb[l] * nb, ya[l] * na + yb[l] * nb, z);
-                        let velocity = env.fluid_kinematics(&point, time).0;
+                        let index = first_point + 2 * l.min(last) + g;
+                        let (velocity, a) = fluid.kinematics(env, index, &point, time);
                         for c in 0..3 {
                             u[c][l] = velocity[c];
+                            acceleration[c][l] = a[c];
                         }
                     }
                 }
@@ -568,18 +582,19 @@ impl ElementBatch {
                 let ry = u[1][l] * current_factor - (vya[l] * na + vyb[l] * nb);
                 let rz = u[2][l] * current_factor - (vza[l] * na + vzb[l] * nb);
                 let density = env.fluid_density(z);
-                let q = k.drag_factor[fluid(z)] * self.root_stretch[l];
+                let q = k.drag_factor[fluid_index(z)] * self.root_stretch[l];
                 let drag = morison_lane((normal, tangential), q, [tx, ty, tz], [rx, ry, rz]);
-                // `fluid_inertia_force` of the zero acceleration: a_t = t (0·t), a_n = 0 − a_t.
-                let a0 = 0.0 * tx + 0.0 * ty + 0.0 * tz;
-                let inertia = |t: Real| {
-                    let at = t * a0;
-                    density * area * ((1.0 + can) * (0.0 - at) + cat * at)
+                // `fluid_inertia_force`: a_t = t (a·t), a_n = a − a_t.
+                let [ax, ay, az] = [acceleration[0][l], acceleration[1][l], acceleration[2][l]];
+                let along = ax * tx + ay * ty + az * tz;
+                let inertia = |t: Real, a: Real| {
+                    let at = t * along;
+                    density * area * ((1.0 + can) * (a - at) + cat * at)
                 };
                 let f = [
-                    drag[0] + inertia(tx),
-                    drag[1] + inertia(ty),
-                    drag[2] + inertia(tz),
+                    drag[0] + inertia(tx, ax),
+                    drag[1] + inertia(ty, ay),
+                    drag[2] + inertia(tz, az),
                 ];
                 for c in 0..3 {
                     self.drag_a[g][c][l] = f[c] * wa;
@@ -657,7 +672,7 @@ fn morison_lane(coefficients: (Real, Real), q: Real, t: [Real; 3], r: [Real; 3])
 /// The index of the fluid at height z [m] in [`SectionConstants`]' pairs: 0 in water (z < 0),
 /// 1 in air.
 #[inline(always)]
-fn fluid(z: Real) -> usize {
+fn fluid_index(z: Real) -> usize {
     usize::from(!(z < 0.0))
 }
 
@@ -675,7 +690,7 @@ fn add_element_mass(
     if (za < 0.0) == (zb < 0.0) {
         // Uniform density: exact shape-function integrals, ∫NaNa = ∫NbNb = 1/3 and
         // ∫NaNb = 1/6.
-        let third = k.element_mass(fluid(za), t, l0 / 3.0);
+        let third = k.element_mass(fluid_index(za), t, l0 / 3.0);
         b.diag[e] += third;
         b.diag[e + 1] += third;
         let sixth = third * 0.5;
@@ -685,7 +700,7 @@ fn add_element_mass(
         // Crossing the surface: each Gauss point takes its own density.
         for &xi in &GAUSS {
             let (na, nb) = (1.0 - xi, xi);
-            let m = k.element_mass(fluid(za * na + zb * nb), t, k.half_length);
+            let m = k.element_mass(fluid_index(za * na + zb * nb), t, k.half_length);
             b.diag[e] += m * (na * na);
             b.diag[e + 1] += m * (nb * nb);
             b.lower[e] += m * (na * nb);
@@ -701,14 +716,14 @@ fn add_element_mass(
 #[inline(always)]
 fn lumped_element_mass(k: &SectionConstants, za: Real, zb: Real) -> ([Real; 2], [Real; 2]) {
     if (za < 0.0) == (zb < 0.0) {
-        let (alpha, beta) = k.added_mass[fluid(za)];
+        let (alpha, beta) = k.added_mass[fluid_index(za)];
         let c = (k.mass_per_length + alpha) * k.half_length;
         let b = beta * k.half_length;
         ([c, c], [b, b])
     } else {
         let (mut c, mut b) = ([0.0; 2], [0.0; 2]);
         for &xi in &GAUSS {
-            let (alpha, beta) = k.added_mass[fluid(za * (1.0 - xi) + zb * xi)];
+            let (alpha, beta) = k.added_mass[fluid_index(za * (1.0 - xi) + zb * xi)];
             for (j, n) in [1.0 - xi, xi].into_iter().enumerate() {
                 c[j] += (k.mass_per_length + alpha) * (k.half_length * n);
                 b[j] += beta * (k.half_length * n);
