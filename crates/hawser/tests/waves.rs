@@ -1185,3 +1185,147 @@ fn static_position_serves_every_formulation() {
         );
     }
 }
+
+/// The `fe` element loop computes the fluid load of its Gauss points in lanes, four elements
+/// at a time (drag, and the Froude–Krylov and added-mass force of the fluid's acceleration):
+/// it must take each point's kinematics where the per-point `fluid_load` would. A line
+/// crossing the surface in a 200-component JONSWAP sea over a uniform current, with the
+/// kinematics summed directly and taken from the static-position table (where the point's
+/// index selects its kinematics): the nodal forces minus those in still water at the same
+/// positions and velocities (tension, weight and buoyancy cancel) equal the sum over each
+/// element's two Gauss points of `fluid_load` minus the still-water drag, times each node's
+/// share N(ξ) L0/2. Tolerance 1e-12 of the largest nodal force (the difference of two runs
+/// cancels the tension, weight and buoyancy to round-off of the whole force; the same fluid
+/// terms are summed in another order, with the test's own tangent and stretch); a point given
+/// another point's kinematics would err by a fraction of the fluid force itself.
+#[test]
+fn element_loop_fluid_load_is_the_per_point_fluid_load() {
+    use hawser::formulation::{ElementState, LoadOptions, fe::line_forces, fluid_load};
+    use hawser::physics::environment::Current;
+    use hawser::physics::static_kinematics::{FluidPoints, StaticPositionKinematics};
+    let n = 22; // elements: five batches of four and one of two
+    let mut lt = line_type(0.12, 40.0, 5.0e8);
+    lt.drag = hawser::physics::hydrodynamics::DragModel::Morison {
+        normal: 1.2,
+        tangential: 0.3,
+    };
+    lt.tangential_added_mass = 0.5;
+    let mut model = single_line(
+        lt,
+        // Every element longer than its chord below: slack, so no tension swamps the fluid
+        // load.
+        200.0,
+        n,
+        fixed("A", Vec3::new(0.0, 0.0, -60.0)),
+        fixed("B", Vec3::new(70.0, 0.0, 2.0)),
+        MassMatrix::Lumped,
+    );
+    model.environment.depth = 150.0;
+    let still = model.environment.clone();
+    let system = System::new(&model).expect("valid model");
+    let mesh = &system.lines[0].mesh;
+    let mut moving = still.clone();
+    moving.current = Current::Uniform(Vec3::new(0.4, -0.1, 0.0));
+    moving.waves = jonswap(7, 200, Some(4.0), 150.0);
+    // Nodes along a sagging curve through the surface, moving.
+    let r: Vec<Vec3> = (0..=n)
+        .map(|i| {
+            let s = i as Real / n as Real;
+            Vec3::new(
+                70.0 * s,
+                3.0 * s * s,
+                -60.0 + 62.0 * s - 9.0 * (PI * s).sin(),
+            )
+        })
+        .collect();
+    let v: Vec<Vec3> = (0..=n)
+        .map(|i| {
+            let a = 0.7 * i as Real;
+            Vec3::new(0.3 * a.cos(), 0.2 * a.sin(), -0.5 * (1.3 * a).cos())
+        })
+        .collect();
+    let gauss = [0.5 - 0.288_675_134_594_812_9, 0.5 + 0.288_675_134_594_812_9];
+    let t = 7.3;
+    let forces = |env: &hawser::physics::environment::Environment, fluid: FluidPoints| {
+        let mut f = vec![Vec3::zeros(); n + 1];
+        let mut elements = ElementState::new(n);
+        let options = LoadOptions {
+            current_factor: 1.0,
+            fluid,
+        };
+        line_forces(
+            mesh,
+            MassMatrix::Lumped,
+            env,
+            t,
+            &r,
+            &v,
+            &mut f,
+            &mut elements,
+            None,
+            options,
+        );
+        f
+    };
+    let at_rest = forces(&still, FluidPoints::Direct);
+    let points: Vec<Vec3> = (0..n)
+        .flat_map(|e| gauss.map(|xi| r[e] * (1.0 - xi) + r[e + 1] * xi))
+        .collect();
+    let mut table = StaticPositionKinematics::new(moving.waves.field().unwrap(), 0.1, &[points]);
+    table.prepare(t);
+    for fluid in [
+        FluidPoints::Direct,
+        FluidPoints::Static {
+            table: &table,
+            first: 0,
+        },
+    ] {
+        let got = forces(&moving, fluid);
+        let mut expected = vec![Vec3::zeros(); n + 1];
+        for e in 0..n {
+            let sec = mesh.section(e);
+            let d = r[e + 1] - r[e];
+            let tau = d / d.norm();
+            let root = (d.norm() / sec.element_length).sqrt();
+            for (g, xi) in gauss.into_iter().enumerate() {
+                let (p, u) = (
+                    r[e] * (1.0 - xi) + r[e + 1] * xi,
+                    v[e] * (1.0 - xi) + v[e + 1] * xi,
+                );
+                let load = |env, fluid: &FluidPoints, still_water| {
+                    let lt = &sec.line_type;
+                    fluid_load(
+                        env,
+                        fluid,
+                        2 * e + g,
+                        lt,
+                        sec.area,
+                        t,
+                        &p,
+                        &u,
+                        &tau,
+                        root,
+                        1.0,
+                        still_water,
+                    )
+                };
+                let f = load(&moving, &fluid, false) - load(&still, &FluidPoints::Direct, true);
+                expected[e] += f * (0.5 * sec.element_length * (1.0 - xi));
+                expected[e + 1] += f * (0.5 * sec.element_length * xi);
+            }
+        }
+        let largest = |f: &[Vec3]| f.iter().map(|f| f.norm()).fold(0.0, Real::max);
+        let fluid = largest(&expected);
+        assert!(fluid > 1.0, "the sea loads the line: {fluid} N");
+        let scale = fluid.max(largest(&got)).max(largest(&at_rest));
+        // Weight and buoyancy, no tension: the tolerance stays near the fluid force's round-off.
+        assert!(scale < 100.0 * fluid, "{scale} N against {fluid} N");
+        for i in 0..=n {
+            let err = (got[i] - at_rest[i] - expected[i]).norm();
+            assert!(
+                err <= 1e-12 * scale,
+                "node {i}: {err:.3e} N of {scale:.3e} N (fluid {fluid:.3e} N)"
+            );
+        }
+    }
+}

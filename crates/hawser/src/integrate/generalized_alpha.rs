@@ -469,8 +469,10 @@ impl GeneralizedAlpha {
         let n = self.acceleration.len();
         let lines = self.reference.len();
         let slots = 3 * self.solver.body_slots.len();
-        const FLAGS: usize = 6 + 4;
-        if history.len() != 3 * n + lines + FLAGS + slots + self.jacobian.len() {
+        // Three flags, the previous step, the contraction and the matrix step, then the four
+        // counts of `Statistics`.
+        const SCALARS: usize = 6 + 4;
+        if history.len() != 3 * n + lines + SCALARS + slots + self.jacobian.len() {
             return false;
         }
         self.acceleration.copy_from_slice(&history[..n]);
@@ -478,7 +480,7 @@ impl GeneralizedAlpha {
         self.previous.copy_from_slice(&history[2 * n..3 * n]);
         self.reference
             .copy_from_slice(&history[3 * n..3 * n + lines]);
-        let flags = &history[3 * n + lines..3 * n + lines + FLAGS];
+        let flags = &history[3 * n + lines..3 * n + lines + SCALARS];
         self.started = flags[0] != 0.0;
         self.formed = flags[1] != 0.0;
         self.refresh = flags[2] != 0.0;
@@ -497,7 +499,7 @@ impl GeneralizedAlpha {
         self.weights_ready = false;
         // The body points' offsets the saved matrix was formed with (its ρ_f), which a matrix
         // formed again at `restored_matrix_step` takes instead of the iterate's.
-        let offsets = &history[3 * n + lines + FLAGS..3 * n + lines + FLAGS + slots];
+        let offsets = &history[3 * n + lines + SCALARS..3 * n + lines + SCALARS + slots];
         for (slot, o) in self
             .solver
             .body_slots
@@ -506,7 +508,7 @@ impl GeneralizedAlpha {
         {
             slot.offset = Vec3::new(o[0], o[1], o[2]);
         }
-        let mut rest = history[3 * n + lines + FLAGS + slots..].iter().copied();
+        let mut rest = history[3 * n + lines + SCALARS + slots..].iter().copied();
         self.jacobian.set_numbers(&mut rest)
     }
 

@@ -127,12 +127,13 @@ impl LumpedMass {
     /// The unit tangent t_e of element e.
     #[inline]
     pub fn tangent_of(&self, e: usize) -> Vec3 {
-        Vec3::new(self.tangent[0][e], self.tangent[1][e], self.tangent[2][e])
+        tangent_at(&self.tangent, e)
     }
 
-    /// Sets element e's unit tangent `t` and its weights `rank_one` ([b_a, b_b]).
-    #[inline(always)]
-    pub fn set_element(&mut self, e: usize, t: [Real; 3], rank_one: [Real; 2]) {
+    /// Sets element e's unit tangent `t` and its weights `rank_one` ([b_a, b_b]) (the
+    /// element loop writes them lane by lane instead).
+    #[cfg(test)]
+    fn set_element(&mut self, e: usize, t: [Real; 3], rank_one: [Real; 2]) {
         for (component, value) in self.tangent.iter_mut().zip(t) {
             component[e] = value;
         }
@@ -148,6 +149,12 @@ impl LumpedMass {
     pub fn solve_interior(&self, x: &mut [Vec3]) -> Result<(), usize> {
         solve_lumped_interior(&self.isotropic, &self.tangent, &self.rank_one, x)
     }
+}
+
+/// Element e's vector of a by-component store (`tangent[k][e]`).
+#[inline(always)]
+fn tangent_at(tangent: &[Vec<Real>; 3], e: usize) -> Vec3 {
+    Vec3::new(tangent[0][e], tangent[1][e], tangent[2][e])
 }
 
 /// Nodes a lane group of [`solve_lumped_interior`] solves together.
@@ -217,11 +224,11 @@ fn solve_nodes(
     x: &mut [Vec3],
     from: usize,
 ) -> Result<(), usize> {
-    let t = |e: usize| Vec3::new(tangent[0][e], tangent[1][e], tangent[2][e]);
     for (k, x) in x.iter_mut().enumerate().skip(from) {
         let j = k + 1;
         let (b1, b2) = (rank_one[1][j - 1], rank_one[0][j]);
-        *x = solve_two_rank_one(isotropic[j], b1, &t(j - 1), b2, &t(j), x).ok_or(j)?;
+        let (t1, t2) = (tangent_at(tangent, j - 1), tangent_at(tangent, j));
+        *x = solve_two_rank_one(isotropic[j], b1, &t1, b2, &t2, x).ok_or(j)?;
     }
     Ok(())
 }
