@@ -106,6 +106,7 @@ crate::math::wide_simd_fn! {
                     &r[e0..=end],
                     &v[e0..=end],
                     batch_drag && still_water,
+                    batch_drag && !still_water,
                 );
                 if batch_drag && !still_water {
                     batch.fluid_drag(
@@ -387,7 +388,8 @@ struct ElementBatch {
     drag_a: [[Lanes; 3]; 2],
     /// Drag at Gauss point g times (L0/2) N_b(ξ_g) [N].
     drag_b: [[Lanes; 3]; 2],
-    /// The nodes, [r_a, r_b, v_a, v_b][component][lane] [m, m/s].
+    /// The nodes, [r_a, r_b, v_a, v_b][component][lane] [m, m/s], kept for the fluid load in
+    /// moving water (`evaluate`'s `keep_nodes`).
     node: [[Lanes; 3]; 4],
     /// The last lane holding an element of its own (the lanes after it repeat it).
     last: usize,
@@ -400,7 +402,8 @@ impl ElementBatch {
     /// node l to node l + 1, at most [`LANES`] of them; lanes past the last element repeat
     /// it), of section `sec` with constants `k`, on a line paid out at `length_rate` [1/s]
     /// (ε̇ = t·(v_b − v_a)/L0 − σ(1 + ε), [`Mesh::length_rate`]), with Morison drag in fluid
-    /// at rest if `drag`.
+    /// at rest if `drag`; the node lanes kept in the batch if `keep_nodes` (for
+    /// [`ElementBatch::fluid_drag`]).
     #[inline(always)]
     fn evaluate(
         &mut self,
@@ -410,39 +413,23 @@ impl ElementBatch {
         r: &[Vec3],
         v: &[Vec3],
         drag: bool,
+        keep_nodes: bool,
     ) {
         let last = r.len() - 2;
         self.last = last.min(LANES - 1);
-        let node = &mut self.node;
-        if last + 1 >= LANES {
-            // A full batch: node l + 1 is lane l's second node and lane l + 1's first, each
-            // read once.
-            for j in 0..=LANES {
-                let (p, u) = (r[j], v[j]);
-                for c in 0..3 {
-                    if j < LANES {
-                        node[0][c][j] = p[c];
-                        node[2][c][j] = u[c];
-                    }
-                    if j > 0 {
-                        node[1][c][j - 1] = p[c];
-                        node[3][c][j - 1] = u[c];
-                    }
-                }
-            }
-        } else {
-            for l in 0..LANES {
-                let e = l.min(last);
-                let (ra, rb, va, vb) = (r[e], r[e + 1], v[e], v[e + 1]);
-                for c in 0..3 {
-                    node[0][c][l] = ra[c];
-                    node[1][c][l] = rb[c];
-                    node[2][c][l] = va[c];
-                    node[3][c][l] = vb[c];
-                }
-            }
+        // Each lane's two nodes, component by component, built from the nodes straight into
+        // locals (element l.min(last) in lane l): written into the batch first and read back
+        // as whole registers, the narrow stores stall the wide loads (store forwarding).
+        let lane = |p: &[Vec3], node: usize, c: usize| -> Lanes {
+            std::array::from_fn(|l| p[l.min(last) + node][c])
+        };
+        let [xa, ya, za] = [0, 1, 2].map(|c| lane(r, 0, c));
+        let [xb, yb, zb] = [0, 1, 2].map(|c| lane(r, 1, c));
+        let [vxa, vya, vza] = [0, 1, 2].map(|c| lane(v, 0, c));
+        let [vxb, vyb, vzb] = [0, 1, 2].map(|c| lane(v, 1, c));
+        if keep_nodes {
+            self.node = [[xa, ya, za], [xb, yb, zb], [vxa, vya, vza], [vxb, vyb, vzb]];
         }
-        let [[xa, ya, za], [xb, yb, zb], [vxa, vya, vza], [vxb, vyb, vzb]] = *node;
         let il = sec.inverse_length;
         let mut rate = Lanes::default();
         for l in 0..LANES {
