@@ -104,44 +104,96 @@ pub fn solve3(m: &Mat3, b: &Vec3) -> Option<Vec3> {
     ))
 }
 
-/// Whether the loops written lane by lane run their AVX2 version ([`wide_simd_fn`]): the
-/// processor has AVX2 and the environment variable `HAWSER_SIMD` is not `baseline` (read
-/// once per process; `HAWSER_SIMD=baseline` runs the SSE2 version, to check that a result
-/// does not depend on the instruction set). Always false off x86-64.
-pub fn wide_simd() -> bool {
+/// The instruction set the loops written lane by lane ([`wide_simd_fn`]) run on.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub enum SimdLevel {
+    /// The target's baseline: SSE2 on x86-64 (two lanes a register).
+    Baseline,
+    /// AVX2 (four lanes a register).
+    Avx2,
+    /// AVX-512 F, VL and DQ (eight lanes a register).
+    Avx512,
+}
+
+/// The widest instruction set of the processor, capped by the environment variable
+/// `HAWSER_SIMD` (`baseline` or `avx2`; read once per process), so that a result can be
+/// checked not to depend on it. Always [`SimdLevel::Baseline`] off x86-64.
+pub fn simd_level() -> SimdLevel {
     #[cfg(target_arch = "x86_64")]
     {
-        static WIDE: std::sync::LazyLock<bool> = std::sync::LazyLock::new(|| {
-            std::arch::is_x86_feature_detected!("avx2")
-                && std::env::var_os("HAWSER_SIMD").is_none_or(|v| v != "baseline")
+        static LEVEL: std::sync::LazyLock<SimdLevel> = std::sync::LazyLock::new(|| {
+            let cap = match std::env::var("HAWSER_SIMD").as_deref() {
+                Ok("baseline") => SimdLevel::Baseline,
+                Ok("avx2") => SimdLevel::Avx2,
+                _ => SimdLevel::Avx512,
+            };
+            let found = if std::arch::is_x86_feature_detected!("avx512f")
+                && std::arch::is_x86_feature_detected!("avx512vl")
+                && std::arch::is_x86_feature_detected!("avx512dq")
+            {
+                SimdLevel::Avx512
+            } else if std::arch::is_x86_feature_detected!("avx2") {
+                SimdLevel::Avx2
+            } else {
+                SimdLevel::Baseline
+            };
+            found.min(cap)
         });
-        *WIDE
+        *LEVEL
     }
     #[cfg(not(target_arch = "x86_64"))]
-    false
+    SimdLevel::Baseline
 }
 
-/// The instruction set the lane-by-lane loops run on: "avx2", "sse2" (x86-64 without AVX2 or
-/// with `HAWSER_SIMD=baseline`) or "baseline" (other targets). `hawser bench` reports it.
+/// The instruction set the lane-by-lane loops run on: "avx512", "avx2", "sse2" (x86-64
+/// without AVX2 or with `HAWSER_SIMD=baseline`) or "baseline" (other targets). `hawser
+/// bench` reports it.
 pub fn instruction_set() -> &'static str {
-    if wide_simd() {
-        "avx2"
-    } else if cfg!(target_arch = "x86_64") {
-        "sse2"
-    } else {
-        "baseline"
+    match simd_level() {
+        SimdLevel::Avx512 => "avx512",
+        SimdLevel::Avx2 => "avx2",
+        SimdLevel::Baseline if cfg!(target_arch = "x86_64") => "sse2",
+        SimdLevel::Baseline => "baseline",
     }
 }
 
-/// Defines a function whose body is compiled twice, for AVX2 and for the target's baseline
-/// (SSE2 on x86-64), and runs the AVX2 version when [`wide_simd`]. For the hot loops
-/// written lane by lane (the `fe` element batches), whose lanes the compiler packs four to a
-/// register with AVX2 and two without. AVX2 brings wider registers, not other arithmetic (no
-/// fused multiply-add is formed), so both versions give the same bits (a test runs both);
-/// one binary runs on any x86-64 processor at the speed of the one it runs on.
+/// Defines a function whose body is compiled for AVX2 and for the target's baseline (SSE2 on
+/// x86-64), and with `avx512;` before it for AVX-512 too, and runs the widest of them the
+/// processor has ([`simd_level`]). For the hot loops written lane by lane (the `fe` element
+/// batches, the lumped mass solve), whose lanes the compiler packs two, four or eight to a
+/// register: loops of four lanes are left to AVX2 (compiled for AVX-512 they run slower),
+/// loops of eight take AVX-512. The wider sets bring wider registers, not other arithmetic
+/// (no fused multiply-add is formed: Rust never contracts a product and a sum), so every
+/// version gives the same bits (a test runs them all); one binary runs on any x86-64
+/// processor at the speed of the one it runs on.
 ///
-/// The body must not name generic parameters (it is compiled into two inner functions).
+/// The body must not name generic parameters (it is compiled into inner functions).
 macro_rules! wide_simd_fn {
+    (avx512; $(#[$m:meta])* $vis:vis fn $name:ident($($arg:ident: $ty:ty),* $(,)?) $(-> $ret:ty)? $body:block) => {
+        $(#[$m])*
+        $vis fn $name($($arg: $ty),*) $(-> $ret)? {
+            #[cfg(target_arch = "x86_64")]
+            #[target_feature(enable = "avx512f,avx512vl,avx512dq")]
+            #[allow(clippy::too_many_arguments)]
+            fn avx512($($arg: $ty),*) $(-> $ret)? $body
+            #[cfg(target_arch = "x86_64")]
+            #[target_feature(enable = "avx2")]
+            #[allow(clippy::too_many_arguments)]
+            fn avx2($($arg: $ty),*) $(-> $ret)? $body
+            #[inline(always)]
+            #[allow(clippy::too_many_arguments)]
+            fn baseline($($arg: $ty),*) $(-> $ret)? $body
+            #[cfg(target_arch = "x86_64")]
+            match $crate::math::simd_level() {
+                // SAFETY: the processor has the features each version is compiled for
+                // (`simd_level` detects them).
+                $crate::math::SimdLevel::Avx512 => return unsafe { avx512($($arg),*) },
+                $crate::math::SimdLevel::Avx2 => return unsafe { avx2($($arg),*) },
+                $crate::math::SimdLevel::Baseline => {}
+            }
+            baseline($($arg),*)
+        }
+    };
     ($(#[$m:meta])* $vis:vis fn $name:ident($($arg:ident: $ty:ty),* $(,)?) $(-> $ret:ty)? $body:block) => {
         $(#[$m])*
         $vis fn $name($($arg: $ty),*) $(-> $ret)? {
@@ -153,9 +205,9 @@ macro_rules! wide_simd_fn {
             #[allow(clippy::too_many_arguments)]
             fn baseline($($arg: $ty),*) $(-> $ret)? $body
             #[cfg(target_arch = "x86_64")]
-            if $crate::math::wide_simd() {
-                // SAFETY: the processor has AVX2 (`wide_simd`), the one feature `avx2` is
-                // compiled for.
+            if $crate::math::simd_level() >= $crate::math::SimdLevel::Avx2 {
+                // SAFETY: the processor has AVX2 (`simd_level` detects it), the one feature
+                // `avx2` is compiled for.
                 return unsafe { avx2($($arg),*) };
             }
             baseline($($arg),*)

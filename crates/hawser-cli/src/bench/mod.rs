@@ -490,7 +490,7 @@ fn bench(
             );
         }
         out!(
-            "fe element loop on {} (HAWSER_SIMD=baseline for the SSE2 version)",
+            "fe element loop on {} (HAWSER_SIMD=avx2 or baseline to cap it)",
             hawser::math::instruction_set()
         );
     }
