@@ -302,7 +302,10 @@ fn bench_compares_bodies_with_points_and_seas_with_still_water() {
         assert_eq!((points, bodies), if points > 0 { (8, 0) } else { (0, 8) });
         assert!(r["us_per_step"].as_f64().unwrap() > 0.0);
         let isa = r["instruction_set"].as_str();
-        assert!(matches!(isa, Some("avx2" | "sse2" | "baseline")), "{r}");
+        assert!(
+            matches!(isa, Some("avx512" | "avx2" | "sse2" | "baseline")),
+            "{r}"
+        );
         // `auto`'s switching: numbers when it started with generalized-α, null otherwise.
         let auto_implicit = r["scheme"] == "generalized-alpha" && !r["scheme_switches"].is_null();
         assert_eq!(r["rk4_share"].is_null(), !auto_implicit, "{r}");

@@ -145,9 +145,10 @@ pub fn simd_level() -> SimdLevel {
     SimdLevel::Baseline
 }
 
-/// The instruction set the lane-by-lane loops run on: "avx512", "avx2", "sse2" (x86-64
-/// without AVX2 or with `HAWSER_SIMD=baseline`) or "baseline" (other targets). `hawser
-/// bench` reports it.
+/// The widest instruction set the lane-by-lane loops run on ([`simd_level`]): "avx512"
+/// (the `fe` element loop in batches of eight on lines of 16 elements or more, loops of four
+/// lanes on AVX2), "avx2", "sse2" (x86-64 without AVX2 or with `HAWSER_SIMD=baseline`) or
+/// "baseline" (other targets). `hawser bench` reports it.
 pub fn instruction_set() -> &'static str {
     match simd_level() {
         SimdLevel::Avx512 => "avx512",

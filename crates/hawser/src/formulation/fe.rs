@@ -62,33 +62,24 @@ pub fn line_forces(
     blocks: Option<&mut LineBlocks>,
     options: LoadOptions,
 ) {
-    if line.elements() >= WIDE_LINE && crate::math::simd_level() == crate::math::SimdLevel::Avx512 {
-        line_forces_wide(
-            line,
-            mass_matrix,
-            env,
-            time,
-            r,
-            v,
-            forces,
-            elements,
-            blocks,
-            options,
-        )
+    let wide = crate::math::simd_level() == crate::math::SimdLevel::Avx512;
+    let in_batches = if wide && line.elements() >= WIDE_LINE {
+        line_forces_wide
     } else {
-        line_forces_narrow(
-            line,
-            mass_matrix,
-            env,
-            time,
-            r,
-            v,
-            forces,
-            elements,
-            blocks,
-            options,
-        )
-    }
+        line_forces_narrow
+    };
+    in_batches(
+        line,
+        mass_matrix,
+        env,
+        time,
+        r,
+        v,
+        forces,
+        elements,
+        blocks,
+        options,
+    )
 }
 
 crate::math::wide_simd_fn! {
