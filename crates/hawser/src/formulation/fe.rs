@@ -36,14 +36,15 @@ const GAUSS: [Real; 2] = [0.5 - 0.288_675_134_594_812_9, 0.5 + 0.288_675_134_594
 /// follow from it.
 ///
 /// The element loop walks the line once, section by section, with everything that does not
-/// change along a section computed once (`SectionConstants`), four elements at a time
+/// change along a section computed once (`SectionConstants`), several elements at a time
 /// (`ElementBatch`): what depends on one element only (tangent, strain, tension, weight and
 /// buoyancy, Morison's fluid load with the fluid's kinematics taken point by point) is
 /// computed lane by lane, then each node's force is summed from the contributions of
 /// element e − 1, then those of element e, in the order of the equations above (tension,
 /// weight and buoyancy, the two Gauss points, seabed contact), so that every node receives
-/// the same sums in the same order whatever the section boundaries and the lanes. Where a batch is clear of the seabed and its fluid
-/// load is in the lanes, the node sums go lane by lane too.
+/// the same sums in the same order whatever the section boundaries and the lanes. Where a
+/// batch is clear of the seabed and its fluid load is in the lanes, the node sums go lane by
+/// lane too.
 ///
 /// The loop runs in batches of four elements, compiled for AVX2 and SSE2, and on a processor
 /// with AVX-512 in batches of eight for lines of at least [`WIDE_LINE`] elements (the lanes
@@ -96,7 +97,9 @@ crate::math::wide_simd_fn! {
         blocks: Option<&mut LineBlocks>,
         options: LoadOptions,
     ) {
-        line_forces_in_lanes::<4>(line, mass_matrix, env, time, r, v, forces, elements, blocks, options)
+        line_forces_in_lanes::<4>(
+            line, mass_matrix, env, time, r, v, forces, elements, blocks, options,
+        )
     }
 }
 
@@ -115,7 +118,9 @@ crate::math::wide_simd_fn! {
         blocks: Option<&mut LineBlocks>,
         options: LoadOptions,
     ) {
-        line_forces_in_lanes::<8>(line, mass_matrix, env, time, r, v, forces, elements, blocks, options)
+        line_forces_in_lanes::<8>(
+            line, mass_matrix, env, time, r, v, forces, elements, blocks, options,
+        )
     }
 }
 
