@@ -85,6 +85,7 @@ pub fn line_forces(
 
 crate::math::wide_simd_fn! {
     /// [`line_forces`] in batches of four elements.
+    #[allow(clippy::too_many_arguments)]
     fn line_forces_narrow(
         line: &Mesh,
         mass_matrix: MassMatrix,
@@ -106,6 +107,7 @@ crate::math::wide_simd_fn! {
 crate::math::wide_simd_fn! {
     avx512;
     /// [`line_forces`] in batches of eight elements.
+    #[allow(clippy::too_many_arguments)]
     fn line_forces_wide(
         line: &Mesh,
         mass_matrix: MassMatrix,
@@ -504,6 +506,7 @@ impl<const L: usize> ElementBatch<L> {
     /// at rest if `drag`; the node lanes kept in the batch if `keep_nodes` (for
     /// [`ElementBatch::fluid_drag`]).
     #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
     fn evaluate(
         &mut self,
         k: &SectionConstants,
