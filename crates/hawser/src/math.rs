@@ -178,21 +178,17 @@ macro_rules! wide_simd_fn {
             #[allow(clippy::too_many_arguments)]
             fn avx512($($arg: $ty),*) $(-> $ret)? $body
             #[cfg(target_arch = "x86_64")]
-            #[target_feature(enable = "avx2")]
-            #[allow(clippy::too_many_arguments)]
-            fn avx2($($arg: $ty),*) $(-> $ret)? $body
-            #[inline(always)]
-            #[allow(clippy::too_many_arguments)]
-            fn baseline($($arg: $ty),*) $(-> $ret)? $body
-            #[cfg(target_arch = "x86_64")]
-            match $crate::math::simd_level() {
-                // SAFETY: the processor has the features each version is compiled for
+            if $crate::math::simd_level() == $crate::math::SimdLevel::Avx512 {
+                // SAFETY: the processor has the features `avx512` is compiled for
                 // (`simd_level` detects them).
-                $crate::math::SimdLevel::Avx512 => return unsafe { avx512($($arg),*) },
-                $crate::math::SimdLevel::Avx2 => return unsafe { avx2($($arg),*) },
-                $crate::math::SimdLevel::Baseline => {}
+                return unsafe { avx512($($arg),*) };
             }
-            baseline($($arg),*)
+            $crate::math::wide_simd_fn! {
+                #[inline(always)]
+                #[allow(clippy::too_many_arguments)]
+                fn narrower($($arg: $ty),*) $(-> $ret)? $body
+            }
+            narrower($($arg),*)
         }
     };
     ($(#[$m:meta])* $vis:vis fn $name:ident($($arg:ident: $ty:ty),* $(,)?) $(-> $ret:ty)? $body:block) => {
