@@ -191,8 +191,7 @@ fn line_forces_in_lanes<const L: usize>(
                 line.length_rate,
                 &r[e0..=end],
                 &v[e0..=end],
-                batch_drag && still_water,
-                batch_drag && !still_water,
+                still_water,
             );
             if batch_drag && !still_water {
                 batch.fluid_drag(
@@ -468,7 +467,7 @@ struct ElementBatch<const L: usize> {
     /// Drag at Gauss point g times (L0/2) N_b(ξ_g) [N].
     drag_b: [[[Real; L]; 3]; 2],
     /// The nodes, [r_a, r_b, v_a, v_b][component][lane] [m, m/s], kept for the fluid load in
-    /// moving water (`evaluate`'s `keep_nodes`).
+    /// moving water (by `evaluate`).
     node: [[[Real; L]; 3]; 4],
     /// The last lane holding an element of its own (the lanes after it repeat it).
     last: usize,
@@ -502,11 +501,10 @@ impl<const L: usize> ElementBatch<L> {
     /// Evaluates the elements whose nodes are `r` [m] moving at `v` [m/s] (element l from
     /// node l to node l + 1, at most `L` of them; lanes past the last element repeat
     /// it), of section `sec` with constants `k`, on a line paid out at `length_rate` [1/s]
-    /// (ε̇ = t·(v_b − v_a)/L0 − σ(1 + ε), [`Mesh::length_rate`]), with Morison drag in fluid
-    /// at rest if `drag`; the node lanes kept in the batch if `keep_nodes` (for
-    /// [`ElementBatch::fluid_drag`]).
+    /// (ε̇ = t·(v_b − v_a)/L0 − σ(1 + ε), [`Mesh::length_rate`]). With Morison drag, in
+    /// `still_water` its drag too, else the node lanes kept in the batch for
+    /// [`ElementBatch::fluid_drag`].
     #[inline(always)]
-    #[allow(clippy::too_many_arguments)]
     fn evaluate(
         &mut self,
         k: &SectionConstants,
@@ -514,8 +512,7 @@ impl<const L: usize> ElementBatch<L> {
         length_rate: Real,
         r: &[Vec3],
         v: &[Vec3],
-        drag: bool,
-        keep_nodes: bool,
+        still_water: bool,
     ) {
         let last = r.len() - 2;
         self.last = last.min(L - 1);
@@ -529,7 +526,7 @@ impl<const L: usize> ElementBatch<L> {
         let (xb, yb, zb) = (lane(r, 1, 0), lane(r, 1, 1), lane(r, 1, 2));
         let (vxa, vya, vza) = (lane(v, 0, 0), lane(v, 0, 1), lane(v, 0, 2));
         let (vxb, vyb, vzb) = (lane(v, 1, 0), lane(v, 1, 1), lane(v, 1, 2));
-        if keep_nodes {
+        if k.morison.is_some() && !still_water {
             self.node = [[xa, ya, za], [xb, yb, zb], [vxa, vya, vza], [vxb, vyb, vzb]];
         }
         let il = sec.inverse_length;
@@ -577,7 +574,7 @@ impl<const L: usize> ElementBatch<L> {
             self.fty[l] = self.ty[l] * tension;
             self.ftz[l] = self.tz[l] * tension;
         }
-        let Some((normal, tangential)) = k.morison.filter(|_| drag) else {
+        let Some((normal, tangential)) = k.morison.filter(|_| still_water) else {
             return;
         };
         for (g, xi) in GAUSS.into_iter().enumerate() {
