@@ -90,19 +90,11 @@ impl ExplicitRk {
             // with the copy of y (the same sums in the same order).
             let mut terms = (0..i).filter(|&j| tab.a[i * s + j] != 0.0);
             match terms.next() {
-                Some(j) => {
-                    let a = dt * tab.a[i * s + j];
-                    for ((st, yv), k) in self.stage.iter_mut().zip(y.iter()).zip(&self.k[j]) {
-                        *st = yv + a * k;
-                    }
-                }
+                Some(j) => shifted(&mut self.stage, y, dt * tab.a[i * s + j], &self.k[j]),
                 None => self.stage.copy_from_slice(y),
             }
             for j in terms {
-                let a = dt * tab.a[i * s + j];
-                for (st, k) in self.stage.iter_mut().zip(&self.k[j]) {
-                    *st += a * k;
-                }
+                add_scaled(&mut self.stage, dt * tab.a[i * s + j], &self.k[j]);
             }
             let (ki, _) = self.k.split_at_mut(i + 1);
             system.rhs(t + tab.c[i] * dt, &self.stage, &mut ki[i], ws)?;
@@ -110,19 +102,45 @@ impl ExplicitRk {
         // y += Σ_i (b_i dt) k_i, summed in stage order per entry.
         if let [k0, k1, k2, k3] = &self.k[..] {
             let b = [0, 1, 2, 3].map(|i| tab.b[i] * dt);
-            let stages = k0.iter().zip(k1).zip(k2).zip(k3);
-            for (yv, (((k0, k1), k2), k3)) in y.iter_mut().zip(stages) {
-                *yv = (((*yv + b[0] * k0) + b[1] * k1) + b[2] * k2) + b[3] * k3;
-            }
+            add_four_scaled(y, b, [k0, k1, k2, k3]);
         } else {
             for i in 0..s {
-                let b = tab.b[i] * dt;
-                for (yv, k) in y.iter_mut().zip(self.k[i].iter()) {
-                    *yv += b * k;
-                }
+                add_scaled(y, tab.b[i] * dt, &self.k[i]);
             }
         }
         Ok(())
+    }
+}
+
+// The stage sums, compiled for AVX2 and SSE2 (`crate::math::wide_simd_fn`): each entry's
+// products and sums in the same order whatever the instruction set, so the same bits.
+
+crate::math::wide_simd_fn! {
+    /// stage = y + a k.
+    fn shifted(stage: &mut [Real], y: &[Real], a: Real, k: &[Real]) {
+        for ((st, yv), k) in stage.iter_mut().zip(y).zip(k) {
+            *st = yv + a * k;
+        }
+    }
+}
+
+crate::math::wide_simd_fn! {
+    /// y += a k.
+    fn add_scaled(y: &mut [Real], a: Real, k: &[Real]) {
+        for (yv, k) in y.iter_mut().zip(k) {
+            *yv += a * k;
+        }
+    }
+}
+
+crate::math::wide_simd_fn! {
+    /// y += b₀ k₀ + b₁ k₁ + b₂ k₂ + b₃ k₃, summed in stage order per entry.
+    fn add_four_scaled(y: &mut [Real], b: [Real; 4], k: [&[Real]; 4]) {
+        let [k0, k1, k2, k3] = k;
+        let stages = k0.iter().zip(k1).zip(k2).zip(k3);
+        for (yv, (((k0, k1), k2), k3)) in y.iter_mut().zip(stages) {
+            *yv = (((*yv + b[0] * k0) + b[1] * k1) + b[2] * k2) + b[3] * k3;
+        }
     }
 }
 
