@@ -56,6 +56,19 @@ pub fn add3(data: &mut [Real], i: usize, v: &Vec3) {
     data[3 * i + 2] += v.z;
 }
 
+/// The 3-vectors `v` as their 3 `v.len()` coordinates in order, `v[i]` at `3*i .. 3*i+3`:
+/// the layout of a state block's nodes, so a block copies to or from nodes in one move.
+#[inline(always)]
+pub fn coordinates(v: &[Vec3]) -> &[Real] {
+    bytemuck::cast_slice(v)
+}
+
+/// [`coordinates`], writable.
+#[inline(always)]
+pub fn coordinates_mut(v: &mut [Vec3]) -> &mut [Real] {
+    bytemuck::cast_slice_mut(v)
+}
+
 /// Inverse of a 3×3 matrix by cofactors; `None` when it is singular to working precision.
 #[inline]
 pub fn inverse3(m: &Mat3) -> Option<Mat3> {

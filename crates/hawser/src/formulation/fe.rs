@@ -205,8 +205,14 @@ fn line_forces_in_lanes<const L: usize>(
                     options.current_factor,
                 );
             }
-            tension_out[e0..e0 + count].copy_from_slice(&batch.tension[..count]);
-            strain_out[e0..e0 + count].copy_from_slice(&batch.strain[..count]);
+            if count == L {
+                // A whole batch: a copy of fixed length, inlined (a call to memcpy else).
+                tension_out[e0..e0 + L].copy_from_slice(&batch.tension);
+                strain_out[e0..e0 + L].copy_from_slice(&batch.strain);
+            } else {
+                tension_out[e0..e0 + count].copy_from_slice(&batch.tension[..count]);
+                strain_out[e0..e0 + count].copy_from_slice(&batch.strain[..count]);
+            }
             // Structural and added mass (eqs. 12, 17–18): per unit length
             // γ0 I + ρ A (C_an (I − t tᵀ) + C_at t tᵀ) = (γ0 + ρ A C_an) I + ρ A (C_at − C_an) t tᵀ,
             // integrated with the linear shape functions; exact with one evaluation unless

@@ -187,13 +187,8 @@ impl SystemLine {
                 lw.velocity[n] = b.velocity;
                 // Coordinates then rates of nodes 1..n, three entries a node.
                 let (coordinates, rates) = y[..6 * m].split_at(3 * m);
-                let nodes = lw.position[1..n].iter_mut().zip(&mut lw.velocity[1..n]);
-                for ((r, v), (yr, yv)) in
-                    nodes.zip(coordinates.chunks_exact(3).zip(rates.chunks_exact(3)))
-                {
-                    *r = Vec3::new(yr[0], yr[1], yr[2]);
-                    *v = Vec3::new(yv[0], yv[1], yv[2]);
-                }
+                crate::math::coordinates_mut(&mut lw.position[1..n]).copy_from_slice(coordinates);
+                crate::math::coordinates_mut(&mut lw.velocity[1..n]).copy_from_slice(rates);
             }
             Discretisation::Dg(_) => {}
         }
@@ -302,15 +297,8 @@ impl SystemLine {
             Discretisation::Fe { .. } | Discretisation::Hermite(_) => {
                 let m = self.vectors() - 2;
                 let (coordinates, rates) = dydt[..6 * m].split_at_mut(3 * m);
-                let nodes = lw.velocity[1..=m].iter().zip(&blocks.x[1..=m]);
-                for ((v, a), (dr, dv)) in nodes.zip(
-                    coordinates
-                        .chunks_exact_mut(3)
-                        .zip(rates.chunks_exact_mut(3)),
-                ) {
-                    dr.copy_from_slice(v.as_slice());
-                    dv.copy_from_slice(a.as_slice());
-                }
+                coordinates.copy_from_slice(crate::math::coordinates(&lw.velocity[1..=m]));
+                rates.copy_from_slice(crate::math::coordinates(&blocks.x[1..=m]));
             }
             Discretisation::Dg(_) => {}
         }
