@@ -157,61 +157,131 @@ fn tangent_at(tangent: &[Vec<Real>; 3], e: usize) -> Vec3 {
     Vec3::new(tangent[0][e], tangent[1][e], tangent[2][e])
 }
 
-/// Nodes a lane group of [`solve_lumped_interior`] solves together.
-const SOLVE_LANES: usize = 4;
+/// The interior node count from which a processor with AVX-512 solves eight nodes at a time
+/// ([`solve_lumped_wide`]) instead of four ([`solve_lumped_narrow`]).
+const WIDE_SOLVE: usize = 16;
+
+/// [`LumpedMass::solve_interior`] of the blocks `isotropic`, `tangent` and `rank_one`:
+/// [`solve_two_rank_one`] at each interior node, several nodes at a time in lanes
+/// ([`solve_two_rank_one_lanes`], the same operations, so the same bits), the remainder one
+/// by one: four at a time compiled for AVX2 and for SSE2, and eight compiled for AVX-512 on
+/// a processor that has it, from [`WIDE_SOLVE`] nodes (`crate::math::wide_simd_fn`).
+#[inline]
+fn solve_lumped_interior(
+    isotropic: &[Real],
+    tangent: &[Vec<Real>; 3],
+    rank_one: &[Vec<Real>; 2],
+    x: &mut [Vec3],
+) -> Result<(), usize> {
+    let wide = crate::math::simd_level() == crate::math::SimdLevel::Avx512;
+    if wide && x.len() >= WIDE_SOLVE {
+        solve_lumped_wide(isotropic, tangent, rank_one, x)
+    } else {
+        solve_lumped_narrow(isotropic, tangent, rank_one, x)
+    }
+}
 
 crate::math::wide_simd_fn! {
-    /// [`LumpedMass::solve_interior`] of the blocks `isotropic`, `tangent` and `rank_one`:
-    /// [`solve_two_rank_one`] at each interior node, [`SOLVE_LANES`] nodes at a time in
-    /// lanes ([`solve_two_rank_one_lanes`], the same operations, so the same bits), the
-    /// remainder one by one. Compiled for AVX2 and for SSE2 (`crate::math::wide_simd_fn`).
-    fn solve_lumped_interior(
+    /// [`solve_lumped_interior`] four nodes at a time.
+    fn solve_lumped_narrow(
         isotropic: &[Real],
         tangent: &[Vec<Real>; 3],
         rank_one: &[Vec<Real>; 2],
         x: &mut [Vec3],
     ) -> Result<(), usize> {
-        const L: usize = SOLVE_LANES;
-        let count = x.len();
-        let mut i = 0;
-        while i + L <= count {
-            // Interior nodes j = i + 1 … i + L, between elements j − 1 and j.
-            let lanes = |v: &[Real], from: usize| -> [Real; L] {
-                v[from..from + L].try_into().expect("L entries")
-            };
-            let mut f = [[0.0; L]; 3];
-            for l in 0..L {
-                for k in 0..3 {
-                    f[k][l] = x[i + l][k];
-                }
-            }
-            let group = [
-                lanes(isotropic, i + 1),
-                lanes(&rank_one[1], i),
-                lanes(&rank_one[0], i + 1),
-                lanes(&tangent[0], i),
-                lanes(&tangent[1], i),
-                lanes(&tangent[2], i),
-                lanes(&tangent[0], i + 1),
-                lanes(&tangent[1], i + 1),
-                lanes(&tangent[2], i + 1),
-                f[0],
-                f[1],
-                f[2],
-            ];
-            match solve_two_rank_one_lanes(&group) {
-                Some(solved) => {
-                    for l in 0..L {
-                        x[i + l] = Vec3::new(solved[0][l], solved[1][l], solved[2][l]);
-                    }
-                }
-                // A singular block in the group: node by node, for its index.
-                None => solve_nodes(isotropic, tangent, rank_one, &mut x[..i + L], i)?,
-            }
-            i += L;
-        }
-        solve_nodes(isotropic, tangent, rank_one, x, i)
+        solve_lumped_in_lanes::<4>(isotropic, tangent, rank_one, x)
     }
+}
+
+crate::math::wide_simd_fn! {
+    avx512;
+    /// [`solve_lumped_interior`] eight nodes at a time.
+    fn solve_lumped_wide(
+        isotropic: &[Real],
+        tangent: &[Vec<Real>; 3],
+        rank_one: &[Vec<Real>; 2],
+        x: &mut [Vec3],
+    ) -> Result<(), usize> {
+        solve_lumped_in_lanes::<8>(isotropic, tangent, rank_one, x)
+    }
+}
+
+/// [`solve_lumped_interior`] `L` nodes at a time: the groups of `L` from the first node, and
+/// a last group of `L` ending at the last node for the nodes after them (solved first, from
+/// the forces, and kept until the groups are done); fewer nodes than `L` one by one.
+#[inline(always)]
+fn solve_lumped_in_lanes<const L: usize>(
+    isotropic: &[Real],
+    tangent: &[Vec<Real>; 3],
+    rank_one: &[Vec<Real>; 2],
+    x: &mut [Vec3],
+) -> Result<(), usize> {
+    let count = x.len();
+    if count < L {
+        return solve_nodes(isotropic, tangent, rank_one, x, 0);
+    }
+    let whole = count - count % L;
+    let last = if whole < count {
+        match group_of_nodes::<L>(isotropic, tangent, rank_one, x, count - L) {
+            Some(solved) => Some(solved),
+            // A singular block there: node by node from the first, for the first index.
+            None => return solve_nodes(isotropic, tangent, rank_one, x, 0),
+        }
+    } else {
+        None
+    };
+    for i in (0..whole).step_by(L) {
+        match group_of_nodes::<L>(isotropic, tangent, rank_one, x, i) {
+            Some(solved) => {
+                for l in 0..L {
+                    x[i + l] = Vec3::new(solved[0][l], solved[1][l], solved[2][l]);
+                }
+            }
+            None => solve_nodes(isotropic, tangent, rank_one, &mut x[..i + L], i)?,
+        }
+    }
+    if let Some(solved) = last {
+        for l in L - (count - whole)..L {
+            x[count - L + l] = Vec3::new(solved[0][l], solved[1][l], solved[2][l]);
+        }
+    }
+    Ok(())
+}
+
+/// [`solve_two_rank_one_lanes`] at interior nodes i + 1 … i + L (`x[i..i + L]` their
+/// forces), between elements i … i + L.
+#[inline(always)]
+#[allow(clippy::needless_range_loop)]
+fn group_of_nodes<const L: usize>(
+    isotropic: &[Real],
+    tangent: &[Vec<Real>; 3],
+    rank_one: &[Vec<Real>; 2],
+    x: &[Vec3],
+    i: usize,
+) -> Option<[[Real; L]; 3]> {
+    let lanes =
+        |v: &[Real], from: usize| -> [Real; L] { v[from..from + L].try_into().expect("L entries") };
+    // (Gathered by a loop: `std::array::from_fn` per component was slower.)
+    let mut f = [[0.0; L]; 3];
+    for l in 0..L {
+        for k in 0..3 {
+            f[k][l] = x[i + l][k];
+        }
+    }
+    solve_two_rank_one_lanes(&[
+        lanes(isotropic, i + 1),
+        lanes(&rank_one[1], i),
+        lanes(&rank_one[0], i + 1),
+        lanes(&tangent[0], i),
+        lanes(&tangent[1], i),
+        lanes(&tangent[2], i),
+        lanes(&tangent[0], i + 1),
+        lanes(&tangent[1], i + 1),
+        lanes(&tangent[2], i + 1),
+        f[0],
+        f[1],
+        f[2],
+    ])
 }
 
 /// [`solve_two_rank_one`] at interior nodes `from + 1 ..= x.len()` (`x[j − 1]` holds node
@@ -233,16 +303,16 @@ fn solve_nodes(
     Ok(())
 }
 
-/// [`solve_two_rank_one`] in [`SOLVE_LANES`] lanes, each lane's operations those of the
-/// scalar function in its order: `lanes` holds c, b₁, b₂, t₁ (3), t₂ (3), f (3); the result
-/// x by component, `None` if any lane's block is singular.
+/// [`solve_two_rank_one`] in `L` lanes, each lane's operations those of the scalar function
+/// in its order: `lanes` holds c, b₁, b₂, t₁ (3), t₂ (3), f (3); the result x by component,
+/// `None` if any lane's block is singular.
 #[inline(always)]
 #[allow(clippy::needless_range_loop)]
-fn solve_two_rank_one_lanes(lanes: &[[Real; SOLVE_LANES]; 12]) -> Option<[[Real; SOLVE_LANES]; 3]> {
+fn solve_two_rank_one_lanes<const L: usize>(lanes: &[[Real; L]; 12]) -> Option<[[Real; L]; 3]> {
     let [c, b1, b2, t1x, t1y, t1z, t2x, t2y, t2z, fx, fy, fz] = lanes;
-    let mut out = [[0.0; SOLVE_LANES]; 3];
+    let mut out = [[0.0; L]; 3];
     let mut regular = true;
-    for l in 0..SOLVE_LANES {
+    for l in 0..L {
         let (g11, g22) = (
             t1x[l] * t1x[l] + t1y[l] * t1y[l] + t1z[l] * t1z[l],
             t2x[l] * t2x[l] + t2y[l] * t2y[l] + t2z[l] * t2z[l],
@@ -1066,14 +1136,16 @@ mod tests {
         assert_eq!(m.solve_interior(&mut [Vec3::x()]), Err(1));
     }
 
-    /// The solve of a line's interior, whose nodes go in groups of four lanes and then one
-    /// by one, gives each node the bits of [`solve_two_rank_one`] at that node, for interiors
-    /// of 1 to 11 nodes (no group, groups with and without remainder), and reports the first
-    /// singular node wherever it lies. (The instruction set the process runs; the `simd`
-    /// test of the command-line crate compares AVX2 with SSE2 on whole runs.)
+    /// The solve of a line's interior, whose nodes go in groups of lanes (four, or eight from
+    /// [`WIDE_SOLVE`] nodes with AVX-512), the nodes after the last whole group in a group
+    /// ending at the last node, gives each node the bits of [`solve_two_rank_one`] at that
+    /// node, for interiors of 1 to 27 nodes (no group, groups with and without remainder, in
+    /// four and in eight lanes), and reports the first singular node wherever it lies, also
+    /// when the last node is singular too. (The instruction set the process runs; the `simd`
+    /// test of the command-line crate compares AVX-512, AVX2 and SSE2 on whole runs.)
     #[test]
     fn lumped_lanes_are_the_node_solve_to_the_bit() {
-        for interior in 1..=11 {
+        for interior in 1..=27 {
             let nodes = interior + 2;
             let mut m = LumpedMass::new(nodes);
             for i in 0..nodes {
@@ -1111,6 +1183,15 @@ mod tests {
                 m.isotropic[j] = 0.0;
                 let mut x: Vec<Vec3> = (1..=interior).map(force).collect();
                 assert_eq!(m.solve_interior(&mut x), Err(j), "{interior} nodes");
+                let kept_last = m.isotropic[interior];
+                m.isotropic[interior] = 0.0;
+                let mut x: Vec<Vec3> = (1..=interior).map(force).collect();
+                assert_eq!(
+                    m.solve_interior(&mut x),
+                    Err(j),
+                    "{interior} nodes, last too"
+                );
+                m.isotropic[interior] = kept_last;
                 m.isotropic[j] = kept;
             }
         }
