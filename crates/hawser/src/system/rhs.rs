@@ -98,8 +98,6 @@ impl System {
                 ws.bodies[b] = self.body_kinematics(b, t, y, &ws.coupling, Some(&host));
             }
         }
-        // The last rigid motion evaluated at t, by its source point (`rigid_motion_source`).
-        let mut shared: Option<(usize, crate::model::RigidKinematics)> = None;
         for (i, p) in self.points.iter().enumerate() {
             if p.line_end.is_some() {
                 continue;
@@ -110,13 +108,14 @@ impl System {
                     ..Default::default()
                 },
                 PointKind::Prescribed(crate::model::Motion::Rigid { motion, offset }) => {
-                    // The same numbers as `Motion::kinematics`, the motion evaluated once.
+                    // The same numbers as `Motion::kinematics`, the motion evaluated once at
+                    // each time for all the points it moves (`Workspace::rigid_motions`).
                     let source = self.rigid_motion_source[i].unwrap_or(i);
-                    let body = match shared {
-                        Some((s, body)) if s == source => body,
+                    let body = match ws.rigid_motions[source] {
+                        Some((time, body)) if time.to_bits() == t.to_bits() => body,
                         _ => {
                             let body = motion.kinematics(t);
-                            shared = Some((source, body));
+                            ws.rigid_motions[source] = Some((t, body));
                             body
                         }
                     };

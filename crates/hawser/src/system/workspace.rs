@@ -60,6 +60,12 @@ pub struct Workspace {
     /// The run's wave kinematics at the static position, if it asks for them
     /// ([`System::start_wave_tables`]); direct summation otherwise.
     pub wave_points: WavePoints,
+    /// Per point: the last evaluation of the rigid motion it is the source of
+    /// ([`System::rigid_motion_source`]) and its time [s], reused by
+    /// [`System::point_kinematics`] at the same time (a Runge–Kutta step evaluates the
+    /// motion at t + Δt/2 twice, and at t + Δt where the next step starts). A system's
+    /// motions do not change once it is built, so an entry is its motion's value at that time.
+    pub rigid_motions: Vec<Option<(Real, crate::model::RigidKinematics)>>,
 }
 
 /// The kinematics a coupling host has set ([`crate::model::PointTrack`],
@@ -106,6 +112,7 @@ impl System {
                 })
                 .collect(),
             wave_points: WavePoints::Direct,
+            rigid_motions: vec![None; self.points.len()],
             coupling: CouplingTracks {
                 points: self
                     .points
