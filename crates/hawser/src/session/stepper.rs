@@ -618,6 +618,9 @@ impl Stepper {
         self.clock.since_anchor += 1;
         let failed = match done {
             Err((loc, reason)) => Some(divergence(self.stable_step.0, t, loc, &reason)),
+            // A test of every entry without early exit (it packs into registers), and the
+            // search for the first only when one is not finite.
+            Ok(()) if self.state.iter().fold(true, |all, x| all & x.is_finite()) => None,
             Ok(()) => self.state.iter().position(|x| !x.is_finite()).map(|i| {
                 divergence(
                     self.stable_step.0,
