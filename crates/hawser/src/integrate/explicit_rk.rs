@@ -87,17 +87,20 @@ impl ExplicitRk {
         let s = tab.stages;
         for i in 0..s {
             // Stage i: y + Σ_j (dt a_ij) k_j over the non-zero a_ij, the first of them fused
-            // with the copy of y (the same sums in the same order).
+            // with the copy of y (the same sums in the same order); y itself without them.
             let mut terms = (0..i).filter(|&j| tab.a[i * s + j] != 0.0);
-            match terms.next() {
-                Some(j) => shifted(&mut self.stage, y, dt * tab.a[i * s + j], &self.k[j]),
-                None => self.stage.copy_from_slice(y),
-            }
-            for j in terms {
-                add_scaled(&mut self.stage, dt * tab.a[i * s + j], &self.k[j]);
-            }
+            let stage: &[Real] = match terms.next() {
+                Some(j) => {
+                    shifted(&mut self.stage, y, dt * tab.a[i * s + j], &self.k[j]);
+                    for j in terms {
+                        add_scaled(&mut self.stage, dt * tab.a[i * s + j], &self.k[j]);
+                    }
+                    &self.stage
+                }
+                None => y,
+            };
             let (ki, _) = self.k.split_at_mut(i + 1);
-            system.rhs(t + tab.c[i] * dt, &self.stage, &mut ki[i], ws)?;
+            system.rhs(t + tab.c[i] * dt, stage, &mut ki[i], ws)?;
         }
         // y += Σ_i (b_i dt) k_i, summed in stage order per entry.
         if let [k0, k1, k2, k3] = &self.k[..] {
