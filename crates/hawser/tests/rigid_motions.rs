@@ -2,14 +2,16 @@
 //! kinematics, the 6-DOF spline table against an analytic motion (convergence with the
 //! sampling interval), the Euler-angle kinematic map, and the RAO motion against the wave
 //! field it shares with the lines (regular waves, the phase convention, a JONSWAP response
-//! spectrum); every motion's derivatives against finite differences, and no allocation.
+//! spectrum); every motion's derivatives against finite differences, no allocation, and the
+//! points of a system on a motion taking its kinematics at every evaluation's time.
 
 mod alloc_count;
+mod common;
 use alloc_count::allocations_in;
 use hawser::math::{Mat3, Quat, Real, Vec3};
 use hawser::model::{
-    Manoeuvre, ManoeuvreSpec, Motion, RaoMotion, RaoTable, RigidKinematics, RigidMotion,
-    RigidTimeSeries, euler_kinematics,
+    Manoeuvre, ManoeuvreSpec, MassMatrix, Motion, PointKind, RaoMotion, RaoTable, RigidKinematics,
+    RigidMotion, RigidTimeSeries, euler_kinematics,
 };
 use hawser::physics::waves::{
     IrregularSea, RegularWave, SeaState, Spectrum, Stretching, WaveSpec, Waves,
@@ -981,6 +983,54 @@ fn points_ride_on_rigid_motions() {
         let (r0, v0, _) = p.kinematics(t - h);
         assert!(((r1 - r0) / (2.0 * h) - v).norm() < 1e-6, "v at {t}");
         assert!(((v1 - v0) / (2.0 * h) - a).norm() < 1e-6, "a at {t}");
+    }
+}
+
+/// The points of a system prescribed on one rigid motion (a vessel's fairleads) take the
+/// motion's kinematics at each evaluation's time, to the bit, whatever times came before: the
+/// workspace's value of the motion at its last time (`Workspace::rigid_motions`) is reused at
+/// that time only, and shared by the points on the motion.
+#[test]
+fn system_points_take_their_motion_at_each_time() {
+    let rigid = RigidMotion::Manoeuvre(Box::new(turn(90.0, 20.0, 10.0, None)));
+    let on_motion = |offset: Vec3| {
+        PointKind::Prescribed(Motion::Rigid {
+            motion: Box::new(rigid.clone()),
+            offset,
+        })
+    };
+    let offsets = [Vec3::new(-40.0, 3.0, -2.0), Vec3::new(35.0, -8.0, -4.0)];
+    let mut model = common::single_line(
+        common::line_type(0.05, 20.0, 1.0e7),
+        60.0,
+        6,
+        common::fixed("anchor", Vec3::new(0.0, 0.0, -50.0)),
+        common::fixed("fairlead", Vec3::new(-40.0, 3.0, -2.0)),
+        MassMatrix::Lumped,
+    );
+    model.points[1].kind = on_motion(offsets[0]);
+    let mut second = common::fixed("second fairlead", Vec3::new(35.0, -8.0, -4.0));
+    second.kind = on_motion(offsets[1]);
+    model.points.push(second);
+    let system = hawser::system::System::new(&model).unwrap();
+    assert_eq!(
+        system.rigid_motion_source[2],
+        Some(1),
+        "one motion for both"
+    );
+    let y = system.straight_state();
+    let mut ws = system.workspace();
+    for t in [0.5, 0.5, 1.25, 0.5, 7.0, 7.0, 1.25, 0.0, -0.0, 31.0] {
+        system.point_kinematics(t, &y, &mut ws);
+        for (p, offset) in [(1, offsets[0]), (2, offsets[1])] {
+            let (r, v, a) = rigid.kinematics(t).point(&offset);
+            let k = &ws.points[p];
+            assert_eq!(
+                [k.position, k.velocity, k.acceleration],
+                [r, v, a],
+                "point {p} at {t}"
+            );
+        }
     }
 }
 
