@@ -163,9 +163,10 @@ const WIDE_SOLVE: usize = 16;
 
 /// [`LumpedMass::solve_interior`] of the blocks `isotropic`, `tangent` and `rank_one`:
 /// [`solve_two_rank_one`] at each interior node, several nodes at a time in lanes
-/// ([`solve_two_rank_one_lanes`], the same operations, so the same bits), the remainder one
-/// by one: four at a time compiled for AVX2 and for SSE2, and eight compiled for AVX-512 on
-/// a processor that has it, from [`WIDE_SOLVE`] nodes (`crate::math::wide_simd_fn`).
+/// ([`solve_two_rank_one_lanes`], the same operations, so the same bits;
+/// [`solve_lumped_in_lanes`] says how the nodes are grouped): four at a time compiled for
+/// AVX2 and for SSE2, and eight compiled for AVX-512 on a processor that has it, from
+/// [`WIDE_SOLVE`] nodes (`crate::math::wide_simd_fn`).
 #[inline]
 fn solve_lumped_interior(
     isotropic: &[Real],
