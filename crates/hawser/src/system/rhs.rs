@@ -379,10 +379,8 @@ impl System {
             let (o, m) = (self.layout.line_offset[li], self.layout.line_interior[li]);
             // x holds the ends' known accelerations (assemble_loads put them there) and the
             // interior forces, which the given accelerations replace.
-            let x = &mut ws.blocks[li].x;
-            for (i, a) in x[1..=m].iter_mut().enumerate() {
-                *a = get3(&accelerations[o + 3 * m + 3 * i..], 0);
-            }
+            let given = &accelerations[o + 3 * m..o + 6 * m];
+            crate::math::coordinates_mut(&mut ws.blocks[li].x[1..=m]).copy_from_slice(given);
             l.write_rate(
                 &ws.lines[li],
                 &ws.blocks[li],
