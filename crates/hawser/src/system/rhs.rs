@@ -435,7 +435,7 @@ impl System {
                 _ => Vec3::zeros(),
             };
             let ends = LineEnds {
-                kinematics: [ws.points[l.end_a], ws.points[l.end_b]],
+                kinematics: [&ws.points[l.end_a], &ws.points[l.end_b]],
                 force: [force(l.end_a), force(l.end_b)],
             };
             let mesh = match &ws.winches[li] {
