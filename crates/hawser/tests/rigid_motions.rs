@@ -552,17 +552,23 @@ fn time_series_converges_to_the_analytic_motion() {
     assert!((k.acceleration.x - 2.0).abs() < 1e-12);
 }
 
+/// The analytic motion's rows at `times`: positions [m] and angles [rad], unwrapped.
+fn analytic_rows(times: &[Real]) -> (Vec<Vec3>, Vec<[Real; 3]>) {
+    times
+        .iter()
+        .map(|&t| {
+            let y = analytic(t).0;
+            (Vec3::new(y[0], y[1], y[2]), [y[3], y[4], y[5]])
+        })
+        .unzip()
+}
+
 /// The spline table's derivatives are its own: FD of position, orientation and rates inside
 /// intervals (h = 1e-4 s; tolerance 1e-6: the spline's third derivative is ~1 per s³).
 #[test]
 fn time_series_derivatives_match_finite_differences() {
     let times: Vec<Real> = (0..41).map(|i| i as Real * 0.7).collect();
-    let samples: Vec<[Real; 6]> = times.iter().map(|&t| analytic(t).0).collect();
-    let positions: Vec<Vec3> = samples
-        .iter()
-        .map(|y| Vec3::new(y[0], y[1], y[2]))
-        .collect();
-    let angles: Vec<[Real; 3]> = samples.iter().map(|y| [y[3], y[4], y[5]]).collect();
+    let (positions, angles) = analytic_rows(&times);
     let m = RigidMotion::TimeSeries(RigidTimeSeries::new(times, &positions, &angles).unwrap());
     // Off the knots (multiples of 0.7 s), where the spline's third derivative jumps.
     let times: Vec<Real> = (0..100)
@@ -584,12 +590,7 @@ fn time_series_derivatives_match_finite_differences() {
 #[test]
 fn time_series_lookup_order_does_not_change_the_answer() {
     let times: Vec<Real> = (0..301).map(|i| i as Real * 0.1).collect();
-    let samples: Vec<[Real; 6]> = times.iter().map(|&t| analytic(t).0).collect();
-    let positions: Vec<Vec3> = samples
-        .iter()
-        .map(|y| Vec3::new(y[0], y[1], y[2]))
-        .collect();
-    let angles: Vec<[Real; 3]> = samples.iter().map(|y| [y[3], y[4], y[5]]).collect();
+    let (positions, angles) = analytic_rows(&times);
     let table = RigidTimeSeries::new(times, &positions, &angles).unwrap();
     let before = format!("{table:?}");
     let mut asked: Vec<Real> = (0..2000).map(|i| i as Real * 0.002).collect(); // forwards
