@@ -157,8 +157,12 @@ fn line_forces_in_lanes<const L: usize>(
     let still_water = env.is_still_water();
     let mut blocks = blocks;
     if let Some(b) = blocks.as_deref_mut() {
-        // A lumped line's diagonal blocks are all written below, from its `LumpedMass`.
-        if consistent || b.coupled {
+        if consistent {
+            // Every block of a consistent line is started from zero by the element that
+            // first adds to it (`add_element_mass`): no pass clearing them first.
+            b.lumped.current = false;
+        } else if b.coupled {
+            // A lumped line's diagonal blocks are all written below, from its `LumpedMass`.
             b.clear();
         }
     }
@@ -768,7 +772,8 @@ fn fluid_index(z: Real) -> usize {
     usize::from(!(z < 0.0))
 }
 
-/// Adds element e's consistent mass blocks [kg] into `b` (see [`line_forces`]).
+/// Adds element e's consistent mass blocks [kg] into `b` (see [`line_forces`]), starting
+/// from zero each block it is the first element to add to.
 #[inline(always)]
 fn add_element_mass(
     b: &mut LineBlocks,
@@ -779,6 +784,14 @@ fn add_element_mass(
     zb: Real,
 ) {
     let l0 = k.element_length;
+    // Element e is the first to add to node e + 1's block and to the pair between its
+    // nodes, element 0 to node 0's too: each starts from zero here, as a clear pass would.
+    if e == 0 {
+        b.diag[0] = Mat3::zeros();
+    }
+    b.diag[e + 1] = Mat3::zeros();
+    b.lower[e] = Mat3::zeros();
+    b.upper[e] = Mat3::zeros();
     if (za < 0.0) == (zb < 0.0) {
         // Uniform density: exact shape-function integrals, ∫NaNa = ∫NbNb = 1/3 and
         // ∫NaNb = 1/6.
