@@ -1191,37 +1191,47 @@ pub fn reference_tension(system: &System, ws: &Workspace, li: usize) -> Real {
 
 /// Row i of the mass blocks `b` times the node vectors `nodes` into `out[i]` (with `residual`,
 /// the force row minus it: F − M q̈), zero at the rows of known (prescribed or fixed) ends.
+/// A block-tridiagonal line (an `fe` line's) sums each row in the order of
+/// [`LineBlocks::row_times`] (i − 1, i, i + 1, from zero), so the same numbers to the bit, in
+/// one pass over its interior rows without the band lookup or a test per row.
 fn mass_rows(b: &LineBlocks, nodes: &[Vec3], out: &mut [Vec3], residual: bool) {
     let n = b.nodes() - 1;
-    for (i, x) in out.iter_mut().enumerate().take(n + 1) {
-        let known = (i == 0 && b.end_a == EndKind::Known) || (i == n && b.end_b == EndKind::Known);
-        if known {
-            *x = Vec3::zeros();
-            continue;
+    let finish = |f: &Vec3, row: Vec3| if residual { f - row } else { row };
+    if b.width() > 1 {
+        for (i, x) in out.iter_mut().enumerate().take(n + 1) {
+            *x = finish(&b.x[i], b.row_times(i, nodes));
         }
-        let row = if b.width() == 1 {
-            tridiagonal_row(b, i, nodes)
-        } else {
-            b.row_times(i, nodes)
-        };
-        *x = if residual { b.x[i] - row } else { row };
+    } else {
+        let (x, f) = (&nodes[..=n], &b.x[..=n]);
+        let (diag, lower, upper) = (&b.diag[..=n], &b.lower[..n], &b.upper[..n]);
+        let out = &mut out[..=n];
+        let mut first = Vec3::zeros();
+        first += diag[0] * x[0];
+        first += upper[0] * x[1];
+        out[0] = finish(&f[0], first);
+        let interior = out[1..n]
+            .iter_mut()
+            .zip(x.windows(3))
+            .zip(lower.iter().zip(&diag[1..n]).zip(&upper[1..]))
+            .zip(&f[1..n]);
+        for (((o, x), ((l, d), u)), f) in interior {
+            let mut row = Vec3::zeros();
+            row += l * x[0];
+            row += d * x[1];
+            row += u * x[2];
+            *o = finish(f, row);
+        }
+        let mut last = Vec3::zeros();
+        last += lower[n - 1] * x[n - 1];
+        last += diag[n] * x[n];
+        out[n] = finish(&f[n], last);
     }
-}
-
-/// Row i of block-tridiagonal blocks `b` (an `fe` line's) times `x`: [`LineBlocks::row_times`]
-/// without its general band lookup, summed in the same order (i − 1, i, i + 1), so the same
-/// numbers to the bit.
-#[inline]
-fn tridiagonal_row(b: &LineBlocks, i: usize, x: &[Vec3]) -> Vec3 {
-    let mut s = Vec3::zeros();
-    if i > 0 {
-        s += b.lower[i - 1] * x[i - 1];
+    if b.end_a == EndKind::Known {
+        out[0] = Vec3::zeros();
     }
-    s += b.diag[i] * x[i];
-    if i + 1 < b.nodes() {
-        s += b.upper[i] * x[i + 1];
+    if b.end_b == EndKind::Known {
+        out[n] = Vec3::zeros();
     }
-    s
 }
 
 /// Weights of the Newton norm per state entry ([`NEWTON_FRACTION`]): at each velocity
