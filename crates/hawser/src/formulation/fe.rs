@@ -14,6 +14,8 @@
 //! including the part of an element below the water surface; seabed and obstacle contact at
 //! the nodes ([`obstacle_contacts`]).
 
+pub mod jacobian;
+
 use super::{ElementState, LoadOptions, Mesh, SectionProperties};
 use crate::formulation::fluid_load;
 use crate::linalg::LineBlocks;

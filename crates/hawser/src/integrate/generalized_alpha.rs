@@ -76,7 +76,7 @@
 //! serves several steps ([`GeneralizedAlpha::next_step`]).
 
 use crate::linalg::{CoupledSystem, EndKind, LineBlocks};
-use crate::linearise::{JacobianScratch, Variable, dynamic_force_jacobian};
+use crate::linearise::{JacobianScratch, dynamic_force_jacobian};
 use crate::math::{Mat3, Mat6, Quat, Real, Vec3, Vec6, get3};
 use crate::system::{Location, System, Workspace};
 
@@ -352,8 +352,8 @@ pub struct GeneralizedAlpha {
     weights_ready: bool,
     /// Scratch: the finite-difference Jacobians, the iterate q̈_{n+1}, the state at n+1, each
     /// line's node accelerations, the weights of the Newton norm, the first rate.
-    fd_lines: Vec<LineBlocks>,
-    fd_points: Vec<Mat3>,
+    fd_lines: [Vec<LineBlocks>; 2],
+    fd_points: [Vec<Mat3>; 2],
     fd_scratch: JacobianScratch,
     trial: Vec<Real>,
     next: Vec<Real>,
@@ -402,8 +402,8 @@ impl GeneralizedAlpha {
             restored_matrix_step: Real::NAN,
             factored: false,
             weights_ready: false,
-            fd_lines,
-            fd_points: vec![Mat3::zeros(); system.free_points.len()],
+            fd_lines: [fd_lines.clone(), fd_lines],
+            fd_points: [(); 2].map(|_| vec![Mat3::zeros(); system.free_points.len()]),
             fd_scratch: JacobianScratch::new(system),
             trial: vec![0.0; n],
             next: vec![0.0; n],
@@ -536,15 +536,18 @@ impl GeneralizedAlpha {
     /// known and which sit on which free slot): after a release, and after a restore that took
     /// releases back or made them again. Allocates nothing.
     pub fn follow_ends(&mut self, ws: &Workspace) {
-        for ((m, fd), b) in self
+        let [fd_position, fd_velocity] = &mut self.fd_lines;
+        for (((m, fp), fv), b) in self
             .matrix
             .iter_mut()
-            .zip(&mut self.fd_lines)
+            .zip(fd_position)
+            .zip(fd_velocity)
             .zip(&ws.blocks)
         {
             if (m.end_a, m.end_b) != (b.end_a, b.end_b) {
                 (m.end_a, m.end_b) = (b.end_a, b.end_b);
-                (fd.end_a, fd.end_b) = (b.end_a, b.end_b);
+                (fp.end_a, fp.end_b) = (b.end_a, b.end_b);
+                (fv.end_a, fv.end_b) = (b.end_a, b.end_b);
                 self.factored = false;
             }
         }
@@ -597,35 +600,29 @@ impl GeneralizedAlpha {
         }
         j.point_mass.copy_from_slice(&ws.coupled.point_diag);
         j.body_mass.copy_from_slice(&ws.coupled.body_diag);
-        for (variable, lines, points) in [
-            (
-                Variable::Position,
-                &mut j.line_position,
-                &mut j.point_position,
-            ),
-            (
-                Variable::Velocity,
-                &mut j.line_velocity,
-                &mut j.point_velocity,
-            ),
+        let [fd_position, fd_velocity] = &mut self.fd_lines;
+        let [fd_point_position, fd_point_velocity] = &mut self.fd_points;
+        dynamic_force_jacobian(
+            system,
+            t,
+            y,
+            ws,
+            [fd_position, fd_velocity],
+            [fd_point_position, fd_point_velocity],
+            &mut self.fd_scratch,
+        );
+        for (fd, lines) in [
+            (&self.fd_lines[0], &mut j.line_position),
+            (&self.fd_lines[1], &mut j.line_velocity),
         ] {
-            dynamic_force_jacobian(
-                system,
-                t,
-                y,
-                variable,
-                ws,
-                &mut self.fd_lines,
-                &mut self.fd_points,
-                &mut self.fd_scratch,
-            );
-            for (li, b) in self.fd_lines.iter().enumerate() {
+            for (li, b) in fd.iter().enumerate() {
                 for (m, x) in lines[li].iter_mut().zip(b.blocks()) {
                     *m = *x;
                 }
             }
-            points.copy_from_slice(&self.fd_points);
         }
+        j.point_position.copy_from_slice(&self.fd_points[0]);
+        j.point_velocity.copy_from_slice(&self.fd_points[1]);
         for (f, &b) in system.free_bodies.iter().enumerate() {
             let (k, c) = system.bodies[b]
                 .body

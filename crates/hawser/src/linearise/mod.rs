@@ -169,26 +169,33 @@ pub fn force_jacobian(
         blocks,
         &mut coupled.point_diag,
         &mut scratch,
+        &|_| false,
     );
 }
 
-/// The force Jacobian ∂F/∂x or ∂F/∂v of the dynamics at time `t` [s] and state `y`, with
-/// every point's kinematics (prescribed, coupled, free) and every line's velocities as they
-/// are, the current mesh of lines on winches and the run's wave kinematics: the stiffness
-/// and damping of the implicit scheme's Newton iteration
+/// The force Jacobians ∂F/∂x [N/m] and ∂F/∂v [N·s/m] of the dynamics at time `t` [s] and
+/// state `y`, with every point's kinematics (prescribed, coupled, free) and every line's
+/// velocities as they are, the current mesh of lines on winches and the run's wave
+/// kinematics: the stiffness and damping of the implicit scheme's Newton iteration
 /// ([`crate::integrate::GeneralizedAlpha`]). Call after [`System::assemble`] at the same
 /// (t, y) (it prepared the winches and the wave tables at t). Writes each line's blocks
-/// (nodes 0..=N) into `lines` (marked coupled) and the free points' own-load blocks into
-/// `points`; `ws` keeps only scratch. No allocation: the scratch is `scratch`.
-#[allow(clippy::too_many_arguments)]
+/// (nodes 0..=N, marked coupled) into `lines[0]` (by positions) and `lines[1]` (by
+/// velocities), and the free points' own-load blocks into `points[0]` and `points[1]`; `ws`
+/// keeps only scratch. No allocation: the scratch is `scratch`.
+///
+/// An `fe` line's blocks are in closed form where it covers the line's forces
+/// ([`crate::formulation::fe::jacobian`]: about two evaluations' work for both, against the
+/// twenty of the differences), the others' forward differences, coloured as in
+/// [`force_jacobian`]. Statics and the modes keep the differences for every line: their K
+/// and C are then exact for every term, a profile current's depth gradient included, which
+/// the closed form leaves out (Newton only needs a close Jacobian).
 pub fn dynamic_force_jacobian(
     system: &System,
     t: Real,
     y: &[Real],
-    variable: Variable,
     ws: &mut Workspace,
-    lines: &mut [LineBlocks],
-    points: &mut [Mat3],
+    lines: [&mut [LineBlocks]; 2],
+    points: [&mut [Mat3]; 2],
     scratch: &mut JacobianScratch,
 ) {
     system.point_kinematics(t, y, ws);
@@ -200,21 +207,57 @@ pub fn dynamic_force_jacobian(
         wave_points,
         ..
     } = ws;
-    loads_jacobian(
-        system,
-        JacobianAt::State { time: t },
-        variable,
-        Difference::Forward,
-        LoadsAt {
-            lines: work,
-            points: kinematics,
-            meshes: Some(winches),
-            fluid: Some(wave_points),
-        },
-        lines,
-        points,
-        scratch,
-    );
+    let env = &system.environment;
+    let mesh = |li: usize| match &winches[li] {
+        Some(w) => &w.mesh,
+        None => &system.lines[li].mesh,
+    };
+    let closed = |li: usize| {
+        matches!(
+            system.lines[li].discretisation,
+            crate::formulation::Discretisation::Fe { .. }
+        ) && crate::formulation::fe::jacobian::covers(mesh(li), env)
+    };
+    let [by_position, by_velocity] = lines;
+    for li in (0..system.lines.len()).filter(|&li| closed(li)) {
+        let lw = &work[li];
+        let covered = crate::formulation::fe::jacobian::newton_jacobian(
+            mesh(li),
+            env,
+            t,
+            &lw.position,
+            &lw.velocity,
+            LoadOptions {
+                current_factor: 1.0,
+                fluid: wave_points.of_line(li),
+            },
+            Some(&mut by_position[li]),
+            Some(&mut by_velocity[li]),
+        );
+        debug_assert!(covered, "`covers` said the closed form covers line {li}");
+    }
+    let [points_position, points_velocity] = points;
+    for (variable, lines, points) in [
+        (Variable::Position, by_position, points_position),
+        (Variable::Velocity, by_velocity, points_velocity),
+    ] {
+        loads_jacobian(
+            system,
+            JacobianAt::State { time: t },
+            variable,
+            Difference::Forward,
+            LoadsAt {
+                lines: work,
+                points: kinematics,
+                meshes: Some(winches),
+                fluid: Some(wave_points),
+            },
+            lines,
+            points,
+            scratch,
+            &closed,
+        );
+    }
 }
 
 /// Scratch of a force Jacobian: the forces of one line at the base and perturbed states,
@@ -257,7 +300,7 @@ struct LoadsAt<'a> {
 
 /// The Jacobian of every line's forces and every free point's own load by coloured finite
 /// differences (see [`force_jacobian`]), from the kinematics in `at`, into `out` and
-/// `out_points`.
+/// `out_points`; the lines for which `skip` holds are left as they are.
 #[allow(clippy::too_many_arguments)]
 fn loads_jacobian(
     system: &System,
@@ -268,6 +311,7 @@ fn loads_jacobian(
     out: &mut [LineBlocks],
     out_points: &mut [Mat3],
     scratch: &mut JacobianScratch,
+    skip: &dyn Fn(usize) -> bool,
 ) {
     let (time, current_factor) = match place {
         JacobianAt::Rest { current_factor } => (0.0, current_factor),
@@ -292,13 +336,16 @@ fn loads_jacobian(
                 None => crate::physics::static_kinematics::FluidPoints::Direct,
             },
         };
+        if skip(li) {
+            continue;
+        }
+        let blocks = &mut out[li];
+        let lw = &mut at.lines[li];
         // Tangents (dimensionless) take the step per metre of the shortest element.
         let scale = |j: usize| 1.0 / l.length_scale(j);
-        let blocks = &mut out[li];
         blocks.coupled = true;
         blocks.clear();
         let stride = 2 * blocks.width() + 1;
-        let lw = &mut at.lines[li];
         let evaluate = |lw: &mut crate::system::LineWork, out: &mut [Vec3]| {
             line_forces(
                 mesh,
