@@ -29,8 +29,9 @@
 //!
 //!   S = M + γ' C + β' K  =  β' [M (1 − α_m)/(β h² (1 − α_f)) + C γ/(β h) + K],
 //!
-//! K = −∂F/∂q and C = −∂F/∂v ([`crate::linearise::dynamic_force_jacobian`], coloured finite
-//! differences in the block structure; the body's own loads by
+//! K = −∂F/∂q and C = −∂F/∂v ([`crate::linearise::dynamic_force_jacobian`] in the block
+//! structure: an `fe` line's in closed form, [`crate::formulation::fe::jacobian`], where it
+//! covers the forces, coloured finite differences otherwise; the body's own loads by
 //! [`crate::model::Body::load_jacobian`]), M the mass blocks. S has the block structure of the
 //! mass matrix, lines coupled through free points and bodies, so
 //! [`crate::linalg::CoupledSystem`] solves it in O(nodes). The residual F − M q̈ is exact at
