@@ -179,9 +179,20 @@ fn auto_switching_resumes_bit_for_bit() {
     m.settings.duration = 4.0;
     let mut whole = hawser::Session::new(m.clone()).unwrap();
     whole.run().unwrap();
+    // Where to save: RK4's spells last a few tenths of a second, so every 0.5 s and every
+    // 0.125 s at which a run advanced by 0.125 s finds RK4 stepping (its adaptive steps land
+    // on each advance, so it is not the whole run to the bit, but its spells are the same).
+    let mut probe = hawser::Session::new(m.clone()).unwrap();
+    let mut stops = Vec::new();
+    for k in 1..32 {
+        let stop = 0.125 * k as Real;
+        probe.advance_to(stop).unwrap();
+        if probe.scheme_switch().unwrap().explicit || k % 4 == 0 {
+            stops.push(stop);
+        }
+    }
     let mut seen = [false; 2];
-    for k in 1..16 {
-        let stop = 0.25 * k as Real;
+    for stop in stops {
         let mut first = hawser::Session::new(m.clone()).unwrap();
         first.advance_to(stop).unwrap();
         let explicit = first.scheme_switch().unwrap().explicit;
