@@ -30,7 +30,7 @@
 //! fluid inertia turns with the tangent; obstacles; drag loading functions; MoorDyn's viscous
 //! friction) [`newton_jacobian`] declines and the caller takes finite differences.
 
-use super::GAUSS;
+use super::{GAUSS, SectionConstants, fluid_index};
 use crate::formulation::{LoadOptions, Mesh};
 use crate::linalg::LineBlocks;
 use crate::math::{Mat3, Real, Vec3};
@@ -85,7 +85,10 @@ pub fn newton_jacobian(
     for e in 0..n {
         let sec = mesh.section(e);
         let lt = &sec.line_type;
-        let (il, half) = (sec.inverse_length, 0.5 * sec.element_length);
+        // What `line_forces` takes per section: buoyancy, drag factors, contact damping, net
+        // weight.
+        let k = SectionConstants::new(sec, env);
+        let (il, half) = (sec.inverse_length, k.half_length);
         let (ra, rb, va, vb) = (r[e], r[e + 1], v[e], v[e + 1]);
         let d = rb - ra;
         let length = d.norm();
@@ -140,7 +143,6 @@ pub fn newton_jacobian(
         let (za, zb) = (ra.z, rb.z);
         let mut heights = [[0.0; 2]; 2];
         if (za < 0.0 && zb > 0.0) || (za > 0.0 && zb < 0.0) {
-            let buoyancy = env.water_density * sec.area * env.gravity * sec.element_length;
             let gap = za - zb;
             let xs = za / gap;
             let dxs = [-zb / (gap * gap), za / (gap * gap)];
@@ -152,13 +154,13 @@ pub fn newton_jacobian(
             };
             for (row, s) in ds.iter().enumerate() {
                 for (col, x) in dxs.iter().enumerate() {
-                    heights[row][col] = buoyancy * s * x;
+                    heights[row][col] = k.buoyancy * s * x;
                 }
             }
         }
 
         // Morison drag at the two Gauss points.
-        if let DragModel::Morison { normal, tangential } = lt.drag {
+        if let Some((normal, tangential)) = k.morison {
             for (gi, &xi) in GAUSS.iter().enumerate() {
                 let (na, nb) = (1.0 - xi, xi);
                 let point = ra * na + rb * nb;
@@ -169,7 +171,7 @@ pub fn newton_jacobian(
                     u * options.current_factor
                 };
                 let u = current - (va * na + vb * nb);
-                let factor = 0.5 * env.fluid_density(point.z) * lt.diameter;
+                let factor = k.drag_factor[fluid_index(point.z)];
                 let q = factor * root;
                 let ut = t.dot(&u);
                 let un = u - t * ut;
@@ -203,8 +205,7 @@ pub fn newton_jacobian(
         let mut contact_r = [Mat3::zeros(); 2];
         if ra.z < bed_top || rb.z < bed_top {
             let kd = seabed.stiffness * lt.diameter;
-            let damping = seabed.damping_per_length(lt.diameter, lt.mass_per_length);
-            let net_weight = (env.water_density * sec.area - lt.mass_per_length) * env.gravity;
+            let damping = k.seabed_damping;
             for (j, (x, w)) in [(ra, va), (rb, vb)].into_iter().enumerate() {
                 let bed = env.seabed_at(x.x, x.y);
                 let depth = bed.penetration(&x);
@@ -216,7 +217,7 @@ pub fn newton_jacobian(
                 let vn = w.dot(&nrm);
                 let mut force = nrm * (root * (kd * depth - damping * vn));
                 let mut by_v = nn * damping;
-                let normal_load = -net_weight * nrm.z;
+                let normal_load = -k.net_weight * nrm.z;
                 if seabed.friction_coefficient > 0.0 && normal_load > 0.0 {
                     // μ N tanh(π s / v_μ) along the sliding direction ŝ, s = |v − (v·n) n|.
                     let slide = w - nrm * vn;
