@@ -88,7 +88,9 @@ impl BandedLu {
             }
             rest[0] = s;
         }
-        for (i, row) in self.a.chunks_exact(width).enumerate().take(n).rev() {
+        // By index: `take(n).rev()` over the rows would divide for each row (`nth_back`).
+        for i in (0..n).rev() {
+            let row = &self.a[i * width..(i + 1) * width];
             let last = (i + kd).min(n - 1);
             let (head, after) = b.split_at_mut(i + 1);
             let mut s = head[i];

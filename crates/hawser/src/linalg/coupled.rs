@@ -15,7 +15,8 @@
 //! end force acts on the body as a force and the moment ρ × F about its origin, and the
 //! line's end mass adds Jᵀ A J to the body's 6×6 mass.
 
-use super::{BandedLu, BlockTridiagonal, DenseLu};
+use super::block_banded::MAX_WIDTH;
+use super::{BandedLu, BlockBandedLdl, BlockTridiagonal, DenseLu};
 use crate::math::Mat3x6 as Matrix3x6;
 use crate::math::{Mat3, Mat6, Real, Vec3, Vec6, skew};
 
@@ -58,6 +59,11 @@ pub struct LineBlocks {
     pub lumped: LumpedMass,
     factor: BlockTridiagonal,
     banded: BandedLu,
+    /// The interior's block L D Lᵀ, used instead of `banded` when the interior is symmetric
+    /// (a mass matrix, [`LineBlocks::interior_is_symmetric`]).
+    ldl: BlockBandedLdl,
+    /// Whether the last factorisation was `ldl` (else `banded`).
+    symmetric: bool,
     column: Vec<Real>,
     response_a: Vec<Mat3>,
     response_b: Vec<Mat3>,
@@ -426,6 +432,12 @@ impl LineBlocks {
             } else {
                 BandedLu::new(3 * interior, 3 * width + 2)
             },
+            ldl: if width == 1 || width > MAX_WIDTH {
+                BlockBandedLdl::default()
+            } else {
+                BlockBandedLdl::new(interior, width)
+            },
+            symmetric: false,
             column: vec![0.0; if width == 1 { 0 } else { 3 * interior }],
             response_a: vec![Mat3::zeros(); interior],
             response_b: vec![Mat3::zeros(); interior],
@@ -522,6 +534,25 @@ impl LineBlocks {
             self.band_pairs()
                 .flat_map(|(l, u)| l.iter().chain(u.iter())),
         )
+    }
+
+    /// Whether the interior block rows 1 … N − 1 of a banded line (block bandwidth 2 to
+    /// [`MAX_WIDTH`]) are symmetric to the bit: every diagonal block, and block (i, j) against
+    /// (j, i)ᵀ. A mass matrix is (its blocks are ∫ s_i s_j m(s) ds with m symmetric); an
+    /// implicit scheme's iteration matrix, with its drag Jacobian, is not.
+    pub fn interior_is_symmetric(&self) -> bool {
+        let (n, w) = (self.nodes() - 1, self.width());
+        let same = |a: &Mat3, b: &Mat3| {
+            a.iter()
+                .zip(b.iter())
+                .all(|(x, y)| x.to_bits() == y.to_bits())
+        };
+        (2..=MAX_WIDTH).contains(&w)
+            && (1..n).all(|i| {
+                same(&self.diag[i], &self.diag[i].transpose())
+                    && (i + 1..=(i + w).min(n - 1))
+                        .all(|j| same(&self.block(i, j), &self.block(j, i).transpose()))
+            })
     }
 
     /// Number of nodes N + 1.
@@ -737,6 +768,20 @@ impl CoupledSystem {
                 }
             }
             if self.factoring {
+                line.symmetric = line.interior_is_symmetric();
+            }
+            if self.factoring && line.symmetric {
+                for i in 1..n {
+                    for j in i.saturating_sub(w).max(1)..=i {
+                        let b = line.block(i, j);
+                        line.ldl.set(i - 1, j - 1, b);
+                    }
+                }
+                line.ldl.factor(n - 1).map_err(|k| Singular::Line {
+                    line: li,
+                    node: k + 1,
+                })?;
+            } else if self.factoring {
                 line.banded.clear();
                 for i in 1..n {
                     for j in i.saturating_sub(w).max(1)..=(i + w).min(n - 1) {
@@ -753,18 +798,44 @@ impl CoupledSystem {
                     node: k / 3 + 1,
                 })?;
             }
-            for i in 1..n {
-                for r in 0..3 {
-                    line.column[3 * (i - 1) + r] = line.x[i][r];
+            if line.symmetric {
+                line.ldl.solve(n - 1, &mut line.x[1..n]);
+            } else {
+                for i in 1..n {
+                    for r in 0..3 {
+                        line.column[3 * (i - 1) + r] = line.x[i][r];
+                    }
                 }
-            }
-            line.banded.solve(&mut line.column);
-            for i in 1..n {
-                let k = 3 * (i - 1);
-                line.x[i] = Vec3::new(line.column[k], line.column[k + 1], line.column[k + 2]);
+                line.banded.solve(&mut line.column);
+                for i in 1..n {
+                    let k = 3 * (i - 1);
+                    line.x[i] = Vec3::new(line.column[k], line.column[k + 1], line.column[k + 2]);
+                }
             }
             for (end, node) in [(line.end_a, 0), (line.end_b, n)] {
                 if !matches!(end, EndKind::Free(_)) || !self.factoring {
+                    continue;
+                }
+                if line.symmetric {
+                    // The three columns at once.
+                    let mut response = std::mem::take(if node == 0 {
+                        &mut line.response_a
+                    } else {
+                        &mut line.response_b
+                    });
+                    for (i, m) in response.iter_mut().enumerate() {
+                        *m = if near(i + 1, node) {
+                            line.block(i + 1, node)
+                        } else {
+                            Mat3::zeros()
+                        };
+                    }
+                    line.ldl.solve(n - 1, &mut response);
+                    if node == 0 {
+                        line.response_a = response;
+                    } else {
+                        line.response_b = response;
+                    }
                     continue;
                 }
                 for c in 0..3 {
@@ -1201,16 +1272,19 @@ mod tests {
     /// Two lines sharing a free point, one end fixed each, compared with a dense solve.
     #[test]
     fn matches_dense_assembly() {
-        check_against_dense(1, &[4, 3, 1]);
+        check_against_dense(1, &[4, 3, 1], false);
     }
 
     /// The same with block bandwidth 3 (Hermite lines), including lines short enough for
     /// their ends to couple directly.
     #[test]
     fn banded_matches_dense_assembly() {
-        check_against_dense(3, &[9, 6, 3]);
-        check_against_dense(3, &[4, 2, 2]);
-        check_against_dense(2, &[5, 7, 2]);
+        // Not symmetric (the banded L U) and symmetric (the block L D Lᵀ).
+        for symmetric in [false, true] {
+            check_against_dense(3, &[9, 6, 3], symmetric);
+            check_against_dense(3, &[4, 2, 2], symmetric);
+            check_against_dense(2, &[5, 7, 2], symmetric);
+        }
     }
 
     /// Lines on points of a free rigid body (and a free point), bandwidths 1 and 3, against a
@@ -1219,12 +1293,12 @@ mod tests {
     /// the known parts (fixed ends, centripetal terms).
     #[test]
     fn body_slots_match_dense_assembly() {
-        for width in [1, 3] {
-            check_bodies_against_dense(width);
+        for (width, symmetric) in [(1, false), (3, false), (3, true)] {
+            check_bodies_against_dense(width, symmetric);
         }
     }
 
-    fn check_bodies_against_dense(width: usize) {
+    fn check_bodies_against_dense(width: usize, symmetric: bool) {
         let f = |i: usize, r: usize, c: usize| ((i * 13 + r * 5 + c * 7) % 17) as f64 / 17.0 - 0.5;
         // Slots: 0 is the free point; 1 and 2 are points on body 0.
         let ends = [
@@ -1245,16 +1319,30 @@ mod tests {
         for l in lines.iter_mut() {
             for m in l.diag.iter_mut() {
                 seed += 1;
-                *m = Mat3::from_fn(|r, c| f(seed, r, c)) + Mat3::identity() * 5.0;
+                *m = Mat3::from_fn(|r, c| {
+                    let (r, c) = if symmetric {
+                        (r.min(c), r.max(c))
+                    } else {
+                        (r, c)
+                    };
+                    f(seed, r, c)
+                }) + Mat3::identity() * 5.0;
             }
             let last = l.nodes() - 1;
             for i in 0..=last {
                 for j in i.saturating_sub(width)..=(i + width).min(last) {
-                    if i != j {
+                    if i != j && !(symmetric && j < i) {
                         seed += 1;
-                        *l.block_mut(i, j) = Mat3::from_fn(|r, c| f(seed, r, c)) * 0.5;
+                        let m = Mat3::from_fn(|r, c| f(seed, r, c)) * 0.5;
+                        *l.block_mut(i, j) = m;
+                        if symmetric {
+                            *l.block_mut(j, i) = m.transpose();
+                        }
                     }
                 }
+            }
+            if width > 1 && l.nodes() > 3 {
+                assert_eq!(l.interior_is_symmetric(), symmetric);
             }
             for (i, x) in l.x.iter_mut().enumerate() {
                 *x = Vec3::new(i as f64, 1.0 + seed as f64 * 0.1, -0.3);
@@ -1387,7 +1475,9 @@ mod tests {
         }
     }
 
-    fn check_against_dense(width: usize, nodes: &[usize]) {
+    /// With `symmetric`, every line's blocks are symmetric to the bit (block (j, i) is block
+    /// (i, j)ᵀ, the diagonal blocks symmetric), as a mass matrix's are.
+    fn check_against_dense(width: usize, nodes: &[usize], symmetric: bool) {
         let f = |i: usize, r: usize, c: usize| ((i * 13 + r * 5 + c * 7) % 17) as f64 / 17.0 - 0.5;
         let ends = [
             (EndKind::Known, EndKind::Free(0)),
@@ -1403,16 +1493,30 @@ mod tests {
         for l in lines.iter_mut() {
             for m in l.diag.iter_mut() {
                 seed += 1;
-                *m = Mat3::from_fn(|r, c| f(seed, r, c)) + Mat3::identity() * 5.0;
+                *m = Mat3::from_fn(|r, c| {
+                    let (r, c) = if symmetric {
+                        (r.min(c), r.max(c))
+                    } else {
+                        (r, c)
+                    };
+                    f(seed, r, c)
+                }) + Mat3::identity() * 5.0;
             }
             let last = l.nodes() - 1;
             for i in 0..=last {
                 for j in i.saturating_sub(width)..=(i + width).min(last) {
-                    if i != j {
+                    if i != j && !(symmetric && j < i) {
                         seed += 1;
-                        *l.block_mut(i, j) = Mat3::from_fn(|r, c| f(seed, r, c)) * 0.5;
+                        let m = Mat3::from_fn(|r, c| f(seed, r, c)) * 0.5;
+                        *l.block_mut(i, j) = m;
+                        if symmetric {
+                            *l.block_mut(j, i) = m.transpose();
+                        }
                     }
                 }
+            }
+            if width > 1 && l.nodes() > 3 {
+                assert_eq!(l.interior_is_symmetric(), symmetric);
             }
             for (i, x) in l.x.iter_mut().enumerate() {
                 *x = Vec3::new(i as f64, 1.0 + seed as f64 * 0.1, -0.3);
