@@ -46,7 +46,7 @@ impl BlockBandedLdl {
 
     #[inline(always)]
     fn l(&self, i: usize, j: usize) -> &Mat3 {
-        &self.lower[i * self.width + (i - j) - 1]
+        &self.lower[lower_at(self.width, i, j)]
     }
 
     /// Sets block (i, j) of the lower band, i − w ≤ j ≤ i, before [`BlockBandedLdl::factor`].
@@ -55,7 +55,7 @@ impl BlockBandedLdl {
         if i == j {
             self.inv_diag[i] = block;
         } else {
-            self.lower[i * self.width + (i - j) - 1] = block;
+            self.lower[lower_at(self.width, i, j)] = block;
         }
     }
 
@@ -68,6 +68,7 @@ impl BlockBandedLdl {
     /// Solves A X = B in place for the n-block right-hand side `x` (3-vectors, C = 1, or
     /// 3×3 blocks, C = 3, one column per right-hand side): L Y = B from the top, then
     /// X = D⁻¹ Y − Σ_{j > i} L_jiᵀ X_j from the bottom.
+    #[allow(clippy::needless_range_loop)] // j indexes both x and the factors
     pub fn solve<const C: usize>(&self, n: usize, x: &mut [SMatrix<Real, 3, C>]) {
         let w = self.width;
         for i in 1..n {
@@ -87,6 +88,12 @@ impl BlockBandedLdl {
     }
 }
 
+/// The index of block (i, j), i − w ≤ j < i, in the lower band's storage: i w + (i − j) − 1.
+#[inline(always)]
+fn lower_at(w: usize, i: usize, j: usize) -> usize {
+    i * w + (i - j) - 1
+}
+
 crate::math::wide_simd_fn! {
     /// [`BlockBandedLdl::factor`] on its storage: `diag[i]` holds A_ii and becomes D_i⁻¹,
     /// `lower[i w + k − 1]` holds A_{i,i−k} and becomes W_{i,i−k}, then L_{i,i−k}.
@@ -96,7 +103,7 @@ crate::math::wide_simd_fn! {
         w: usize,
         n: usize,
     ) -> Result<(), usize> {
-        let at = |i: usize, j: usize| i * w + (i - j) - 1;
+        let at = |i: usize, j: usize| lower_at(w, i, j);
         for i in 0..n {
             let first = i.saturating_sub(w);
             for j in first..i {
@@ -113,8 +120,8 @@ crate::math::wide_simd_fn! {
                 d -= l * wij.transpose();
                 lower[at(i, j)] = l;
             }
-            let inverse = inverse3(&d).filter(|m| m.iter().all(|x| x.is_finite()));
-            diag[i] = inverse.ok_or(i)?;
+            // `None` for a singular or non-finite D_i, as in the block-tridiagonal factors.
+            diag[i] = inverse3(&d).ok_or(i)?;
         }
         Ok(())
     }

@@ -1298,6 +1298,40 @@ mod tests {
         }
     }
 
+    /// Fills every block of `l` from `seed` on: diagonal blocks dominant (+5 I), the others
+    /// half-size; with `symmetric`, to the bit (block (j, i) is block (i, j)ᵀ, the diagonal
+    /// blocks symmetric), as a mass matrix's are.
+    fn fill_blocks(l: &mut LineBlocks, width: usize, symmetric: bool, seed: &mut usize) {
+        let f = |i: usize, r: usize, c: usize| ((i * 13 + r * 5 + c * 7) % 17) as f64 / 17.0 - 0.5;
+        for m in l.diag.iter_mut() {
+            *seed += 1;
+            *m = Mat3::from_fn(|r, c| {
+                let (r, c) = if symmetric {
+                    (r.min(c), r.max(c))
+                } else {
+                    (r, c)
+                };
+                f(*seed, r, c)
+            }) + Mat3::identity() * 5.0;
+        }
+        let last = l.nodes() - 1;
+        for i in 0..=last {
+            for j in i.saturating_sub(width)..=(i + width).min(last) {
+                if i != j && !(symmetric && j < i) {
+                    *seed += 1;
+                    let m = Mat3::from_fn(|r, c| f(*seed, r, c)) * 0.5;
+                    *l.block_mut(i, j) = m;
+                    if symmetric {
+                        *l.block_mut(j, i) = m.transpose();
+                    }
+                }
+            }
+        }
+        if width > 1 && l.nodes() > 3 {
+            assert_eq!(l.interior_is_symmetric(), symmetric);
+        }
+    }
+
     fn check_bodies_against_dense(width: usize, symmetric: bool) {
         let f = |i: usize, r: usize, c: usize| ((i * 13 + r * 5 + c * 7) % 17) as f64 / 17.0 - 0.5;
         // Slots: 0 is the free point; 1 and 2 are points on body 0.
@@ -1317,33 +1351,7 @@ mod tests {
             .collect();
         let mut seed = 0;
         for l in lines.iter_mut() {
-            for m in l.diag.iter_mut() {
-                seed += 1;
-                *m = Mat3::from_fn(|r, c| {
-                    let (r, c) = if symmetric {
-                        (r.min(c), r.max(c))
-                    } else {
-                        (r, c)
-                    };
-                    f(seed, r, c)
-                }) + Mat3::identity() * 5.0;
-            }
-            let last = l.nodes() - 1;
-            for i in 0..=last {
-                for j in i.saturating_sub(width)..=(i + width).min(last) {
-                    if i != j && !(symmetric && j < i) {
-                        seed += 1;
-                        let m = Mat3::from_fn(|r, c| f(seed, r, c)) * 0.5;
-                        *l.block_mut(i, j) = m;
-                        if symmetric {
-                            *l.block_mut(j, i) = m.transpose();
-                        }
-                    }
-                }
-            }
-            if width > 1 && l.nodes() > 3 {
-                assert_eq!(l.interior_is_symmetric(), symmetric);
-            }
+            fill_blocks(l, width, symmetric, &mut seed);
             for (i, x) in l.x.iter_mut().enumerate() {
                 *x = Vec3::new(i as f64, 1.0 + seed as f64 * 0.1, -0.3);
             }
@@ -1478,7 +1486,6 @@ mod tests {
     /// With `symmetric`, every line's blocks are symmetric to the bit (block (j, i) is block
     /// (i, j)ᵀ, the diagonal blocks symmetric), as a mass matrix's are.
     fn check_against_dense(width: usize, nodes: &[usize], symmetric: bool) {
-        let f = |i: usize, r: usize, c: usize| ((i * 13 + r * 5 + c * 7) % 17) as f64 / 17.0 - 0.5;
         let ends = [
             (EndKind::Known, EndKind::Free(0)),
             (EndKind::Free(0), EndKind::Free(1)),
@@ -1491,33 +1498,7 @@ mod tests {
             .collect();
         let mut seed = 0;
         for l in lines.iter_mut() {
-            for m in l.diag.iter_mut() {
-                seed += 1;
-                *m = Mat3::from_fn(|r, c| {
-                    let (r, c) = if symmetric {
-                        (r.min(c), r.max(c))
-                    } else {
-                        (r, c)
-                    };
-                    f(seed, r, c)
-                }) + Mat3::identity() * 5.0;
-            }
-            let last = l.nodes() - 1;
-            for i in 0..=last {
-                for j in i.saturating_sub(width)..=(i + width).min(last) {
-                    if i != j && !(symmetric && j < i) {
-                        seed += 1;
-                        let m = Mat3::from_fn(|r, c| f(seed, r, c)) * 0.5;
-                        *l.block_mut(i, j) = m;
-                        if symmetric {
-                            *l.block_mut(j, i) = m.transpose();
-                        }
-                    }
-                }
-            }
-            if width > 1 && l.nodes() > 3 {
-                assert_eq!(l.interior_is_symmetric(), symmetric);
-            }
+            fill_blocks(l, width, symmetric, &mut seed);
             for (i, x) in l.x.iter_mut().enumerate() {
                 *x = Vec3::new(i as f64, 1.0 + seed as f64 * 0.1, -0.3);
             }
