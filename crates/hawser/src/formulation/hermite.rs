@@ -45,7 +45,6 @@ use crate::linalg::LineBlocks;
 use crate::math::{Mat3, Real, Vec3};
 use crate::model::StrainMeasure;
 use crate::physics::environment::Environment;
-use crate::physics::hydrodynamics::added_mass_matrix;
 use crate::physics::obstacles::{LineBall, Obstacle};
 
 /// Options of a `hermite` line.
@@ -224,6 +223,7 @@ pub fn line_forces(
         let qe = [q[idx[0]], q[idx[1]], q[idx[2]], q[idx[3]]];
         let ve = [qdot[idx[0]], qdot[idx[1]], qdot[idx[2]], qdot[idx[3]]];
         let mut fe = [Vec3::zeros(); 4];
+        let mut element_mass = ElementMass::default();
         let net_weight = (rho_w * sec.area - lt.mass_per_length) * g;
         for (gp, &(xi, wg)) in GAUSS.iter().enumerate() {
             let (s, d1, d2, _) = shape(xi, l);
@@ -294,24 +294,17 @@ pub fn line_forces(
             for i in 0..4 {
                 fe[i] += f * (w * s[i]);
             }
-            if let Some(b) = blocks.as_deref_mut() {
-                let mut m = added_mass_matrix(
-                    rho,
-                    sec.area,
-                    lt.normal_added_mass,
-                    lt.tangential_added_mass,
+            if blocks.is_some() {
+                element_mass.add_gauss_point(
+                    &s,
+                    (lt.mass_per_length + rho * sec.area * lt.normal_added_mass) * w,
+                    rho * sec.area * (lt.tangential_added_mass - lt.normal_added_mass) * w,
                     &tau,
                 );
-                for k in 0..3 {
-                    m[(k, k)] += lt.mass_per_length;
-                }
-                let m: Mat3 = m * w;
-                for i in 0..4 {
-                    for j in 0..4 {
-                        *b.block_mut(idx[i], idx[j]) += m * (s[i] * s[j]);
-                    }
-                }
             }
+        }
+        if let Some(b) = blocks.as_deref_mut() {
+            element_mass.add_to(b, &idx);
         }
         for i in 0..4 {
             forces[idx[i]] += fe[i];
@@ -338,6 +331,81 @@ pub fn line_forces(
                 forces[idx[i]] += f * (w * s[i]);
             }
         });
+    }
+}
+
+/// The pairs (i, j), i ≤ j, of an element's four vectors: the ten distinct blocks of its
+/// symmetric mass matrix.
+const MASS_PAIRS: [(usize, usize); 10] = [
+    (0, 0),
+    (0, 1),
+    (0, 2),
+    (0, 3),
+    (1, 1),
+    (1, 2),
+    (1, 3),
+    (2, 2),
+    (2, 3),
+    (3, 3),
+];
+
+/// One element's mass blocks summed over its Gauss points (eqs. 9, 14):
+///
+///   M_ij = ∫ s_i s_j (γ₀ I + m_a(τ)) ds = Σ_g s_i s_j [a_g I + b_g τ_g τ_gᵀ],
+///
+/// with a_g = (γ₀ + ρ A C_an) w_g [kg] and b_g = ρ A (C_at − C_an) w_g [kg], w_g the point's
+/// weight times l (SPEC §1's added mass, m_a = ρA (C_an I + (C_at − C_an) ττᵀ)). Each of the
+/// ten distinct blocks is a symmetric 3×3 matrix, kept as its isotropic part and the six
+/// entries of its rank-one part, and added to blocks (i, j) and (j, i) alike, so the line's
+/// matrix is symmetric to the bit. Where C_at = C_an (or the point is dry) the rank-one part
+/// stays +0 exactly, so a line whose points stay wet or dry has the same blocks, bit for bit,
+/// at every evaluation (and the solver reuses their factors: [`crate::linalg::BlockBandedLdl`]).
+#[derive(Clone, Copy, Debug, Default)]
+struct ElementMass {
+    /// Σ_g a_g s_i s_j [kg, kg·m, kg·m²], per pair of [`MASS_PAIRS`].
+    isotropic: [Real; 10],
+    /// Σ_g b_g s_i s_j τ τᵀ: xx, xy, xz, yy, yz, zz, per pair.
+    rank_one: [[Real; 6]; 10],
+}
+
+impl ElementMass {
+    /// Adds Gauss point g with shape values `s`, a_g = `isotropic` and b_g = `rank_one` [kg]
+    /// and unit tangent τ.
+    #[inline(always)]
+    fn add_gauss_point(&mut self, s: &[Real; 4], isotropic: Real, rank_one: Real, tau: &Vec3) {
+        for (k, &(i, j)) in MASS_PAIRS.iter().enumerate() {
+            self.isotropic[k] += isotropic * (s[i] * s[j]);
+        }
+        if rank_one != 0.0 {
+            let (bx, by, bz) = (rank_one * tau.x, rank_one * tau.y, rank_one * tau.z);
+            let p = [
+                bx * tau.x,
+                bx * tau.y,
+                bx * tau.z,
+                by * tau.y,
+                by * tau.z,
+                bz * tau.z,
+            ];
+            for (k, &(i, j)) in MASS_PAIRS.iter().enumerate() {
+                let sij = s[i] * s[j];
+                for (m, p) in self.rank_one[k].iter_mut().zip(p) {
+                    *m += p * sij;
+                }
+            }
+        }
+    }
+
+    /// Adds the element's blocks to the line's at its vectors `idx`.
+    #[inline(always)]
+    fn add_to(&self, blocks: &mut LineBlocks, idx: &[usize; 4]) {
+        for (k, &(i, j)) in MASS_PAIRS.iter().enumerate() {
+            let (a, [xx, xy, xz, yy, yz, zz]) = (self.isotropic[k], self.rank_one[k]);
+            let m = Mat3::new(a + xx, xy, xz, xy, a + yy, yz, xz, yz, a + zz);
+            *blocks.block_mut(idx[i], idx[j]) += m;
+            if i != j {
+                *blocks.block_mut(idx[j], idx[i]) += m;
+            }
+        }
     }
 }
 
@@ -452,6 +520,7 @@ pub fn element_eigenvalue_bounds() -> (Real, Real) {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::formulation::ElementState;
 
     #[test]
     fn structural_mass_is_the_classical_beam_matrix() {
@@ -510,6 +579,105 @@ mod tests {
             let v = element_vectors(e, n);
             let (lo, hi) = (v.iter().min().unwrap(), v.iter().max().unwrap());
             assert_eq!(hi - lo, 3, "element {e} spans four consecutive vectors");
+        }
+    }
+
+    /// The mass blocks `line_forces` assembles (per element, [`ElementMass`]) are the
+    /// quadrature of eqs. 9, 14 with SPEC §1's added mass, symmetric to the bit, and, with
+    /// C_at = C_an on a line that stays wet, the same bits in any shape; with C_at ≠ C_an they
+    /// turn with the tangents. 1e-12 relative: the reference sums the same products in
+    /// another order (round-off of a few ulps of the largest block entry).
+    #[test]
+    fn mass_blocks_are_the_quadrature_and_constant_when_isotropic() {
+        use crate::linalg::EndKind;
+        use crate::physics::hydrodynamics::added_mass_matrix;
+        let n = 4;
+        let env = Environment {
+            depth: 200.0,
+            ..Environment::default()
+        };
+        // Two shapes of a 40 m line, wholly below the water (one end 1 m under it).
+        let shape_of = |bend: Real| -> Vec<Vec3> {
+            let mut q = vec![Vec3::zeros(); 2 * n + 2];
+            for i in 0..=n {
+                let a = bend * i as Real / n as Real;
+                let r = Vec3::new(10.0 * i as Real, 2.0 * a.sin(), -41.0 + 10.0 * i as Real);
+                let t = Vec3::new(1.0, bend * a.cos(), 1.0).normalize() * 1.001;
+                q[vector_index(i, false, n)] = r;
+                q[vector_index(i, true, n)] = t;
+            }
+            q
+        };
+        let blocks_at = |lt: &crate::model::LineType, q: &[Vec3]| {
+            let mesh = Mesh::new(&[(lt.clone(), 40.0, n)]);
+            let mut blocks = LineBlocks::banded(2 * n + 2, 3, EndKind::Known, EndKind::Known, true);
+            let mut forces = vec![Vec3::zeros(); q.len()];
+            let mut elements = ElementState::new(n);
+            line_forces(
+                &mesh,
+                &HermiteOptions::default(),
+                &env,
+                0.0,
+                q,
+                &vec![Vec3::zeros(); q.len()],
+                &mut forces,
+                &mut elements,
+                Some(&mut blocks),
+                LoadOptions::direct(1.0),
+            );
+            // The reference: Σ_e Σ_g w s_i s_j (γ₀ I + m_a(τ)), block by block.
+            let mut reference = vec![vec![Mat3::zeros(); 2 * n + 2]; 2 * n + 2];
+            for e in 0..n {
+                let idx = element_vectors(e, n);
+                for (xi, wg) in GAUSS {
+                    let (s, _, _, _) = shape(xi, 10.0);
+                    let (r, r1) = point_on_element(&mesh, q, e, xi);
+                    let m = added_mass_matrix(
+                        env.fluid_density(r.z),
+                        mesh.section(e).area,
+                        lt.normal_added_mass,
+                        lt.tangential_added_mass,
+                        &r1.normalize(),
+                    ) + Mat3::identity() * lt.mass_per_length;
+                    for i in 0..4 {
+                        for j in 0..4 {
+                            reference[idx[i]][idx[j]] += m * (wg * 10.0 * s[i] * s[j]);
+                        }
+                    }
+                }
+            }
+            let scale = reference
+                .iter()
+                .flatten()
+                .map(|b| b.amax())
+                .fold(0.0, Real::max);
+            for (i, row) in reference.iter().enumerate() {
+                for (j, want) in row.iter().enumerate() {
+                    let got = blocks.block(i, j);
+                    assert!((got - want).amax() < 1e-12 * scale, "block ({i}, {j})");
+                }
+            }
+            assert!(blocks.interior_is_symmetric());
+            blocks.blocks().copied().collect::<Vec<_>>()
+        };
+        let bits = |b: &[Mat3]| {
+            b.iter()
+                .flat_map(|m| m.iter().map(|x| x.to_bits()))
+                .collect::<Vec<_>>()
+        };
+        let mut lt = crate::verification::line_type(0.09, 77.7, 3.8e8);
+        for (normal, tangential) in [(1.0, 1.0), (1.0, 0.0)] {
+            lt.normal_added_mass = normal;
+            lt.tangential_added_mass = tangential;
+            let (straight, bent) = (
+                blocks_at(&lt, &shape_of(0.0)),
+                blocks_at(&lt, &shape_of(0.7)),
+            );
+            assert_eq!(
+                bits(&straight) == bits(&bent),
+                normal == tangential,
+                "C_an {normal}, C_at {tangential}"
+            );
         }
     }
 

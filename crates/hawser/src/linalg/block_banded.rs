@@ -21,9 +21,25 @@ pub const MAX_WIDTH: usize = 4;
 /// 9 products, where the banded L U of the same matrix by scalar rows (half-bandwidth 3w + 2)
 /// takes about (3w + 2)² multiply–adds per scalar row, 363 per block row, in short loops.
 /// Only the lower blocks are read; the caller checks that the matrix is symmetric.
+///
+/// The factors are kept with the matrix they came from: [`BlockBandedLdl::factor`] of a
+/// matrix whose blocks are, bit for bit, those it last factored returns at once and leaves the
+/// factors as they are (a line mass that does not change between evaluations: a `hermite`
+/// line with C_at = C_an whose points stay wet, or dry). Comparing costs a read of each block
+/// as it is set; factoring, about 9 block products and a 3×3 inverse per block row.
 #[derive(Clone, Debug, Default)]
 pub struct BlockBandedLdl {
     width: usize,
+    /// A_ii as set.
+    matrix_diag: Vec<Mat3>,
+    /// A_{i, i−k} as set, at i w + k − 1, k = 1 … w.
+    matrix_lower: Vec<Mat3>,
+    /// Whether a block set since the last factorisation differs from the one factored.
+    changed: bool,
+    /// The block rows n of the factors held, if they are those of `matrix_*`.
+    factored: Option<usize>,
+    /// Factorisations done (not counting the reuses).
+    factorisations: usize,
     /// D_i⁻¹.
     inv_diag: Vec<Mat3>,
     /// L_{i, i−k} at i w + k − 1, k = 1 … w.
@@ -39,6 +55,11 @@ impl BlockBandedLdl {
         );
         Self {
             width,
+            matrix_diag: vec![Mat3::zeros(); n],
+            matrix_lower: vec![Mat3::zeros(); n * width],
+            changed: true,
+            factored: None,
+            factorisations: 0,
             inv_diag: vec![Mat3::zeros(); n],
             lower: vec![Mat3::zeros(); n * width],
         }
@@ -52,17 +73,43 @@ impl BlockBandedLdl {
     /// Sets block (i, j) of the lower band, i − w ≤ j ≤ i, before [`BlockBandedLdl::factor`].
     #[inline]
     pub fn set(&mut self, i: usize, j: usize, block: Mat3) {
-        if i == j {
-            self.inv_diag[i] = block;
+        let a = if i == j {
+            &mut self.matrix_diag[i]
         } else {
-            self.lower[lower_at(self.width, i, j)] = block;
+            &mut self.matrix_lower[lower_at(self.width, i, j)]
+        };
+        if !self.changed && !same_bits(a, &block) {
+            self.changed = true;
         }
+        *a = block;
     }
 
-    /// Factors in place the n-block matrix whose lower band [`BlockBandedLdl::set`] gave.
-    /// `Err(i)` if D_i is singular or not finite.
+    /// Factors the n-block matrix whose lower band [`BlockBandedLdl::set`] gave, unless its
+    /// blocks are those of the factors held (then nothing is done). `Err(i)` if D_i is
+    /// singular or not finite.
     pub fn factor(&mut self, n: usize) -> Result<(), usize> {
-        factor_in_place(&mut self.inv_diag, &mut self.lower, self.width, n)
+        if !self.changed && self.factored == Some(n) {
+            return Ok(());
+        }
+        self.changed = false;
+        self.factored = None;
+        self.factorisations += 1;
+        factor_in_place(
+            &self.matrix_diag,
+            &self.matrix_lower,
+            &mut self.inv_diag,
+            &mut self.lower,
+            self.width,
+            n,
+        )?;
+        self.factored = Some(n);
+        Ok(())
+    }
+
+    /// The factorisations done so far; a [`BlockBandedLdl::factor`] that reused the factors
+    /// held does not count.
+    pub fn factorisations(&self) -> usize {
+        self.factorisations
     }
 
     /// Solves A X = B in place for the n-block right-hand side `x` (3-vectors, C = 1, or
@@ -88,6 +135,14 @@ impl BlockBandedLdl {
     }
 }
 
+/// Whether two blocks are equal bit for bit (+0 and −0 differ; a NaN equals its own bits).
+#[inline(always)]
+pub(crate) fn same_bits(a: &Mat3, b: &Mat3) -> bool {
+    a.iter()
+        .zip(b.iter())
+        .all(|(x, y)| x.to_bits() == y.to_bits())
+}
+
 /// The index of block (i, j), i − w ≤ j < i, in the lower band's storage: i w + (i − j) − 1.
 #[inline(always)]
 fn lower_at(w: usize, i: usize, j: usize) -> usize {
@@ -95,9 +150,12 @@ fn lower_at(w: usize, i: usize, j: usize) -> usize {
 }
 
 crate::math::wide_simd_fn! {
-    /// [`BlockBandedLdl::factor`] on its storage: `diag[i]` holds A_ii and becomes D_i⁻¹,
-    /// `lower[i w + k − 1]` holds A_{i,i−k} and becomes W_{i,i−k}, then L_{i,i−k}.
+    /// [`BlockBandedLdl::factor`]: from A's diagonal `a_diag` and lower band `a_lower`
+    /// (A_{i,i−k} at i w + k − 1), `inv_diag[i]` becomes D_i⁻¹ and `lower` holds W_{i,i−k},
+    /// then L_{i,i−k}.
     fn factor_in_place(
+        a_diag: &[Mat3],
+        a_lower: &[Mat3],
         diag: &mut [Mat3],
         lower: &mut [Mat3],
         w: usize,
@@ -107,13 +165,13 @@ crate::math::wide_simd_fn! {
         for i in 0..n {
             let first = i.saturating_sub(w);
             for j in first..i {
-                let mut s = lower[at(i, j)];
+                let mut s = a_lower[at(i, j)];
                 for k in first..j {
                     s -= lower[at(i, k)] * lower[at(j, k)].transpose();
                 }
                 lower[at(i, j)] = s;
             }
-            let mut d = diag[i];
+            let mut d = a_diag[i];
             for j in first..i {
                 let wij = lower[at(i, j)];
                 let l = wij * diag[j];
@@ -216,5 +274,82 @@ mod tests {
             }
         }
         assert_eq!(ldl.factor(4), Err(2));
+    }
+
+    /// The factors of an unchanged matrix are reused, and any changed bit of any block (even
+    /// +0 to −0), a different size or a failed factorisation makes the next call factor
+    /// again; the solve after a reuse is the solve of a fresh factorisation to the bit.
+    #[test]
+    fn reuses_the_factors_of_an_unchanged_matrix() {
+        let (n, w): (usize, usize) = (6, 3);
+        let block = |i: usize, j: usize| {
+            Mat3::from_fn(|r, c| {
+                let (p, q) = ((3 * i + r).min(3 * j + c), (3 * i + r).max(3 * j + c));
+                ((p * 5 + q * 3) % 7) as Real / 7.0 + if p == q { 20.0 } else { 0.0 }
+            })
+        };
+        let set_all = |ldl: &mut BlockBandedLdl, change: Option<(usize, usize, Mat3)>| {
+            for i in 0..n {
+                for j in i.saturating_sub(w)..=i {
+                    let b = match change {
+                        Some((ci, cj, b)) if (ci, cj) == (i, j) => b,
+                        _ => block(i, j),
+                    };
+                    ldl.set(i, j, b);
+                }
+            }
+        };
+        let solution = |ldl: &BlockBandedLdl| {
+            let mut x: Vec<Vec3> = (0..n).map(|i| Vec3::new(1.0, i as Real, -2.0)).collect();
+            ldl.solve(n, &mut x);
+            x
+        };
+        let mut ldl = BlockBandedLdl::new(n, w);
+        set_all(&mut ldl, None);
+        ldl.factor(n).unwrap();
+        let first = solution(&ldl);
+        set_all(&mut ldl, None);
+        ldl.factor(n).unwrap();
+        assert_eq!(
+            ldl.factorisations(),
+            1,
+            "the same blocks: the factors reused"
+        );
+        assert_eq!(solution(&ldl), first);
+        // One entry one ulp up, in the far band; then a zero's sign.
+        let mut up = block(4, 1);
+        up[(2, 0)] = Real::from_bits(up[(2, 0)].to_bits() + 1);
+        let (mut zero, mut negative_zero) = (block(5, 3), block(5, 3));
+        zero[(0, 1)] = 0.0;
+        negative_zero[(0, 1)] = -0.0;
+        for (count, change) in [
+            (2, (4, 1, up)),
+            (3, (5, 3, zero)),
+            (4, (5, 3, negative_zero)),
+        ] {
+            set_all(&mut ldl, Some(change));
+            ldl.factor(n).unwrap();
+            assert_eq!(
+                ldl.factorisations(),
+                count,
+                "changed block {:?}",
+                (change.0, change.1)
+            );
+            let mut fresh = BlockBandedLdl::new(n, w);
+            set_all(&mut fresh, Some(change));
+            fresh.factor(n).unwrap();
+            assert_eq!(solution(&ldl), solution(&fresh));
+        }
+        // Fewer block rows: factored again.
+        ldl.factor(n - 1).unwrap();
+        assert_eq!(ldl.factorisations(), 5);
+        // A singular matrix fails every time it is factored, not only the first.
+        let mut singular = BlockBandedLdl::new(2, 1);
+        for _ in 0..2 {
+            singular.set(0, 0, Mat3::identity());
+            singular.set(1, 0, Mat3::identity());
+            singular.set(1, 1, Mat3::identity());
+            assert_eq!(singular.factor(2), Err(1));
+        }
     }
 }

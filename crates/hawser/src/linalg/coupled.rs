@@ -16,6 +16,7 @@
 //! line's end mass adds Jᵀ A J to the body's 6×6 mass.
 
 use super::block_banded::MAX_WIDTH;
+use super::block_banded::same_bits;
 use super::{BandedLu, BlockBandedLdl, BlockTridiagonal, DenseLu};
 use crate::math::Mat3x6 as Matrix3x6;
 use crate::math::{Mat3, Mat6, Real, Vec3, Vec6, skew};
@@ -541,18 +542,42 @@ impl LineBlocks {
     /// (j, i)ᵀ. A mass matrix is (its blocks are ∫ s_i s_j m(s) ds with m symmetric); an
     /// implicit scheme's iteration matrix, with its drag Jacobian, is not.
     pub fn interior_is_symmetric(&self) -> bool {
+        self.each_symmetric_lower_block(|_, _, _| {})
+    }
+
+    /// [`LineBlocks::interior_is_symmetric`], handing each interior block (i, j) of the lower
+    /// band, j ≤ i, to `each` row by row as it is checked (up to the first that is not
+    /// symmetric).
+    fn each_symmetric_lower_block(&self, mut each: impl FnMut(usize, usize, &Mat3)) -> bool {
         let (n, w) = (self.nodes() - 1, self.width());
-        let same = |a: &Mat3, b: &Mat3| {
-            a.iter()
-                .zip(b.iter())
-                .all(|(x, y)| x.to_bits() == y.to_bits())
-        };
-        (2..=MAX_WIDTH).contains(&w)
-            && (1..n).all(|i| {
-                same(&self.diag[i], &self.diag[i].transpose())
-                    && (i + 1..=(i + w).min(n - 1))
-                        .all(|j| same(&self.block(i, j), &self.block(j, i).transpose()))
-            })
+        if !(2..=MAX_WIDTH).contains(&w) {
+            return false;
+        }
+        for i in 1..n {
+            for k in (0..=w.min(i - 1)).rev() {
+                let j = i - k;
+                let (below, above) = match k {
+                    0 => (&self.diag[i], &self.diag[i]),
+                    1 => (&self.lower[j], &self.upper[j]),
+                    _ => (&self.far_lower[k - 2][j], &self.far_upper[k - 2][j]),
+                };
+                if !same_bits(below, &above.transpose()) {
+                    return false;
+                }
+                each(i, j, below);
+            }
+        }
+        true
+    }
+
+    /// Copies the interior's lower band into its L D Lᵀ if the interior is symmetric to the
+    /// bit ([`LineBlocks::interior_is_symmetric`], checked in the same pass), and says whether
+    /// it is.
+    fn load_symmetric_interior(&mut self) -> bool {
+        let mut ldl = std::mem::take(&mut self.ldl);
+        let symmetric = self.each_symmetric_lower_block(|i, j, b| ldl.set(i - 1, j - 1, *b));
+        self.ldl = ldl;
+        symmetric
     }
 
     /// Number of nodes N + 1.
@@ -768,15 +793,9 @@ impl CoupledSystem {
                 }
             }
             if self.factoring {
-                line.symmetric = line.interior_is_symmetric();
+                line.symmetric = line.load_symmetric_interior();
             }
             if self.factoring && line.symmetric {
-                for i in 1..n {
-                    for j in i.saturating_sub(w).max(1)..=i {
-                        let b = line.block(i, j);
-                        line.ldl.set(i - 1, j - 1, b);
-                    }
-                }
                 line.ldl.factor(n - 1).map_err(|k| Singular::Line {
                     line: li,
                     node: k + 1,
