@@ -13,6 +13,9 @@ pub type Vec6 = nalgebra::Vector6<Real>;
 pub type Mat6 = nalgebra::Matrix6<Real>;
 /// A 3×6 matrix (the map from a rigid body's 6 accelerations to a body point's 3).
 pub type Mat3x6 = nalgebra::Matrix3x6<Real>;
+/// C columns of 3 rows: the right-hand sides of the block solves (C = 1, a 3-vector; C = 3,
+/// a 3×3 block of three columns).
+pub type Mat3xC<const C: usize> = nalgebra::SMatrix<Real, 3, C>;
 /// A rotation as a unit quaternion (body axes to global axes).
 pub type Quat = nalgebra::UnitQuaternion<Real>;
 

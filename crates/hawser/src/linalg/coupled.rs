@@ -17,7 +17,7 @@
 
 use super::block_banded::MAX_WIDTH;
 use super::block_banded::same_bits;
-use super::{BandedLu, BlockBandedLdl, BlockTridiagonal, DenseLu};
+use super::{BlockBandedLdl, BlockBandedLu, BlockTridiagonal, DenseLu};
 use crate::math::Mat3x6 as Matrix3x6;
 use crate::math::{Mat3, Mat6, Real, Vec3, Vec6, skew};
 
@@ -59,13 +59,8 @@ pub struct LineBlocks {
     /// [`LumpedMass::current`], the solve of an uncoupled line uses it instead of the blocks.
     pub lumped: LumpedMass,
     factor: BlockTridiagonal,
-    banded: BandedLu,
-    /// The interior's block L D Lᵀ, used instead of `banded` when the interior is symmetric
-    /// (a mass matrix, [`LineBlocks::interior_is_symmetric`]).
-    ldl: BlockBandedLdl,
-    /// Whether the last factorisation was `ldl` (else `banded`).
-    symmetric: bool,
-    column: Vec<Real>,
+    /// A banded line's interior factors (block bandwidth w > 1).
+    interior: InteriorFactors,
     response_a: Vec<Mat3>,
     response_b: Vec<Mat3>,
 }
@@ -428,18 +423,11 @@ impl LineBlocks {
                 LumpedMass::default()
             },
             factor: BlockTridiagonal::with_capacity(if width == 1 { interior.max(1) } else { 0 }),
-            banded: if width == 1 {
-                BandedLu::default()
+            interior: if width == 1 {
+                InteriorFactors::default()
             } else {
-                BandedLu::new(3 * interior, 3 * width + 2)
+                InteriorFactors::new(interior, width)
             },
-            ldl: if width == 1 || width > MAX_WIDTH {
-                BlockBandedLdl::default()
-            } else {
-                BlockBandedLdl::new(interior, width)
-            },
-            symmetric: false,
-            column: vec![0.0; if width == 1 { 0 } else { 3 * interior }],
             response_a: vec![Mat3::zeros(); interior],
             response_b: vec![Mat3::zeros(); interior],
         }
@@ -486,11 +474,28 @@ impl LineBlocks {
         self.row_times(i, &self.x)
     }
 
-    /// Σ_j A_ij x_j over row i's band for any `x` over the same nodes.
+    /// Σ_j A_ij x_j over row i's band for any `x` over the same nodes, summed from zero in the
+    /// order of j, reading the bands directly.
     pub fn row_times(&self, i: usize, x: &[Vec3]) -> Vec3 {
+        let (w, last) = (self.width(), self.nodes() - 1);
         let mut s = Vec3::zeros();
-        for j in self.band_of(i) {
-            s += self.block(i, j) * x[j];
+        for k in (1..=w.min(i)).rev() {
+            let j = i - k;
+            let b = if k == 1 {
+                &self.lower[j]
+            } else {
+                &self.far_lower[k - 2][j]
+            };
+            s += b * x[j];
+        }
+        s += self.diag[i] * x[i];
+        for k in 1..=w.min(last - i) {
+            let b = if k == 1 {
+                &self.upper[i]
+            } else {
+                &self.far_upper[k - 2][i]
+            };
+            s += b * x[i + k];
         }
         s
     }
@@ -570,14 +575,30 @@ impl LineBlocks {
         true
     }
 
-    /// Copies the interior's lower band into its L D Lᵀ if the interior is symmetric to the
-    /// bit ([`LineBlocks::interior_is_symmetric`], checked in the same pass), and says whether
-    /// it is.
-    fn load_symmetric_interior(&mut self) -> bool {
-        let mut ldl = std::mem::take(&mut self.ldl);
-        let symmetric = self.each_symmetric_lower_block(|i, j, b| ldl.set(i - 1, j - 1, *b));
-        self.ldl = ldl;
-        symmetric
+    /// Factors the interior rows 1 … N − 1 of a banded line: by L D Lᵀ if they are symmetric
+    /// to the bit ([`LineBlocks::interior_is_symmetric`], checked as the lower band is copied
+    /// in), else by L U. `Err(i)` for a singular pivot block at interior row i (node i + 1).
+    fn factor_interior(&mut self) -> Result<(), usize> {
+        let (n, w) = (self.nodes() - 1, self.width());
+        let mut f = std::mem::take(&mut self.interior);
+        f.symmetric = self.each_symmetric_lower_block(|i, j, b| f.ldl.set(i - 1, j - 1, *b));
+        let factored = if f.symmetric {
+            f.ldl.factor(n - 1)
+        } else {
+            for i in 1..n {
+                f.lu.set(i - 1, i - 1, self.diag[i]);
+            }
+            for (k, (below, above)) in (1..=w).zip(self.band_pairs()) {
+                // below[j] is block (j + k, j), above[j] block (j, j + k).
+                for j in 1..n.saturating_sub(k) {
+                    f.lu.set(j + k - 1, j - 1, below[j]);
+                    f.lu.set(j - 1, j + k - 1, above[j]);
+                }
+            }
+            f.lu.factor(n - 1)
+        };
+        self.interior = f;
+        factored
     }
 
     /// Number of nodes N + 1.
@@ -606,6 +627,36 @@ impl LineBlocks {
             for b in self.far_lower.iter_mut().chain(self.far_upper.iter_mut()) {
                 b.iter_mut().for_each(|m| *m = Mat3::zeros());
             }
+        }
+    }
+}
+
+/// The factors of a banded line's interior: its mass matrix, symmetric, by block L D Lᵀ
+/// (whose factors are kept while the blocks do not change), anything else by block L U.
+#[derive(Clone, Debug, Default)]
+struct InteriorFactors {
+    ldl: BlockBandedLdl,
+    lu: BlockBandedLu,
+    /// Whether the last factorisation was `ldl` (else `lu`).
+    symmetric: bool,
+}
+
+impl InteriorFactors {
+    fn new(interior: usize, width: usize) -> Self {
+        Self {
+            ldl: BlockBandedLdl::new(interior, width),
+            lu: BlockBandedLu::new(interior, width),
+            symmetric: false,
+        }
+    }
+
+    /// Solves with the last factors for the interior's right-hand sides `x` (3-vectors, or
+    /// 3×3 blocks of three columns).
+    fn solve<const C: usize>(&self, n: usize, x: &mut [crate::math::Mat3xC<C>]) {
+        if self.symmetric {
+            self.ldl.solve(n, x);
+        } else {
+            self.lu.solve(n, x);
         }
     }
 }
@@ -767,7 +818,7 @@ impl CoupledSystem {
     }
 
     /// Step 1 of [`CoupledSystem::solve`] for a line of block bandwidth w > 1: the interior by
-    /// banded LU and its responses to the free ends (step 2 is
+    /// block L D Lᵀ or L U and its responses to the free ends (step 2 is
     /// [`CoupledSystem::banded_contributions`]).
     fn eliminate_banded(&mut self, li: usize, line: &mut LineBlocks) -> Result<(), Singular> {
         let n = line.nodes() - 1;
@@ -793,91 +844,34 @@ impl CoupledSystem {
                 }
             }
             if self.factoring {
-                line.symmetric = line.load_symmetric_interior();
-            }
-            if self.factoring && line.symmetric {
-                line.ldl.factor(n - 1).map_err(|k| Singular::Line {
+                line.factor_interior().map_err(|k| Singular::Line {
                     line: li,
                     node: k + 1,
                 })?;
-            } else if self.factoring {
-                line.banded.clear();
-                for i in 1..n {
-                    for j in i.saturating_sub(w).max(1)..=(i + w).min(n - 1) {
-                        let b = line.block(i, j);
-                        for r in 0..3 {
-                            for c in 0..3 {
-                                line.banded.set(3 * (i - 1) + r, 3 * (j - 1) + c, b[(r, c)]);
-                            }
-                        }
-                    }
-                }
-                line.banded.factor().map_err(|k| Singular::Line {
-                    line: li,
-                    node: k / 3 + 1,
-                })?;
             }
-            if line.symmetric {
-                line.ldl.solve(n - 1, &mut line.x[1..n]);
-            } else {
-                for i in 1..n {
-                    for r in 0..3 {
-                        line.column[3 * (i - 1) + r] = line.x[i][r];
-                    }
-                }
-                line.banded.solve(&mut line.column);
-                for i in 1..n {
-                    let k = 3 * (i - 1);
-                    line.x[i] = Vec3::new(line.column[k], line.column[k + 1], line.column[k + 2]);
-                }
-            }
+            line.interior.solve(n - 1, &mut line.x[1..n]);
             for (end, node) in [(line.end_a, 0), (line.end_b, n)] {
                 if !matches!(end, EndKind::Free(_)) || !self.factoring {
                     continue;
                 }
-                if line.symmetric {
-                    // The three columns at once.
-                    let mut response = std::mem::take(if node == 0 {
-                        &mut line.response_a
+                // The three columns at once.
+                let mut response = std::mem::take(if node == 0 {
+                    &mut line.response_a
+                } else {
+                    &mut line.response_b
+                });
+                for (i, m) in response.iter_mut().enumerate() {
+                    *m = if near(i + 1, node) {
+                        line.block(i + 1, node)
                     } else {
-                        &mut line.response_b
-                    });
-                    for (i, m) in response.iter_mut().enumerate() {
-                        *m = if near(i + 1, node) {
-                            line.block(i + 1, node)
-                        } else {
-                            Mat3::zeros()
-                        };
-                    }
-                    line.ldl.solve(n - 1, &mut response);
-                    if node == 0 {
-                        line.response_a = response;
-                    } else {
-                        line.response_b = response;
-                    }
-                    continue;
-                }
-                for c in 0..3 {
-                    line.column.iter_mut().for_each(|v| *v = 0.0);
-                    for i in 1..n {
-                        if near(i, node) {
-                            let b = line.block(i, node);
-                            for r in 0..3 {
-                                line.column[3 * (i - 1) + r] = b[(r, c)];
-                            }
-                        }
-                    }
-                    line.banded.solve(&mut line.column);
-                    let response = if node == 0 {
-                        &mut line.response_a
-                    } else {
-                        &mut line.response_b
+                        Mat3::zeros()
                     };
-                    for (i, m) in response.iter_mut().enumerate() {
-                        for r in 0..3 {
-                            m[(r, c)] = line.column[3 * i + r];
-                        }
-                    }
+                }
+                line.interior.solve(n - 1, &mut response);
+                if node == 0 {
+                    line.response_a = response;
+                } else {
+                    line.response_b = response;
                 }
             }
         }
@@ -1298,7 +1292,7 @@ mod tests {
     /// their ends to couple directly.
     #[test]
     fn banded_matches_dense_assembly() {
-        // Not symmetric (the banded L U) and symmetric (the block L D Lᵀ).
+        // Not symmetric (the block L U) and symmetric (the block L D Lᵀ).
         for symmetric in [false, true] {
             check_against_dense(3, &[9, 6, 3], symmetric);
             check_against_dense(3, &[4, 2, 2], symmetric);
