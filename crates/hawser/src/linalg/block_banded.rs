@@ -6,7 +6,7 @@
 
 use crate::math::{Mat3, Mat3xC, inverse3};
 
-/// The widest block band [`BlockBandedLdl`] takes (a `hermite` line's is 3).
+/// The widest block band [`BlockBandedLdl`] and [`BlockBandedLu`] take (a `hermite` line's is 3).
 pub const MAX_WIDTH: usize = 4;
 
 /// The L D Lᵀ factors of a symmetric n-block matrix of block bandwidth w with 3×3 blocks,
@@ -94,7 +94,7 @@ impl BlockBandedLdl {
         self.changed = false;
         self.factored = None;
         self.factorisations += 1;
-        factor_in_place(
+        ldl_factor(
             &self.matrix_diag,
             &self.matrix_lower,
             &mut self.inv_diag,
@@ -170,7 +170,7 @@ crate::math::wide_simd_fn! {
     /// [`BlockBandedLdl::factor`]: from A's diagonal `a_diag` and lower band `a_lower`
     /// (A_{i,i−k} at i w + k − 1), `inv_diag[i]` becomes D_i⁻¹ and `lower` holds W_{i,i−k},
     /// then L_{i,i−k}.
-    fn factor_in_place(
+    fn ldl_factor(
         a_diag: &[Mat3],
         a_lower: &[Mat3],
         diag: &mut [Mat3],
@@ -251,7 +251,7 @@ impl BlockBandedLu {
     /// Factors in place the n-block matrix [`BlockBandedLu::set`] gave. `Err(i)` if U_ii is
     /// singular or not finite.
     pub fn factor(&mut self, n: usize) -> Result<(), usize> {
-        lu_factor_in_place(
+        lu_factor(
             &mut self.inv_diag,
             &mut self.lower,
             &mut self.upper,
@@ -279,7 +279,7 @@ impl BlockBandedLu {
 
 crate::math::wide_simd_fn! {
     /// [`BlockBandedLu::factor`] on its storage (A's blocks in, the factors out, in place).
-    fn lu_factor_in_place(
+    fn lu_factor(
         diag: &mut [Mat3],
         lower: &mut [Mat3],
         upper: &mut [Mat3],
