@@ -209,6 +209,10 @@ pub fn line_forces(
     // σ = L̇/L of a line on a winch ([`Mesh::length_rate`]).
     let sigma = mesh.length_rate;
     let mut blocks = blocks;
+    // The shape functions at the Gauss points, for the element length they were taken at
+    // (the same for every element of a section).
+    let mut shapes_length = Real::NAN;
+    let mut shapes = [([0.0; 4], [0.0; 4], [0.0; 4]); 4];
     if let Some(b) = blocks.as_deref_mut() {
         b.clear();
     }
@@ -225,8 +229,15 @@ pub fn line_forces(
         let mut fe = [Vec3::zeros(); 4];
         let mut element_mass = ElementMass::default();
         let net_weight = (rho_w * sec.area - lt.mass_per_length) * g;
-        for (gp, &(xi, wg)) in GAUSS.iter().enumerate() {
-            let (s, d1, d2, _) = shape(xi, l);
+        if l.to_bits() != shapes_length.to_bits() {
+            shapes_length = l;
+            for (sh, &(xi, _)) in shapes.iter_mut().zip(&GAUSS) {
+                let (s, d1, d2, _) = shape(xi, l);
+                *sh = (s, d1, d2);
+            }
+        }
+        for (gp, &(_, wg)) in GAUSS.iter().enumerate() {
+            let (s, d1, d2) = shapes[gp];
             let w = wg * l;
             let r = combine(&s, &qe);
             let r1 = combine(&d1, &qe);
