@@ -22,7 +22,9 @@ use crate::linalg::LineBlocks;
 use crate::math::{Mat3, Real, Vec3};
 use crate::model::MassMatrix;
 use crate::physics::environment::{Current, Environment, profile_at};
-use crate::physics::hydrodynamics::{DragModel, added_mass_of, drag_force_with_factor};
+use crate::physics::hydrodynamics::{
+    DragModel, added_mass_coefficients, added_mass_of, drag_force_with_factor,
+};
 use crate::physics::material::AxialStiffness;
 use crate::physics::obstacles::{LineBall, Obstacle};
 use crate::physics::static_kinematics::FluidPoints;
@@ -403,9 +405,11 @@ impl<'a> SectionConstants<'a> {
         let lt = &sec.line_type;
         let (g, rho_w, l0) = (env.gravity, env.water_density, sec.element_length);
         let added = |rho: Real| {
-            (
-                rho * sec.area * lt.normal_added_mass,
-                rho * sec.area * (lt.tangential_added_mass - lt.normal_added_mass),
+            added_mass_coefficients(
+                rho,
+                sec.area,
+                lt.normal_added_mass,
+                lt.tangential_added_mass,
             )
         };
         Self {

@@ -45,6 +45,7 @@ use crate::linalg::LineBlocks;
 use crate::math::{Mat3, Real, Vec3};
 use crate::model::StrainMeasure;
 use crate::physics::environment::Environment;
+use crate::physics::hydrodynamics::added_mass_coefficients;
 use crate::physics::obstacles::{LineBall, Obstacle};
 
 /// Options of a `hermite` line.
@@ -209,10 +210,11 @@ pub fn line_forces(
     // σ = L̇/L of a line on a winch ([`Mesh::length_rate`]).
     let sigma = mesh.length_rate;
     let mut blocks = blocks;
-    // The shape functions at the Gauss points, for the element length they were taken at
-    // (the same for every element of a section).
+    // The shape functions at the Gauss points and the derivatives at the midpoint, for the
+    // element length they were taken at (the same for every element of a section).
     let mut shapes_length = Real::NAN;
     let mut shapes = [([0.0; 4], [0.0; 4], [0.0; 4]); 4];
+    let mut midpoint = ([0.0; 4], [0.0; 4], [0.0; 4]);
     if let Some(b) = blocks.as_deref_mut() {
         b.clear();
     }
@@ -235,6 +237,8 @@ pub fn line_forces(
                 let (s, d1, d2, _) = shape(xi, l);
                 *sh = (s, d1, d2);
             }
+            let (_, d1, d2, d3) = shape(0.5, l);
+            midpoint = (d1, d2, d3);
         }
         for (gp, &(_, wg)) in GAUSS.iter().enumerate() {
             let (s, d1, d2) = shapes[gp];
@@ -306,12 +310,13 @@ pub fn line_forces(
                 fe[i] += f * (w * s[i]);
             }
             if blocks.is_some() {
-                element_mass.add_gauss_point(
-                    &s,
-                    (lt.mass_per_length + rho * sec.area * lt.normal_added_mass) * w,
-                    rho * sec.area * (lt.tangential_added_mass - lt.normal_added_mass) * w,
-                    &tau,
+                let (alpha, beta) = added_mass_coefficients(
+                    rho,
+                    sec.area,
+                    lt.normal_added_mass,
+                    lt.tangential_added_mass,
                 );
+                element_mass.add_gauss_point(&s, (lt.mass_per_length + alpha) * w, beta * w, &tau);
             }
         }
         if let Some(b) = blocks.as_deref_mut() {
@@ -321,7 +326,7 @@ pub fn line_forces(
             forces[idx[i]] += fe[i];
         }
         // Element results at the midpoint.
-        let (_, d1, d2, d3) = shape(0.5, l);
+        let (d1, d2, d3) = midpoint;
         let r1 = combine(&d1, &qe);
         let v1 = combine(&d1, &ve) - (qe[0] * d1[0] + qe[2] * d1[2]) * sigma;
         let r2 = combine(&d2, &qe);

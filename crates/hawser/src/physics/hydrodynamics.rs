@@ -122,10 +122,22 @@ pub fn added_mass_matrix(
     tangential: Real,
     tangent: &Vec3,
 ) -> Mat3 {
-    added_mass_of(
+    let (alpha, beta) = added_mass_coefficients(density, area, normal, tangential);
+    added_mass_of(alpha, beta, tangent)
+}
+
+/// The two coefficients of [`added_mass_matrix`] [kg/m]: α = ρ A C_an of its isotropic part
+/// and β = ρ A (C_at − C_an) of its part along the tangent, m_a = α I + β t tᵀ.
+#[inline(always)]
+pub fn added_mass_coefficients(
+    density: Real,
+    area: Real,
+    normal: Real,
+    tangential: Real,
+) -> (Real, Real) {
+    (
         density * area * normal,
         density * area * (tangential - normal),
-        tangent,
     )
 }
 
